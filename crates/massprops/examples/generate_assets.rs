@@ -1,0 +1,14 @@
+//! Writes the sample bodies of `massprops::shapes::samples` to `assets/*.obj` at the workspace root.
+
+use std::path::Path;
+
+fn main() -> std::io::Result<()> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    std::fs::create_dir_all(&dir)?;
+    for (name, comment, mesh) in massprops::shapes::samples() {
+        let path = dir.join(format!("{name}.obj"));
+        std::fs::write(&path, massprops::shapes::to_obj(name, comment, &mesh))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}

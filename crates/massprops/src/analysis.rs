@@ -1,0 +1,174 @@
+//! One call that gives everything a report needs: the chosen method's numbers, both
+//! approximations at the same mass, the diagnostics and plain-language warnings.
+
+use crate::approximations::{bounding_box_properties, point_mass_properties};
+use crate::diagnostics::{MeshDiagnostics, diagnose};
+use crate::integrals::IntegrationPath;
+use crate::properties::{MassProperties, positive};
+use crate::shell::shell_properties;
+use crate::solid::{Solid, solid_properties};
+use crate::{MeshError, PolyMesh};
+
+/// How the mass is distributed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// A solid of uniform density bounded by a closed mesh (Mirtich 1996). Density in kg/m³.
+    Volume,
+    /// A thin wall of uniform surface density on the faces. Density in kg/m².
+    Shell,
+    /// Equal point masses at the vertices (approximation); mass as the solid's.
+    Points,
+    /// A solid cuboid filling the bounding box (approximation); mass as the solid's.
+    BoundingBox,
+}
+
+impl Method {
+    /// The name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Volume => "volume",
+            Method::Shell => "shell",
+            Method::Points => "points",
+            Method::BoundingBox => "bbox",
+        }
+    }
+}
+
+/// How much mass: a density, or a total mass (the density follows).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MassSpec {
+    /// Density: per volume for the volume, points and bbox methods; per area for shell.
+    Density(f64),
+    /// Total mass.
+    Mass(f64),
+}
+
+/// Everything known about a body: the chosen method's result and the rest for comparison.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Analysis {
+    /// The method of `properties`.
+    pub method: Method,
+    /// kg/m³ (kg/m² for shell); `None` when the mass was given and the mesh encloses no volume.
+    pub density: Option<f64>,
+    /// Enclosed volume, when the mesh encloses one.
+    pub volume: Option<f64>,
+    /// The faces wound inwards; results are those of the outward-wound mesh.
+    pub flipped: bool,
+    /// The chosen method's mass properties.
+    pub properties: MassProperties,
+    /// Bounding-box cuboid with the same mass, about the box centre.
+    pub bounding_box: MassProperties,
+    /// Vertex point masses with the same mass, about their centre.
+    pub point_masses: MassProperties,
+    /// Mesh diagnostics.
+    pub diagnostics: MeshDiagnostics,
+    /// What the user should know before trusting the numbers.
+    pub warnings: Vec<String>,
+}
+
+/// Computes the chosen method's mass properties, the approximations and the diagnostics.
+pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analysis, MeshError> {
+    match spec {
+        MassSpec::Density(d) => positive("density", d)?,
+        MassSpec::Mass(m) => positive("mass", m)?,
+    };
+    let diagnostics = diagnose(mesh);
+    let solid = solid_properties(mesh, IntegrationPath::Auto);
+    let volume = solid.as_ref().ok().map(|s| s.volume);
+    let (properties, density, flipped) = match method {
+        Method::Shell => {
+            let (unit, area) = shell_properties(mesh, 1.0)?;
+            let sigma = match spec {
+                MassSpec::Density(d) => d,
+                MassSpec::Mass(m) => m / area,
+            };
+            let p = unit.with_mass(sigma * area)?;
+            (p, Some(sigma), solid.as_ref().is_ok_and(|s| s.flipped))
+        }
+        Method::Volume | Method::Points | Method::BoundingBox => {
+            let solid: Solid = solid?;
+            let density = match spec {
+                MassSpec::Density(d) => d,
+                MassSpec::Mass(m) => m / solid.volume,
+            };
+            let exact = solid.with_density(density)?;
+            let p = match method {
+                Method::Points => point_mass_properties(mesh, exact.mass)?,
+                Method::BoundingBox => bounding_box_properties(mesh, exact.mass)?,
+                _ => exact,
+            };
+            (p, Some(density), solid.flipped)
+        }
+    };
+    let warnings = warnings(&diagnostics, method, flipped);
+    Ok(Analysis {
+        method,
+        density,
+        volume,
+        flipped,
+        bounding_box: bounding_box_properties(mesh, properties.mass)?,
+        point_masses: point_mass_properties(mesh, properties.mass)?,
+        properties,
+        diagnostics,
+        warnings,
+    })
+}
+
+fn warnings(d: &MeshDiagnostics, method: Method, flipped: bool) -> Vec<String> {
+    let mut w = Vec::new();
+    if d.open_edges > 0 && method != Method::Shell {
+        let examples: Vec<String> = d
+            .open_edge_examples
+            .iter()
+            .map(|(a, b)| format!("{a}-{b}"))
+            .collect();
+        w.push(format!(
+            "the mesh is open: {} boundary edge(s) (e.g. between vertices {}); a solid's volume is \
+             not defined by an open surface and these numbers depend on where the holes are. Close \
+             the mesh, or use --method shell for a sheet",
+            d.open_edges,
+            examples.join(", ")
+        ));
+    }
+    if d.nonmanifold_edges > 0 {
+        w.push(format!(
+            "{} non-manifold edge(s) (shared by more than two faces): touching or overlapping parts \
+             are counted once each",
+            d.nonmanifold_edges
+        ));
+    }
+    if d.inconsistent_edges > 0 {
+        w.push(format!(
+            "{} edge(s) where neighbouring faces wind in opposite senses: some faces are flipped, \
+             and the volume method counts them as negative volume",
+            d.inconsistent_edges
+        ));
+    }
+    if flipped && method != Method::Shell {
+        w.push(
+            "the faces wind clockwise seen from outside (negative signed volume): the result was \
+             flipped to that of the outward-wound mesh"
+                .into(),
+        );
+    }
+    if d.degenerate_faces > 0 {
+        w.push(format!(
+            "{} degenerate face(s) of zero area (e.g. face {}); they contribute nothing",
+            d.degenerate_faces,
+            join(&d.degenerate_face_examples)
+        ));
+    }
+    if d.nonplanar_faces > 0 {
+        w.push(format!(
+            "{} non-planar polygon(s) (e.g. face {}); each is integrated as the polygon projected \
+             onto its best-fit plane",
+            d.nonplanar_faces,
+            join(&d.nonplanar_face_examples)
+        ));
+    }
+    w
+}
+
+fn join(v: &[usize]) -> String {
+    v.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
+}

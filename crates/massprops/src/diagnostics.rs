@@ -1,0 +1,181 @@
+//! Mesh diagnostics, always computed beside the numbers: what a user must know to trust them.
+//!
+//! Edges are found by sorting (vertex pair, direction) records, which costs O(E log E) and no hash
+//! table: an edge used once is open (a hole), more than twice non-manifold, and twice in the same
+//! direction means the two faces wind inconsistently (one is flipped).
+
+use nalgebra::{Point3, Vector3};
+use rayon::prelude::*;
+
+use crate::PolyMesh;
+use crate::integrals::mirtich::newell_normal;
+
+/// Relative area (to the longest edge squared) below which a face counts as degenerate.
+pub const DEGENERATE_AREA_RATIO: f64 = 1e-12;
+/// Relative distance (to the longest edge) a polygon's corner may leave its plane.
+pub const PLANARITY_TOLERANCE: f64 = 1e-8;
+/// How many example faces or edges each diagnostic keeps for messages.
+pub const EXAMPLES: usize = 5;
+
+/// What the mesh is made of and what is wrong with it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshDiagnostics {
+    /// Vertex positions (after welding identical ones).
+    pub vertices: usize,
+    /// Faces as given (polygons count once).
+    pub faces: usize,
+    /// Triangles after fan-triangulating the faces.
+    pub triangles: usize,
+    /// Distinct undirected edges.
+    pub edges: usize,
+    /// Edges used by only one face (the mesh has holes).
+    pub open_edges: usize,
+    /// Edges used by more than two faces.
+    pub nonmanifold_edges: usize,
+    /// Edges whose two faces traverse them in the same direction (inconsistent winding).
+    pub inconsistent_edges: usize,
+    /// Faces of (numerically) zero area, which contribute nothing.
+    pub degenerate_faces: usize,
+    /// Polygons whose corners leave their plane by more than [`PLANARITY_TOLERANCE`].
+    pub nonplanar_faces: usize,
+    /// Total surface area.
+    pub surface_area: f64,
+    /// Axis-aligned bounding box (min, max) of the used vertices.
+    pub bounding_box: (Point3<f64>, Point3<f64>),
+    /// Up to [`EXAMPLES`] open edges as zero-based vertex pairs.
+    pub open_edge_examples: Vec<(u32, u32)>,
+    /// Up to [`EXAMPLES`] zero-based indices of degenerate faces.
+    pub degenerate_face_examples: Vec<usize>,
+    /// Up to [`EXAMPLES`] zero-based indices of non-planar faces.
+    pub nonplanar_face_examples: Vec<usize>,
+}
+
+impl MeshDiagnostics {
+    /// Every edge is shared by exactly two faces: the surface encloses a solid.
+    pub fn is_closed(&self) -> bool {
+        self.open_edges == 0 && self.nonmanifold_edges == 0
+    }
+
+    /// Every shared edge is traversed in opposite directions by its two faces.
+    pub fn is_consistently_oriented(&self) -> bool {
+        self.inconsistent_edges == 0
+    }
+}
+
+/// Computes every diagnostic of `mesh`.
+pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
+    let face_stats: Vec<(f64, bool, bool)> = (0..mesh.face_count())
+        .into_par_iter()
+        .with_min_len(4096)
+        .map_init(Vec::new, |corners, f| face_shape(mesh, f, corners))
+        .collect();
+    let mut degenerate = Vec::new();
+    let mut nonplanar = Vec::new();
+    let mut area = crate::integrals::CompensatedSum::<1>::new();
+    let (mut degenerate_faces, mut nonplanar_faces) = (0, 0);
+    for (f, &(a, is_degenerate, is_nonplanar)) in face_stats.iter().enumerate() {
+        area.add(&[a]);
+        if is_degenerate {
+            degenerate_faces += 1;
+            if degenerate.len() < EXAMPLES {
+                degenerate.push(f);
+            }
+        }
+        if is_nonplanar {
+            nonplanar_faces += 1;
+            if nonplanar.len() < EXAMPLES {
+                nonplanar.push(f);
+            }
+        }
+    }
+    let edges = edge_report(mesh);
+    MeshDiagnostics {
+        vertices: mesh.positions().len(),
+        faces: mesh.face_count(),
+        triangles: mesh.triangle_count(),
+        edges: edges.edges,
+        open_edges: edges.open,
+        nonmanifold_edges: edges.nonmanifold,
+        inconsistent_edges: edges.inconsistent,
+        degenerate_faces,
+        nonplanar_faces,
+        surface_area: area.total()[0],
+        bounding_box: mesh.bounding_box(),
+        open_edge_examples: edges.open_examples,
+        degenerate_face_examples: degenerate,
+        nonplanar_face_examples: nonplanar,
+    }
+}
+
+/// Area, degeneracy and non-planarity of face `f`.
+fn face_shape(mesh: &PolyMesh, f: usize, corners: &mut Vec<Vector3<f64>>) -> (f64, bool, bool) {
+    corners.clear();
+    let first = mesh.face_points(f).next().map(|p| p.coords).unwrap_or_default();
+    // Corners relative to the first one, so a face far from the origin keeps its digits.
+    corners.extend(mesh.face_points(f).map(|p| p.coords - first));
+    let newell = newell_normal(corners);
+    let twice_area = newell.norm();
+    let mut longest2: f64 = 0.0;
+    let mut prev = corners[corners.len() - 1];
+    for &c in corners.iter() {
+        longest2 = longest2.max((c - prev).norm_squared());
+        prev = c;
+    }
+    let degenerate = !(twice_area > 2.0 * DEGENERATE_AREA_RATIO * longest2);
+    let nonplanar = corners.len() > 3 && !degenerate && {
+        let n = newell / twice_area;
+        let mean = corners.iter().sum::<Vector3<f64>>() / corners.len() as f64;
+        let limit = PLANARITY_TOLERANCE * longest2.sqrt();
+        corners.iter().any(|c| n.dot(&(c - mean)).abs() > limit)
+    };
+    (0.5 * twice_area, degenerate, nonplanar)
+}
+
+struct EdgeReport {
+    edges: usize,
+    open: usize,
+    nonmanifold: usize,
+    inconsistent: usize,
+    open_examples: Vec<(u32, u32)>,
+}
+
+fn edge_report(mesh: &PolyMesh) -> EdgeReport {
+    // Key: low vertex in the high 32 bits, high vertex next; the lowest bit of a separate byte
+    // records whether the face runs low → high.
+    let mut records: Vec<(u64, bool)> = Vec::with_capacity(mesh.triangle_count() + 2 * mesh.face_count());
+    for face in mesh.faces() {
+        let mut prev = face[face.len() - 1];
+        for &cur in face {
+            if prev != cur {
+                let (lo, hi) = (prev.min(cur), prev.max(cur));
+                records.push(((u64::from(lo) << 32) | u64::from(hi), prev < cur));
+            }
+            prev = cur;
+        }
+    }
+    records.par_sort_unstable_by_key(|r| r.0);
+    let mut report = EdgeReport {
+        edges: 0,
+        open: 0,
+        nonmanifold: 0,
+        inconsistent: 0,
+        open_examples: Vec::new(),
+    };
+    for group in records.chunk_by(|a, b| a.0 == b.0) {
+        report.edges += 1;
+        let forward = group.iter().filter(|r| r.1).count();
+        match group.len() {
+            1 => {
+                report.open += 1;
+                if report.open_examples.len() < EXAMPLES {
+                    let key = group[0].0;
+                    report.open_examples.push(((key >> 32) as u32, key as u32));
+                }
+            }
+            2 if forward != 1 => report.inconsistent += 1,
+            2 => {}
+            _ => report.nonmanifold += 1,
+        }
+    }
+    report
+}

@@ -1,0 +1,103 @@
+//! The one error type of the crate: every way a mesh or a file can be unusable.
+
+use std::path::PathBuf;
+
+/// Why a mesh, a file or a parameter cannot give mass properties.
+///
+/// Variants name the problem and where it is (file, line, face, vertex) so a user can fix it.
+#[derive(Debug, thiserror::Error)]
+pub enum MeshError {
+    /// The mesh has no faces (or no vertices).
+    #[error("the mesh is empty: it has no faces")]
+    Empty,
+    /// A vertex coordinate is NaN or infinite.
+    #[error("vertex {vertex} has a non-finite coordinate {value}")]
+    NonFiniteVertex {
+        /// Zero-based vertex index.
+        vertex: usize,
+        /// The offending coordinate.
+        value: f64,
+    },
+    /// A face refers to a vertex that does not exist.
+    #[error("face {face} refers to vertex {index}, but the mesh has only {vertex_count} vertices")]
+    IndexOutOfRange {
+        /// Zero-based face index.
+        face: usize,
+        /// The offending zero-based vertex index.
+        index: usize,
+        /// How many vertices the mesh has.
+        vertex_count: usize,
+    },
+    /// A face has fewer than three corners.
+    #[error("face {face} has {corners} corner(s); a face needs at least 3")]
+    TooFewCorners {
+        /// Zero-based face index.
+        face: usize,
+        /// How many corners it has.
+        corners: usize,
+    },
+    /// The mesh is too large for 32-bit indices.
+    #[error("the mesh has {count} {what}; at most 4294967295 are supported")]
+    TooLarge {
+        /// What overflowed ("vertices", "corners").
+        what: &'static str,
+        /// How many there are.
+        count: usize,
+    },
+    /// The surface encloses (numerically) no volume, so the volume method has nothing to integrate.
+    #[error(
+        "the mesh encloses zero volume (signed volume {volume:e} for a bounding box of diagonal {diagonal:e}); \
+         it is flat, open or self-cancelling; use the shell method for sheets"
+    )]
+    ZeroVolume {
+        /// The signed volume found.
+        volume: f64,
+        /// Bounding-box diagonal, for scale.
+        diagonal: f64,
+    },
+    /// A parameter (density, mass, scale, point) is not a positive finite number.
+    #[error("invalid {name}: {value} (it must be a finite number greater than zero)")]
+    InvalidParameter {
+        /// Parameter name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// The shell method found no surface area.
+    #[error("the mesh has zero surface area")]
+    ZeroArea,
+    /// The file could not be read.
+    #[error("{}: cannot read the file: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// What the operating system said.
+        source: std::io::Error,
+    },
+    /// The file extension is not one we can load.
+    #[error("{}: unsupported file type (expected .obj or .stl)", path.display())]
+    UnsupportedFormat {
+        /// The file.
+        path: PathBuf,
+    },
+    /// The file's text or bytes do not follow its format.
+    #[error("{}{}: {message}", path.display(), line.map(|l| format!(", line {l}")).unwrap_or_default())]
+    Malformed {
+        /// The file.
+        path: PathBuf,
+        /// One-based line number where known.
+        line: Option<usize>,
+        /// What is wrong.
+        message: String,
+    },
+    /// A mesh problem found in a file, with the line that causes it where known.
+    #[error("{}{}: {source}", path.display(), line.map(|l| format!(", line {l}")).unwrap_or_default())]
+    InFile {
+        /// The file.
+        path: PathBuf,
+        /// One-based line number where known.
+        line: Option<usize>,
+        /// The mesh problem.
+        source: Box<MeshError>,
+    },
+}

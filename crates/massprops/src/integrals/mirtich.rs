@@ -1,0 +1,183 @@
+//! Mirtich's polygon method (B. Mirtich, "Fast and Accurate Computation of Polyhedral Mass
+//! Properties", J. Graphics Tools 1(2), 1996).
+//!
+//! Per face: the Newell normal n̂ and plane offset w (n̂·x + w = 0); project onto the coordinate
+//! plane (α, β) orthogonal to the normal's largest component γ; Green's theorem turns the
+//! projection integrals (paper eq. 25–34, "π" integrals) into sums over edges; the face integrals
+//! follow from the plane equation (eq. 18–24); the divergence theorem (eq. 6–17) sums them into the
+//! volume integrals. Faces of zero area have a zero Newell normal and contribute exactly zero.
+
+use nalgebra::{Point3, Vector3};
+
+use super::{BLOCK, compensated_total};
+use crate::PolyMesh;
+
+/// The ten volume integrals of `mesh` with coordinates measured from `reference`.
+pub fn integrate(mesh: &PolyMesh, reference: Point3<f64>) -> [f64; 10] {
+    let mut corners = Vec::with_capacity(16);
+    let faces = mesh.face_count();
+    let blocks = (0..faces).step_by(BLOCK).map(|start| {
+        let mut block = [0.0; 10];
+        for f in start..(start + BLOCK).min(faces) {
+            corners.clear();
+            corners.extend(mesh.face_points(f).map(|p| p - reference));
+            face_contribution(&corners, &mut block);
+        }
+        block
+    });
+    let mut total = compensated_total(blocks);
+    for (t, scale) in total.iter_mut().zip(SCALE) {
+        *t *= scale;
+    }
+    total
+}
+
+/// The divergence-theorem factors of eq. (13)–(17): T1/2, T2/3, TP/2.
+const SCALE: [f64; 10] = [
+    1.0,
+    0.5,
+    0.5,
+    0.5,
+    1.0 / 3.0,
+    1.0 / 3.0,
+    1.0 / 3.0,
+    0.5,
+    0.5,
+    0.5,
+];
+
+/// Newell's normal of a polygon: twice its vector area, exact for planar polygons of any shape.
+pub(crate) fn newell_normal(corners: &[Vector3<f64>]) -> Vector3<f64> {
+    let mut n = Vector3::zeros();
+    let mut prev = corners[corners.len() - 1];
+    for &cur in corners {
+        n.x += (prev.y - cur.y) * (prev.z + cur.z);
+        n.y += (prev.z - cur.z) * (prev.x + cur.x);
+        n.z += (prev.x - cur.x) * (prev.y + cur.y);
+        prev = cur;
+    }
+    n
+}
+
+/// Projection integrals over the face's projection onto the (α, β) plane, by Green's theorem.
+struct Projection {
+    p1: f64,
+    pa: f64,
+    pb: f64,
+    paa: f64,
+    pab: f64,
+    pbb: f64,
+    paaa: f64,
+    paab: f64,
+    pabb: f64,
+    pbbb: f64,
+}
+
+fn projection_integrals(corners: &[Vector3<f64>], a: usize, b: usize) -> Projection {
+    let (mut p1, mut pa, mut pb, mut paa, mut pab, mut pbb) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    let (mut paaa, mut paab, mut pabb, mut pbbb) = (0.0, 0.0, 0.0, 0.0);
+    let mut prev = corners[corners.len() - 1];
+    for &cur in corners {
+        let (a0, b0, a1, b1) = (prev[a], prev[b], cur[a], cur[b]);
+        prev = cur;
+        let (da, db) = (a1 - a0, b1 - b0);
+        let (a0_2, b0_2, a1_2, b1_2) = (a0 * a0, b0 * b0, a1 * a1, b1 * b1);
+        let (a0_3, b0_3, a1_3, b1_3) = (a0_2 * a0, b0_2 * b0, a1_2 * a1, b1_2 * b1);
+        let c1 = a1 + a0;
+        let ca = a1 * c1 + a0_2;
+        let caa = a1 * ca + a0_3;
+        let caaa = a1 * caa + a0_3 * a0;
+        let cb = b1 * (b1 + b0) + b0_2;
+        let cbb = b1 * cb + b0_3;
+        let cbbb = b1 * cbb + b0_3 * b0;
+        let cab = 3.0 * a1_2 + 2.0 * a1 * a0 + a0_2;
+        let kab = a1_2 + 2.0 * a1 * a0 + 3.0 * a0_2;
+        let caab = a0 * cab + 4.0 * a1_3;
+        let kaab = a1 * kab + 4.0 * a0_3;
+        let cabb = 4.0 * b1_3 + 3.0 * b1_2 * b0 + 2.0 * b1 * b0_2 + b0_3;
+        let kabb = b1_3 + 2.0 * b1_2 * b0 + 3.0 * b1 * b0_2 + 4.0 * b0_3;
+        p1 += db * c1;
+        pa += db * ca;
+        paa += db * caa;
+        paaa += db * caaa;
+        pb += da * cb;
+        pbb += da * cbb;
+        pbbb += da * cbbb;
+        pab += db * (b1 * cab + b0 * kab);
+        paab += db * (b1 * caab + b0 * kaab);
+        pabb += da * (a1 * cabb + a0 * kabb);
+    }
+    Projection {
+        p1: p1 / 2.0,
+        pa: pa / 6.0,
+        paa: paa / 12.0,
+        paaa: paaa / 20.0,
+        pb: pb / -6.0,
+        pbb: pbb / -12.0,
+        pbbb: pbbb / -20.0,
+        pab: pab / 24.0,
+        paab: paab / 60.0,
+        pabb: pabb / -60.0,
+    }
+}
+
+/// Adds one face's contribution (before the factors of [`SCALE`]) to `acc`.
+fn face_contribution(corners: &[Vector3<f64>], acc: &mut [f64; 10]) {
+    let newell = newell_normal(corners);
+    let len = newell.norm();
+    if len == 0.0 || !len.is_finite() {
+        return;
+    }
+    let n = newell / len;
+    // The plane through the corners' mean keeps non-planar polygons' error symmetric.
+    let mean = corners.iter().sum::<Vector3<f64>>() / corners.len() as f64;
+    let w = -n.dot(&mean);
+    let c = n.iamax();
+    let (a, b) = ((c + 1) % 3, (c + 2) % 3);
+    let p = projection_integrals(corners, a, b);
+
+    let (na, nb, nc) = (n[a], n[b], n[c]);
+    let k1 = 1.0 / nc;
+    let (k2, k3, k4) = (k1 * k1, k1 * k1 * k1, k1 * k1 * k1 * k1);
+    let fa = k1 * p.pa;
+    let fb = k1 * p.pb;
+    let fc = -k2 * (na * p.pa + nb * p.pb + w * p.p1);
+    let faa = k1 * p.paa;
+    let fbb = k1 * p.pbb;
+    let quad = na * na * p.paa + 2.0 * na * nb * p.pab + nb * nb * p.pbb;
+    let fcc = k3 * (quad + w * (2.0 * (na * p.pa + nb * p.pb) + w * p.p1));
+    let faaa = k1 * p.paaa;
+    let fbbb = k1 * p.pbbb;
+    let cubic = na * na * na * p.paaa
+        + 3.0 * na * na * nb * p.paab
+        + 3.0 * na * nb * nb * p.pabb
+        + nb * nb * nb * p.pbbb;
+    let fccc = -k4 * (cubic + 3.0 * w * quad + w * w * (3.0 * (na * p.pa + nb * p.pb) + w * p.p1));
+    let faab = k1 * p.paab;
+    let fbbc = -k2 * (na * p.pabb + nb * p.pbbb + w * p.pbb);
+    let fcca = k3
+        * (na * na * p.paaa
+            + 2.0 * na * nb * p.paab
+            + nb * nb * p.pabb
+            + w * (2.0 * (na * p.paa + nb * p.pab) + w * p.pa));
+
+    // ∫1 = ∮ x n_x dA, with whichever of Fα, Fβ, Fγ is the face integral of x.
+    let fx = if a == 0 {
+        fa
+    } else if b == 0 {
+        fb
+    } else {
+        fc
+    };
+    acc[0] += n.x * fx;
+    acc[1 + a] += na * faa;
+    acc[1 + b] += nb * fbb;
+    acc[1 + c] += nc * fcc;
+    acc[4 + a] += na * faaa;
+    acc[4 + b] += nb * fbbb;
+    acc[4 + c] += nc * fccc;
+    // Products: slot 7 + a holds ∫αβ because (a, b) = (x, y), (y, z) or (z, x).
+    acc[7 + a] += na * faab;
+    acc[7 + b] += nb * fbbc;
+    acc[7 + c] += nc * fcca;
+}

@@ -1,0 +1,189 @@
+//! Wavefront OBJ through `tobj`, with our own error locations.
+//!
+//! `tobj` reports what went wrong but not where; on the (rare) error path we scan the text once
+//! more to find the offending line, so a user is told "file, line N: …".
+
+use std::io::Cursor;
+use std::path::Path;
+
+use nalgebra::Point3;
+
+use crate::mesh::weld_exact;
+use crate::{MeshError, PolyMesh};
+
+/// Parses OBJ text: all objects and groups form one body; `l` and `p` elements are skipped;
+/// positions are welded exactly.
+pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
+    let text = std::str::from_utf8(bytes).map_err(|e| MeshError::Malformed {
+        path: path.to_path_buf(),
+        line: Some(line_of_offset(bytes, e.valid_up_to())),
+        message: "the file is not UTF-8 text (is it a binary file?)".into(),
+    })?;
+    let options = tobj::LoadOptions {
+        single_index: false,
+        triangulate: false,
+        ignore_points: false,
+        ignore_lines: false,
+        ..Default::default()
+    };
+    let (models, _materials) = tobj::load_obj_buf(&mut Cursor::new(bytes), &options, |_| {
+        Err(tobj::LoadError::OpenFileFailed)
+    })
+    .map_err(|e| MeshError::Malformed {
+        path: path.to_path_buf(),
+        line: locate_tobj_error(text, &e),
+        message: describe(&e).into(),
+    })?;
+
+    let mut positions = Vec::new();
+    let mut indices = Vec::new();
+    let mut arities = Vec::new();
+    let mut element = 0usize;
+    for model in &models {
+        let m = &model.mesh;
+        let base = positions.len() as u32;
+        positions.extend(
+            m.positions
+                .as_chunks::<3>()
+                .0
+                .iter()
+                .map(|&[x, y, z]| Point3::new(x, y, z)),
+        );
+        let model_arities: Vec<usize> = if m.face_arities.is_empty() {
+            vec![3; m.indices.len() / 3]
+        } else {
+            m.face_arities.iter().map(|&a| a as usize).collect()
+        };
+        let mut start = 0;
+        for arity in model_arities {
+            let face = &m.indices[start..start + arity];
+            start += arity;
+            if arity < 3 {
+                match nth_element_line(text, element) {
+                    Some((line, "f")) => {
+                        return Err(MeshError::InFile {
+                            path: path.to_path_buf(),
+                            line: Some(line),
+                            source: Box::new(MeshError::TooFewCorners {
+                                face: arities.len(),
+                                corners: arity,
+                            }),
+                        });
+                    }
+                    // Polylines (`l`) and points (`p`) bound no volume: not part of the body.
+                    _ => {
+                        element += 1;
+                        continue;
+                    }
+                }
+            }
+            element += 1;
+            indices.extend(face.iter().map(|&i| i + base));
+            arities.push(arity);
+        }
+    }
+    let (welded, remap) = weld_exact(&positions);
+    let indices = indices.into_iter().map(|i| remap[i as usize]).collect();
+    PolyMesh::from_flat(welded, indices, &arities).map_err(|e| {
+        let line = match &e {
+            MeshError::NonFiniteVertex { .. } => first_line(text, |kw, rest| {
+                kw == "v" && rest.split_whitespace().take(3).any(|t| t.parse::<f64>().is_ok_and(|v| !v.is_finite()))
+            }),
+            _ => None,
+        };
+        MeshError::InFile {
+            path: path.to_path_buf(),
+            line,
+            source: Box::new(e),
+        }
+    })
+}
+
+fn describe(e: &tobj::LoadError) -> &'static str {
+    use tobj::LoadError as E;
+    match e {
+        E::PositionParseError => "malformed vertex position: `v` needs three numbers",
+        E::NormalParseError => "malformed normal: `vn` needs three numbers",
+        E::TexcoordParseError => "malformed texture coordinate",
+        E::FaceParseError => "malformed face: `f` takes vertex indices like `f 1 2 3` or `f 1/1/1 2/2/2 3/3/3`",
+        E::FaceVertexOutOfBounds => "a face refers to a vertex that the file does not define",
+        E::FaceTexCoordOutOfBounds => "a face refers to a texture coordinate that the file does not define",
+        E::FaceNormalOutOfBounds => "a face refers to a normal that the file does not define",
+        E::ReadError => "the file cannot be read as text",
+        E::InvalidPolygon => "invalid polygon",
+        _ => "the file is not valid OBJ",
+    }
+}
+
+/// One-based line of byte `offset`.
+fn line_of_offset(bytes: &[u8], offset: usize) -> usize {
+    1 + bytes[..offset].iter().filter(|&&b| b == b'\n').count()
+}
+
+/// The first line whose keyword and remainder satisfy `bad`, one-based.
+fn first_line(text: &str, mut bad: impl FnMut(&str, &str) -> bool) -> Option<usize> {
+    text.lines().enumerate().find_map(|(i, line)| {
+        let line = line.trim_start();
+        let (kw, rest) = line.split_once(char::is_whitespace).unwrap_or((line, ""));
+        bad(kw, rest).then_some(i + 1)
+    })
+}
+
+/// Line number and keyword of the `n`-th (zero-based) face, polyline or point element.
+fn nth_element_line(text: &str, n: usize) -> Option<(usize, &'static str)> {
+    text.lines()
+        .enumerate()
+        .filter_map(|(i, line)| {
+            match line.trim_start().split_whitespace().next() {
+                Some("f") => Some((i + 1, "f")),
+                Some("l") => Some((i + 1, "l")),
+                Some("p") => Some((i + 1, "p")),
+                _ => None,
+            }
+        })
+        .nth(n)
+}
+
+/// Finds the line `tobj` rejected, by re-checking the lines of the kind its error names.
+fn locate_tobj_error(text: &str, e: &tobj::LoadError) -> Option<usize> {
+    use tobj::LoadError as E;
+    let numbers_ok = |rest: &str, n: usize| {
+        let t: Vec<&str> = rest.split_whitespace().collect();
+        t.len() >= n && t.iter().all(|x| x.parse::<f64>().is_ok())
+    };
+    match e {
+        E::PositionParseError => first_line(text, |kw, rest| kw == "v" && !numbers_ok(rest, 3)),
+        E::NormalParseError => first_line(text, |kw, rest| kw == "vn" && !numbers_ok(rest, 3)),
+        E::TexcoordParseError => first_line(text, |kw, rest| kw == "vt" && !numbers_ok(rest, 1)),
+        E::FaceParseError => first_line(text, |kw, rest| {
+            kw == "f"
+                && rest.split_whitespace().any(|t| {
+                    t.split('/')
+                        .next()
+                        .is_none_or(|i| i.parse::<i64>().map_or(true, |i| i == 0))
+                })
+        }),
+        E::FaceVertexOutOfBounds => {
+            let count = text
+                .lines()
+                .filter(|l| l.trim_start().starts_with("v "))
+                .count() as i64;
+            let mut seen = 0i64;
+            first_line(text, |kw, rest| {
+                if kw == "v" {
+                    seen += 1;
+                }
+                kw == "f"
+                    && rest.split_whitespace().any(|t| {
+                        let i = t.split('/').next().and_then(|i| i.parse::<i64>().ok());
+                        match i {
+                            Some(i) if i > 0 => i > count,
+                            Some(i) => -i > seen,
+                            None => false,
+                        }
+                    })
+            })
+        }
+        _ => None,
+    }
+}

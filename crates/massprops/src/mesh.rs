@@ -1,0 +1,277 @@
+//! The polygon mesh: shared vertex positions and faces of any number of corners.
+//!
+//! Faces are stored compactly (one index array plus per-face offsets) so a 4M-triangle mesh costs
+//! 48 MB of indices, and a mesh made only of triangles is recognised for the fast path.
+
+use std::collections::HashMap;
+
+use nalgebra::{Point3, Vector3};
+
+use crate::MeshError;
+
+/// A polygon mesh in f64: vertex positions and faces given as vertex-index loops.
+///
+/// Faces may be any planar polygon (convex or not) of three or more corners; their winding is
+/// counter-clockwise seen from outside (right-hand rule gives the outward normal). A constructed
+/// mesh is always valid for integration: every index is in range, every coordinate finite, every
+/// face has at least three corners.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PolyMesh {
+    positions: Vec<Point3<f64>>,
+    indices: Vec<u32>,
+    /// `face_starts[f]..face_starts[f + 1]` is face `f`'s range in `indices`.
+    face_starts: Vec<u32>,
+    all_triangles: bool,
+}
+
+impl PolyMesh {
+    /// Builds a mesh from positions and faces (each a loop of vertex indices), validating it.
+    pub fn new<F: AsRef<[usize]>>(
+        positions: Vec<Point3<f64>>,
+        faces: &[F],
+    ) -> Result<Self, MeshError> {
+        let mut indices = Vec::with_capacity(faces.iter().map(|f| f.as_ref().len()).sum());
+        let mut arities = Vec::with_capacity(faces.len());
+        for face in faces {
+            let face = face.as_ref();
+            arities.push(face.len());
+            for &i in face {
+                indices.push(u32::try_from(i).unwrap_or(u32::MAX));
+            }
+        }
+        Self::from_flat(positions, indices, &arities)
+    }
+
+    /// Builds a triangle mesh from positions and index triples, validating it.
+    pub fn from_triangles(
+        positions: Vec<Point3<f64>>,
+        triangles: &[[u32; 3]],
+    ) -> Result<Self, MeshError> {
+        let indices = triangles.iter().flatten().copied().collect();
+        Self::from_flat(positions, indices, &vec![3; triangles.len()])
+    }
+
+    /// Builds a mesh from a flat index array and the number of corners of each face.
+    pub fn from_flat(
+        positions: Vec<Point3<f64>>,
+        indices: Vec<u32>,
+        arities: &[usize],
+    ) -> Result<Self, MeshError> {
+        if arities.is_empty() || positions.is_empty() {
+            return Err(MeshError::Empty);
+        }
+        if positions.len() > u32::MAX as usize {
+            return Err(MeshError::TooLarge {
+                what: "vertices",
+                count: positions.len(),
+            });
+        }
+        if indices.len() >= u32::MAX as usize {
+            return Err(MeshError::TooLarge {
+                what: "corners",
+                count: indices.len(),
+            });
+        }
+        for (vertex, p) in positions.iter().enumerate() {
+            if let Some(&value) = p.coords.iter().find(|c| !c.is_finite()) {
+                return Err(MeshError::NonFiniteVertex { vertex, value });
+            }
+        }
+        let mut face_starts = Vec::with_capacity(arities.len() + 1);
+        let mut start = 0usize;
+        for (face, &corners) in arities.iter().enumerate() {
+            if corners < 3 {
+                return Err(MeshError::TooFewCorners { face, corners });
+            }
+            face_starts.push(start as u32);
+            let end = start + corners;
+            let Some(face_indices) = indices.get(start..end) else {
+                return Err(MeshError::TooFewCorners {
+                    face,
+                    corners: indices.len().saturating_sub(start),
+                });
+            };
+            if let Some(&bad) = face_indices
+                .iter()
+                .find(|&&i| i as usize >= positions.len())
+            {
+                return Err(MeshError::IndexOutOfRange {
+                    face,
+                    index: bad as usize,
+                    vertex_count: positions.len(),
+                });
+            }
+            start = end;
+        }
+        face_starts.push(start as u32);
+        let all_triangles = arities.iter().all(|&a| a == 3);
+        Ok(Self {
+            positions,
+            indices,
+            face_starts,
+            all_triangles,
+        })
+    }
+
+    /// Vertex positions.
+    pub fn positions(&self) -> &[Point3<f64>] {
+        &self.positions
+    }
+
+    /// Number of faces.
+    pub fn face_count(&self) -> usize {
+        self.face_starts.len() - 1
+    }
+
+    /// Number of triangles after fan-triangulating every face (an n-gon gives n − 2).
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() - 2 * self.face_count()
+    }
+
+    /// The vertex-index loop of face `f`.
+    ///
+    /// # Panics
+    /// If `f >= self.face_count()`.
+    pub fn face(&self, f: usize) -> &[u32] {
+        &self.indices[self.face_starts[f] as usize..self.face_starts[f + 1] as usize]
+    }
+
+    /// All faces, in order.
+    pub fn faces(&self) -> impl ExactSizeIterator<Item = &[u32]> + '_ {
+        self.face_starts
+            .windows(2)
+            .map(|w| &self.indices[w[0] as usize..w[1] as usize])
+    }
+
+    /// The index triples when every face is a triangle, for the triangle fast path.
+    pub fn as_triangles(&self) -> Option<&[[u32; 3]]> {
+        if !self.all_triangles {
+            return None;
+        }
+        let (triangles, rest) = self.indices.as_chunks::<3>();
+        debug_assert!(rest.is_empty());
+        Some(triangles)
+    }
+
+    /// The corners of face `f` as points.
+    pub fn face_points(&self, f: usize) -> impl ExactSizeIterator<Item = Point3<f64>> + '_ {
+        self.face(f).iter().map(|&i| self.positions[i as usize])
+    }
+
+    /// Axis-aligned bounding box `(min, max)` of the vertices that faces use.
+    pub fn bounding_box(&self) -> (Point3<f64>, Point3<f64>) {
+        let mut lo = Vector3::repeat(f64::INFINITY);
+        let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+        for p in self.used_positions() {
+            lo = lo.inf(&p.coords);
+            hi = hi.sup(&p.coords);
+        }
+        (Point3::from(lo), Point3::from(hi))
+    }
+
+    /// The positions some face refers to, each once, in index order.
+    pub fn used_positions(&self) -> impl Iterator<Item = Point3<f64>> + '_ {
+        let mut used = vec![false; self.positions.len()];
+        for &i in &self.indices {
+            used[i as usize] = true;
+        }
+        self.positions
+            .iter()
+            .zip(used)
+            .filter_map(|(p, u)| u.then_some(*p))
+    }
+
+    /// The same mesh with every face's winding reversed (outward and inward swap).
+    pub fn flipped(&self) -> Self {
+        let mut out = self.clone();
+        for w in self.face_starts.windows(2) {
+            out.indices[w[0] as usize..w[1] as usize].reverse();
+        }
+        out
+    }
+
+    /// The same mesh with every vertex mapped through `f` (e.g. a rigid motion or a scale).
+    pub fn map_positions(&self, f: impl Fn(Point3<f64>) -> Point3<f64>) -> Result<Self, MeshError> {
+        let positions = self.positions.iter().map(|&p| f(p)).collect();
+        let arities: Vec<usize> = self.faces().map(<[u32]>::len).collect();
+        Self::from_flat(positions, self.indices.clone(), &arities)
+    }
+}
+
+/// Merges vertices with bit-identical coordinates, so a file that repeats a position per corner
+/// (for normals or texture coordinates) still has shared edges.
+///
+/// Returns the unique positions and, for each input position, its new index. `-0.0` and `0.0`
+/// are the same point.
+pub fn weld_exact(positions: &[Point3<f64>]) -> (Vec<Point3<f64>>, Vec<u32>) {
+    let key = |p: &Point3<f64>| p.coords.map(|c| (c + 0.0).to_bits());
+    let mut map: HashMap<[u64; 3], u32> = HashMap::with_capacity(positions.len());
+    let mut unique = Vec::with_capacity(positions.len());
+    let remap = positions
+        .iter()
+        .map(|p| {
+            let k = key(p);
+            *map.entry([k.x, k.y, k.z]).or_insert_with(|| {
+                unique.push(*p);
+                (unique.len() - 1) as u32
+            })
+        })
+        .collect();
+    (unique, remap)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64, z: f64) -> Point3<f64> {
+        Point3::new(x, y, z)
+    }
+
+    #[test]
+    fn rejects_bad_input_with_the_face_named() {
+        let pts = vec![p(0., 0., 0.), p(1., 0., 0.), p(0., 1., 0.)];
+        assert!(matches!(
+            PolyMesh::new(pts.clone(), &[vec![0, 1, 3]]),
+            Err(MeshError::IndexOutOfRange {
+                face: 0,
+                index: 3,
+                vertex_count: 3
+            })
+        ));
+        assert!(matches!(
+            PolyMesh::new(pts.clone(), &[vec![0, 1, 2], vec![0, 1]]),
+            Err(MeshError::TooFewCorners {
+                face: 1,
+                corners: 2
+            })
+        ));
+        assert!(matches!(
+            PolyMesh::new(pts.clone(), &[] as &[Vec<usize>]),
+            Err(MeshError::Empty)
+        ));
+        let mut nan = pts;
+        nan[1].y = f64::NAN;
+        assert!(matches!(
+            PolyMesh::new(nan, &[vec![0, 1, 2]]),
+            Err(MeshError::NonFiniteVertex { vertex: 1, .. })
+        ));
+    }
+
+    #[test]
+    fn counts_triangles_of_polygons() {
+        let pts = vec![p(0., 0., 0.), p(1., 0., 0.), p(1., 1., 0.), p(0., 1., 0.)];
+        let m = PolyMesh::new(pts, &[vec![0, 1, 2, 3], vec![0, 2, 1]]).expect("valid");
+        assert_eq!(m.face_count(), 2);
+        assert_eq!(m.triangle_count(), 3);
+        assert!(m.as_triangles().is_none());
+        assert_eq!(m.flipped().face(0), &[3, 2, 1, 0]);
+    }
+
+    #[test]
+    fn weld_merges_identical_and_signed_zero() {
+        let (u, r) = weld_exact(&[p(0., 1., 2.), p(-0.0, 1., 2.), p(0., 1., 2.000_000_1)]);
+        assert_eq!(u.len(), 2);
+        assert_eq!(r, vec![0, 0, 1]);
+    }
+}
