@@ -1,1 +1,41 @@
-fn main() {}
+//! `inertia-lab`: exact mass properties and rigid-body dynamics of any mesh.
+//!
+//! Command-line entry points of the Inertia Lab binary: `props` (mass properties of a mesh,
+//! `massprops`) and `simulate` (headless rigid-body simulation, `rbcore`).
+
+mod error;
+mod props;
+mod report;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Inertia Lab: exact mass properties of any mesh, and how they shape its rotation.
+#[derive(Parser, Debug)]
+#[command(name = "inertia-lab", version, about, arg_required_else_help = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Mass properties of a mesh (OBJ or STL): volume, mass, centre of mass, inertia tensor,
+    /// principal moments and axes, the bounding-box and point-mass approximations, diagnostics.
+    Props(props::PropsArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Props(args) => props::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            e.exit_code()
+        }
+    }
+}

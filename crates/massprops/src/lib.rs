@@ -44,7 +44,7 @@ pub use mesh::{PolyMesh, weld_exact};
 pub use principal::{
     DEGENERACY_TOLERANCE, Degeneracy, PrincipalInertia, principal_inertia, symmetric_eigen,
 };
-pub use properties::{MassProperties, parallel_axis_term};
+pub use properties::{Comparison, MassProperties, parallel_axis_term};
 pub use shell::shell_properties;
 pub use solid::{Solid, solid_properties};
 

@@ -6,7 +6,7 @@
 
 use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
 
-use crate::principal::{PrincipalInertia, principal_inertia};
+use crate::principal::{Degeneracy, PrincipalInertia, principal_inertia};
 use crate::MeshError;
 
 /// Mass, centre of mass and inertia tensor (tensor convention, about the centre of mass, in the
@@ -86,6 +86,44 @@ impl MassProperties {
         let mass = positive("mass", mass)?;
         let k = mass / self.mass;
         Ok(Self::new(mass, self.center_of_mass, self.inertia_com * k))
+    }
+}
+
+/// How far an approximation is from the exact mass properties.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Comparison {
+    /// Relative error of each principal moment, (approx − exact) / exact, ascending order.
+    pub moment_error: Vector3<f64>,
+    /// Angle (radians, 0 to π/2) between corresponding principal axes; `None` where either
+    /// body's axis is not unique (equal moments).
+    pub axis_angle: [Option<f64>; 3],
+    /// Distance between the centres of mass.
+    pub com_offset: f64,
+}
+
+impl MassProperties {
+    /// Compares `self` (an approximation) with `exact`.
+    pub fn compare_to(&self, exact: &MassProperties) -> Comparison {
+        let unique = |p: &PrincipalInertia, i: usize| match p.degeneracy {
+            Degeneracy::Distinct => true,
+            Degeneracy::Moments12 => i == 2,
+            Degeneracy::Moments23 => i == 0,
+            Degeneracy::Spherical => false,
+        };
+        let axis_angle = std::array::from_fn(|i| {
+            (unique(&self.principal, i) && unique(&exact.principal, i)).then(|| {
+                let a = self.principal.rotation.matrix().column(i);
+                let b = exact.principal.rotation.matrix().column(i);
+                // atan2 keeps small angles accurate where acos of a dot product cannot.
+                a.cross(&b).norm().atan2(a.dot(&b).abs())
+            })
+        });
+        Comparison {
+            moment_error: (self.principal.moments - exact.principal.moments)
+                .component_div(&exact.principal.moments),
+            axis_angle,
+            com_offset: (self.center_of_mass - exact.center_of_mass).norm(),
+        }
     }
 }
 

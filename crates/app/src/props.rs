@@ -1,0 +1,107 @@
+//! `inertia-lab props FILE`: mass properties of a mesh as a readable table or one JSON object.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use clap::{Args, ValueEnum};
+use massprops::{MassSpec, Method};
+
+use crate::error::CliError;
+use crate::report;
+
+/// Mass-distribution method, as named on the command line.
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum MethodArg {
+    /// Solid of uniform density bounded by a closed mesh (exact, Mirtich 1996).
+    Volume,
+    /// Thin wall of uniform surface density on the faces (open meshes, sheets); density in kg/m².
+    Shell,
+    /// Equal point masses at the vertices (approximation).
+    Points,
+    /// Solid cuboid filling the axis-aligned bounding box (approximation).
+    Bbox,
+}
+
+impl From<MethodArg> for Method {
+    fn from(m: MethodArg) -> Self {
+        match m {
+            MethodArg::Volume => Method::Volume,
+            MethodArg::Shell => Method::Shell,
+            MethodArg::Points => Method::Points,
+            MethodArg::Bbox => Method::BoundingBox,
+        }
+    }
+}
+
+/// Arguments of `props`.
+#[derive(Args, Debug)]
+pub struct PropsArgs {
+    /// Mesh file: .obj or .stl (binary or ASCII). All objects and groups form one body.
+    pub file: PathBuf,
+    /// Density: mass per volume (per area for --method shell). Default 1.
+    #[arg(long, conflicts_with = "mass", allow_negative_numbers = true)]
+    pub density: Option<f64>,
+    /// Total mass instead of a density.
+    #[arg(long, allow_negative_numbers = true)]
+    pub mass: Option<f64>,
+    /// Multiply every coordinate by S before computing (e.g. 0.001 for a file in millimetres).
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    pub scale: f64,
+    /// How the mass is distributed.
+    #[arg(long, value_enum, default_value_t = MethodArg::Volume)]
+    pub method: MethodArg,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Print the time spent reading and computing to stderr.
+    #[arg(long)]
+    pub timings: bool,
+}
+
+/// Runs `props`.
+pub fn run(args: &PropsArgs) -> Result<(), CliError> {
+    if !(args.scale.is_finite() && args.scale > 0.0) {
+        return Err(CliError::Usage(format!(
+            "--scale must be a finite number greater than zero, got {}",
+            args.scale
+        )));
+    }
+    let spec = match (args.density, args.mass) {
+        (_, Some(m)) => MassSpec::Mass(m),
+        (Some(d), None) => MassSpec::Density(d),
+        (None, None) => MassSpec::Density(1.0),
+    };
+    for (name, v) in [("--density", args.density), ("--mass", args.mass)] {
+        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
+            return Err(CliError::Usage(format!(
+                "{name} must be a finite number greater than zero, got {v}"
+            )));
+        }
+    }
+    let start = Instant::now();
+    let mut mesh = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
+    let parsed = Instant::now();
+    if args.scale != 1.0 {
+        mesh = mesh
+            .map_positions(|p| p * args.scale)
+            .map_err(|e| CliError::Input(format!("{}: {e}", args.file.display())))?;
+    }
+    let analysis = massprops::analyze(&mesh, args.method.into(), spec)
+        .map_err(|e| CliError::Input(format!("{}: {e}", args.file.display())))?;
+    let computed = Instant::now();
+    let file = args.file.display().to_string();
+    if args.json {
+        println!("{}", report::json(&file, args.scale, &analysis));
+    } else {
+        print!("{}", report::table(&file, args.scale, &analysis));
+    }
+    if args.timings {
+        eprintln!(
+            "timings: read+parse {:.3} ms, integrate+diagnose {:.3} ms ({} triangles)",
+            (parsed - start).as_secs_f64() * 1e3,
+            (computed - parsed).as_secs_f64() * 1e3,
+            mesh.triangle_count()
+        );
+    }
+    Ok(())
+}

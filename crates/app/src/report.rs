@@ -1,0 +1,216 @@
+//! Presentation of a `massprops::Analysis`: the human table and the JSON object of `props`.
+
+use std::fmt::Write as _;
+
+use massprops::{Analysis, Comparison, Degeneracy, MassProperties, Method};
+use nalgebra::{Matrix3, Point3, Vector3};
+use serde_json::{Value, json};
+
+/// Version of the JSON schema printed by `props --json`; bumped on any incompatible change.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// The tensor sign convention, stated in every output.
+pub const TENSOR_CONVENTION: &str =
+    "inertia tensor I = sum m(|r|^2 E - r r^T): diagonal = moments, off-diagonals = -sum(m*x*y)";
+
+fn rows(m: &Matrix3<f64>) -> Value {
+    json!([
+        [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
+        [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
+        [m[(2, 0)], m[(2, 1)], m[(2, 2)]]
+    ])
+}
+
+fn point(p: &Point3<f64>) -> Value {
+    json!([p.x, p.y, p.z])
+}
+
+fn vector(v: &Vector3<f64>) -> Value {
+    json!([v.x, v.y, v.z])
+}
+
+fn degeneracy_name(d: Degeneracy) -> &'static str {
+    match d {
+        Degeneracy::Distinct => "distinct",
+        Degeneracy::Moments12 => "I1=I2",
+        Degeneracy::Moments23 => "I2=I3",
+        Degeneracy::Spherical => "I1=I2=I3",
+    }
+}
+
+/// Principal axes as rows: row i is the unit axis of moment i.
+fn axes_rows(p: &MassProperties) -> Matrix3<f64> {
+    p.principal.rotation.matrix().transpose()
+}
+
+fn approximation_json(approx: &MassProperties, exact: &MassProperties) -> Value {
+    let c = approx.compare_to(exact);
+    json!({
+        "center": point(&approx.center_of_mass),
+        "inertia": rows(&approx.inertia_com),
+        "principal_moments": vector(&approx.principal.moments),
+        "principal_moment_error": vector(&c.moment_error),
+        "principal_axis_angle_deg": c.axis_angle.map(|a| a.map(f64::to_degrees)),
+    })
+}
+
+/// The `props --json` object.
+pub fn json(file: &str, scale: f64, a: &Analysis) -> Value {
+    let p = &a.properties;
+    let d = &a.diagnostics;
+    let (lo, hi) = d.bounding_box;
+    let density_unit = if a.method == Method::Shell {
+        "mass per area"
+    } else {
+        "mass per volume"
+    };
+    json!({
+        "schema_version": SCHEMA_VERSION,
+        "file": file,
+        "method": a.method.name(),
+        "conventions": {
+            "tensor": TENSOR_CONVENTION,
+            "frame": "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin",
+            "units": "lengths in the mesh unit times scale; mass in the unit of density times length^3",
+            "density": density_unit,
+            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
+        },
+        "scale": scale,
+        "density": a.density,
+        "volume": a.volume,
+        "mass": p.mass,
+        "surface_area": d.surface_area,
+        "center_of_mass": point(&p.center_of_mass),
+        "inertia_com": rows(&p.inertia_com),
+        "inertia_origin": rows(&p.inertia_origin()),
+        "principal_moments": vector(&p.principal.moments),
+        "principal_axes": rows(&axes_rows(p)),
+        "principal_degeneracy": degeneracy_name(p.principal.degeneracy),
+        "bounding_box": { "min": point(&lo), "max": point(&hi) },
+        "inertia_bbox": rows(&a.bounding_box.inertia_com),
+        "inertia_points": rows(&a.point_masses.inertia_com),
+        "approximations": {
+            "bbox": approximation_json(&a.bounding_box, p),
+            "points": approximation_json(&a.point_masses, p),
+        },
+        "mesh": {
+            "vertices": d.vertices,
+            "faces": d.faces,
+            "triangles": d.triangles,
+            "edges": d.edges,
+            "closed": d.is_closed(),
+            "consistently_oriented": d.is_consistently_oriented(),
+            "open_edges": d.open_edges,
+            "nonmanifold_edges": d.nonmanifold_edges,
+            "inconsistent_edges": d.inconsistent_edges,
+            "degenerate_faces": d.degenerate_faces,
+            "nonplanar_faces": d.nonplanar_faces,
+            "flipped": a.flipped,
+        },
+        "warnings": a.warnings,
+    })
+}
+
+/// Shortest decimal that reads back to the same f64 (full precision), right-aligned; plain
+/// notation for moderate magnitudes, exponent notation for very small or large ones.
+fn num(v: f64) -> String {
+    let text = if v == 0.0 || (1e-4..1e15).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    };
+    format!("{text:>24}")
+}
+
+fn matrix_lines(out: &mut String, m: &Matrix3<f64>) {
+    for r in 0..3 {
+        let _ = writeln!(out, "    [{} {} {} ]", num(m[(r, 0)]), num(m[(r, 1)]), num(m[(r, 2)]));
+    }
+}
+
+fn comparison_line(out: &mut String, name: &str, c: &Comparison, approx: &MassProperties) {
+    let angles: Vec<String> = c
+        .axis_angle
+        .iter()
+        .map(|a| a.map_or("n/a (equal moments)".into(), |a| format!("{:.3}°", a.to_degrees())))
+        .collect();
+    let _ = writeln!(
+        out,
+        "  {name}\n    principal moments {} {} {}\n    error vs exact     {:+.2}% {:+.2}% {:+.2}%\n    axis angles        {}\n    centre offset      {}",
+        num(approx.principal.moments.x),
+        num(approx.principal.moments.y),
+        num(approx.principal.moments.z),
+        c.moment_error.x * 100.0,
+        c.moment_error.y * 100.0,
+        c.moment_error.z * 100.0,
+        angles.join(", "),
+        num(c.com_offset).trim_start(),
+    );
+}
+
+/// The human-readable `props` table.
+pub fn table(file: &str, scale: f64, a: &Analysis) -> String {
+    let p = &a.properties;
+    let d = &a.diagnostics;
+    let mut s = String::new();
+    let method = match a.method {
+        Method::Volume => "volume (solid of uniform density, Mirtich 1996)",
+        Method::Shell => "shell (thin wall of uniform surface density)",
+        Method::Points => "points (equal masses at the vertices; approximation)",
+        Method::BoundingBox => "bbox (solid cuboid filling the bounding box; approximation)",
+    };
+    let _ = writeln!(s, "Mass properties of {file}");
+    let _ = writeln!(s, "  method            {method}");
+    if scale != 1.0 {
+        let _ = writeln!(s, "  scale             {scale} (applied to every coordinate)");
+    }
+    let opt = |v: Option<f64>| v.map_or("n/a".to_string(), |v| num(v).trim_start().to_string());
+    let _ = writeln!(s, "  density           {}", opt(a.density));
+    let _ = writeln!(s, "  volume            {}", opt(a.volume));
+    let _ = writeln!(s, "  mass              {}", num(p.mass).trim_start());
+    let _ = writeln!(s, "  surface area      {}", num(d.surface_area).trim_start());
+    let c = p.center_of_mass;
+    let _ = writeln!(s, "  centre of mass    {} {} {}", num(c.x), num(c.y), num(c.z));
+    let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; mesh axes.");
+    let _ = writeln!(s, "  inertia about the centre of mass");
+    matrix_lines(&mut s, &p.inertia_com);
+    let _ = writeln!(s, "  inertia about the mesh origin");
+    matrix_lines(&mut s, &p.inertia_origin());
+    let m = p.principal.moments;
+    let _ = writeln!(s, "  principal moments (ascending) {} {} {}", num(m.x), num(m.y), num(m.z));
+    let _ = writeln!(s, "    {}", p.principal.degeneracy.describe());
+    let _ = writeln!(s, "  principal axes (row i = axis of moment i, right-handed)");
+    matrix_lines(&mut s, &axes_rows(p));
+    let (lo, hi) = d.bounding_box;
+    let _ = writeln!(s, "\nBounding box  min {} {} {}", num(lo.x), num(lo.y), num(lo.z));
+    let _ = writeln!(s, "              max {} {} {}", num(hi.x), num(hi.y), num(hi.z));
+    let _ = writeln!(s, "\nApproximations with the same mass, compared with the {} result:", a.method.name());
+    comparison_line(&mut s, "bounding-box cuboid (about the box centre)", &a.bounding_box.compare_to(p), &a.bounding_box);
+    comparison_line(&mut s, "vertex point masses (about their centre)", &a.point_masses.compare_to(p), &a.point_masses);
+    let yes = |b: bool| if b { "yes" } else { "no" };
+    let _ = writeln!(
+        s,
+        "\nMesh: {} vertices, {} faces, {} triangles, {} edges\n  closed {}, consistently oriented {}, flipped {}\n  open edges {}, non-manifold edges {}, inconsistent edges {}, degenerate faces {}, non-planar faces {}",
+        d.vertices,
+        d.faces,
+        d.triangles,
+        d.edges,
+        yes(d.is_closed()),
+        yes(d.is_consistently_oriented()),
+        yes(a.flipped),
+        d.open_edges,
+        d.nonmanifold_edges,
+        d.inconsistent_edges,
+        d.degenerate_faces,
+        d.nonplanar_faces
+    );
+    if a.warnings.is_empty() {
+        let _ = writeln!(s, "\nNo warnings.");
+    } else {
+        let _ = writeln!(s, "\nWarnings:");
+        for w in &a.warnings {
+            let _ = writeln!(s, "  - {w}");
+        }
+    }
+    s
+}
