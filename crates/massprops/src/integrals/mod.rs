@@ -72,6 +72,19 @@ impl VolumeIntegrals {
     }
 }
 
+/// Whether this CPU runs the AVX2 + FMA kernels (checked once, then cached by std).
+#[cfg(target_arch = "x86_64")]
+pub(crate) fn has_avx2_fma() -> bool {
+    std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
+}
+
+/// `a·b + c`, fused (one rounding) in kernels compiled for FMA hardware. Without the hardware
+/// `mul_add` is a slow library call, so the plain form is used there.
+#[inline(always)]
+pub(crate) fn madd<const FMA: bool>(a: f64, b: f64, c: f64) -> f64 {
+    if FMA { a.mul_add(b, c) } else { a * b + c }
+}
+
 /// Neumaier's improved Kahan summation of N values at once.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct CompensatedSum<const N: usize> {

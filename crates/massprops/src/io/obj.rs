@@ -38,6 +38,10 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
     let mut positions = Vec::new();
     let mut indices = Vec::new();
     let mut arities = Vec::new();
+    // tobj returns `f` and `l` lines alike as elements (an `l` of three or more points looks like
+    // a face), in file order; `p` lines it drops. Their lines are only looked up when needed.
+    let mut lines: Option<Vec<(usize, bool)>> = None;
+    let polylines = has_polylines(text);
     let mut element = 0usize;
     for model in &models {
         let m = &model.mesh;
@@ -58,9 +62,14 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         for arity in model_arities {
             let face = &m.indices[start..start + arity];
             start += arity;
-            if arity < 3 {
-                match nth_element_line(text, element) {
-                    Some((line, "f")) => {
+            let this = element;
+            element += 1;
+            if arity < 3 || polylines {
+                let lines = lines.get_or_insert_with(|| element_lines(text));
+                match lines.get(this) {
+                    // Polylines bound no volume: not part of the body.
+                    Some(&(_, true)) => continue,
+                    Some(&(line, false)) if arity < 3 => {
                         return Err(MeshError::InFile {
                             path: path.to_path_buf(),
                             line: Some(line),
@@ -70,14 +79,9 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
                             }),
                         });
                     }
-                    // Polylines (`l`) and points (`p`) bound no volume: not part of the body.
-                    _ => {
-                        element += 1;
-                        continue;
-                    }
+                    _ => {}
                 }
             }
-            element += 1;
             indices.extend(face.iter().map(|&i| i + base));
             arities.push(arity);
         }
@@ -129,19 +133,29 @@ fn first_line(text: &str, mut bad: impl FnMut(&str, &str) -> bool) -> Option<usi
     })
 }
 
-/// Line number and keyword of the `n`-th (zero-based) face, polyline or point element.
-fn nth_element_line(text: &str, n: usize) -> Option<(usize, &'static str)> {
+/// The first word of each line, with its one-based line number.
+fn keywords(text: &str) -> impl Iterator<Item = (usize, &str)> {
     text.lines()
         .enumerate()
-        .filter_map(|(i, line)| {
-            match line.trim_start().split_whitespace().next() {
-                Some("f") => Some((i + 1, "f")),
-                Some("l") => Some((i + 1, "l")),
-                Some("p") => Some((i + 1, "p")),
-                _ => None,
-            }
+        .filter_map(|(i, line)| line.split_whitespace().next().map(|kw| (i + 1, kw)))
+}
+
+/// Whether the file has any polyline (`l`) element. The substring test skips the line scan for
+/// the usual file, which has none.
+fn has_polylines(text: &str) -> bool {
+    (text.contains("l ") || text.contains("l\t")) && keywords(text).any(|(_, kw)| kw == "l")
+}
+
+/// For each element tobj returns (each `f` or `l` line, in order): its one-based line number and
+/// whether it is a polyline.
+fn element_lines(text: &str) -> Vec<(usize, bool)> {
+    keywords(text)
+        .filter_map(|(line, kw)| match kw {
+            "f" => Some((line, false)),
+            "l" => Some((line, true)),
+            _ => None,
         })
-        .nth(n)
+        .collect()
 }
 
 /// Finds the line `tobj` rejected, by re-checking the lines of the kind its error names.

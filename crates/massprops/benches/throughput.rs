@@ -1,0 +1,58 @@
+//! Triangles per second of each integration path, side by side with parry3d-f64's
+//! `MassProperties::from_trimesh` on the same data, for 10k to 4M-triangle tori.
+//!
+//! Run with `cargo bench -p massprops --bench throughput`; criterion prints the throughput of
+//! each (path, size) in Melem/s (= million triangles per second).
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use massprops::{IntegrationPath, PolyMesh, shapes, volume_integrals};
+
+/// A closed triangulated torus of 4·t² triangles.
+fn torus_mesh(triangles: usize) -> PolyMesh {
+    let t = ((triangles / 4) as f64).sqrt().round() as usize;
+    shapes::torus(1.0, 0.3, 2 * t, t).triangulated().build()
+}
+
+fn throughput(c: &mut Criterion) {
+    let mut group = c.benchmark_group("volume_integrals");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    for size in [10_000, 100_000, 1_000_000, 4_000_000] {
+        let mesh = torus_mesh(size);
+        let triangles = mesh.as_triangles().expect("triangulated").to_vec();
+        let parry_vertices: Vec<parry3d_f64::math::Vector> = mesh
+            .positions()
+            .iter()
+            .map(|p| parry3d_f64::math::Vector::new(p.x, p.y, p.z))
+            .collect();
+        group.throughput(Throughput::Elements(triangles.len() as u64));
+        let label = format!("{}k", triangles.len() / 1000);
+        for (name, path) in [
+            ("polygon", IntegrationPath::Polygon),
+            ("triangle", IntegrationPath::Triangle),
+            ("triangle_parallel", IntegrationPath::TriangleParallel),
+        ] {
+            group.bench_with_input(BenchmarkId::new(name, &label), &mesh, |b, m| {
+                b.iter(|| volume_integrals(black_box(m), path))
+            });
+        }
+        group.bench_with_input(BenchmarkId::new("parry3d_f64", &label), &triangles, |b, t| {
+            b.iter(|| {
+                parry3d_f64::mass_properties::MassProperties::from_trimesh(
+                    1.0,
+                    black_box(&parry_vertices),
+                    black_box(t),
+                )
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, throughput);
+criterion_main!(benches);

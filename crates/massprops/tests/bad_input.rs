@@ -1,0 +1,431 @@
+//! Diagnostics and errors on crafted bad meshes and files, and the loaders (OBJ, binary and ASCII
+//! STL) on good ones. Error messages must say where the problem is.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+
+use common::{assert_mat, assert_rel, box_tensor};
+use massprops::shapes::{self, MeshBuilder};
+use massprops::{
+    Method, MassSpec, MeshError, PolyMesh, analyze, diagnose, load_mesh, mass_properties,
+    parse_mesh, shell_properties, solid_properties,
+};
+use nalgebra::{Matrix3, Point3, Vector3};
+
+fn obj(text: &str) -> Result<PolyMesh, MeshError> {
+    parse_mesh(text.as_bytes(), Path::new("part.obj"))
+}
+
+/// The error's message, which must name the file and, where given, the line.
+#[track_caller]
+fn obj_error(text: &str) -> String {
+    let e = obj(text).expect_err("the file is bad");
+    let msg = e.to_string();
+    assert!(msg.contains("part.obj"), "the message names the file: {msg}");
+    msg
+}
+
+/// A unique scratch path (no temp-file crate: process id, test name and a counter).
+fn scratch(name: &str) -> PathBuf {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static N: AtomicUsize = AtomicUsize::new(0);
+    let n = N.fetch_add(1, Ordering::Relaxed);
+    std::env::temp_dir().join(format!("massprops-test-{}-{n}-{name}", std::process::id()))
+}
+
+/// A box with dyadic corners (exact in f32, so STL loses nothing): 2 × 1 × 0.5 at (0.5, -1, 4).
+fn dyadic_box() -> MeshBuilder {
+    shapes::cuboid(Vector3::new(2.0, 1.0, 0.5), Point3::new(0.5, -1.0, 4.0))
+}
+
+const CUBE_OBJ: &str = "\
+# unit cube
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+f 1 4 3 2
+f 5 6 7 8
+f 1 2 6 5
+f 2 3 7 6
+f 3 4 8 7
+f 4 1 5 8
+";
+
+#[test]
+fn the_reference_cube_file_is_good() {
+    let m = obj(CUBE_OBJ).expect("valid");
+    let d = diagnose(&m);
+    assert!(d.is_closed() && d.is_consistently_oriented(), "{d:?}");
+    assert_eq!((d.vertices, d.faces, d.triangles, d.edges), (8, 6, 12, 12));
+    assert_rel(d.surface_area, 6.0, 1e-15, "area");
+    let p = mass_properties(&m, 1.0).expect("closed");
+    assert_mat(&p.inertia_com, &(Matrix3::identity() / 6.0), 1e-15, "cube");
+}
+
+#[test]
+fn open_mesh_counts_its_boundary_edges() {
+    let mut b = shapes::cube();
+    b.faces.remove(1); // the top
+    let mesh = b.build();
+    let d = diagnose(&mesh);
+    assert_eq!(d.open_edges, 4);
+    assert_eq!(d.nonmanifold_edges, 0);
+    assert!(!d.is_closed());
+    assert_eq!(d.open_edge_examples.len(), 4);
+    for (a, b) in &d.open_edge_examples {
+        assert!((4..8).contains(a) && (4..8).contains(b), "top edges: {a}-{b}");
+    }
+    let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
+    assert!(a.warnings.iter().any(|w| w.contains("open") && w.contains("4 boundary edge")), "{:?}", a.warnings);
+    // The shell method is meant for open meshes: no open-mesh warning there.
+    let s = analyze(&mesh, Method::Shell, MassSpec::Density(1.0)).expect("area");
+    assert!(!s.warnings.iter().any(|w| w.contains("open")), "{:?}", s.warnings);
+    assert_rel(s.properties.mass, 5.0, 1e-15, "five unit faces");
+}
+
+#[test]
+fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
+    // Box [0,1]³ and box [1,2]×[1,2]×[0,1] share the edge x = y = 1: four faces use it.
+    let mut b = shapes::cuboid(Vector3::repeat(1.0), Point3::new(0.5, 0.5, 0.5));
+    b.append(&shapes::cuboid(Vector3::repeat(1.0), Point3::new(1.5, 1.5, 0.5)));
+    let (positions, remap) = massprops::weld_exact(&b.positions);
+    let faces: Vec<Vec<usize>> = b.faces.iter().map(|f| f.iter().map(|&i| remap[i] as usize).collect()).collect();
+    let mesh = PolyMesh::new(positions, &faces).expect("valid");
+    let d = diagnose(&mesh);
+    assert_eq!(d.vertices, 14);
+    assert_eq!(d.nonmanifold_edges, 1);
+    assert_eq!(d.open_edges, 0);
+    assert!(!d.is_closed());
+    let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume 2");
+    assert_rel(a.properties.mass, 2.0, 1e-15, "two unit boxes");
+    assert!(a.warnings.iter().any(|w| w.contains("1 non-manifold edge")), "{:?}", a.warnings);
+}
+
+#[test]
+fn one_flipped_face_gives_four_inconsistent_edges() {
+    let mut b = shapes::cube();
+    b.faces[3].reverse();
+    let mesh = b.build();
+    let d = diagnose(&mesh);
+    assert_eq!(d.inconsistent_edges, 4);
+    assert_eq!(d.open_edges, 0);
+    assert!(!d.is_consistently_oriented());
+    let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
+    assert!(a.warnings.iter().any(|w| w.contains("4 edge(s)") && w.contains("wind")), "{:?}", a.warnings);
+}
+
+#[test]
+fn inverted_mesh_is_flipped_and_warned_about() {
+    let mesh = shapes::book().build().flipped();
+    let d = diagnose(&mesh);
+    assert!(d.is_closed() && d.is_consistently_oriented());
+    let s = solid_properties(&mesh, massprops::IntegrationPath::Auto).expect("volume");
+    assert!(s.flipped);
+    assert_rel(s.volume, 28.0, 1e-15, "book volume");
+    let a = analyze(&mesh, Method::Volume, MassSpec::Density(2.0)).expect("volume");
+    assert!(a.flipped);
+    assert_eq!(a.warnings.len(), 1, "{:?}", a.warnings);
+    assert!(a.warnings[0].contains("clockwise"), "{:?}", a.warnings);
+    assert_mat(&a.properties.inertia_com, &box_tensor(56.0, 1.0, 4.0, 7.0), 1e-14, "flipped book");
+}
+
+#[test]
+fn degenerate_and_non_planar_faces_are_reported() {
+    // A cube with one top corner raised: the three quads around it leave their planes.
+    let mut b = shapes::cube();
+    b.positions[6].z += 0.1;
+    let mesh = b.build();
+    let d = diagnose(&mesh);
+    let around: Vec<usize> = (0..b.faces.len()).filter(|&f| b.faces[f].contains(&6)).collect();
+    assert_eq!(d.nonplanar_faces, 3);
+    assert_eq!(d.nonplanar_face_examples, around);
+    assert_eq!(d.degenerate_faces, 0);
+    let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume");
+    assert!(a.warnings.iter().any(|w| w.contains("3 non-planar")), "{:?}", a.warnings);
+    // Its triangulation is planar by construction.
+    assert_eq!(diagnose(&b.clone().triangulated().build()).nonplanar_faces, 0);
+
+    // A zero-area triangle (three collinear corners) glued into a closed mesh.
+    let mut c = shapes::cube().triangulated();
+    let mid = Point3::from((c.positions[0].coords + c.positions[1].coords) / 2.0);
+    c.positions.push(mid);
+    c.faces.push(vec![0, 8, 1]);
+    c.faces.push(vec![1, 8, 0]);
+    let d = diagnose(&c.build());
+    assert_eq!(d.degenerate_faces, 2);
+    assert_eq!(d.degenerate_face_examples, vec![12, 13]);
+    let a = analyze(&c.build(), Method::Volume, MassSpec::Density(1.0)).expect("volume");
+    assert!(a.warnings.iter().any(|w| w.contains("2 degenerate face(s)") && w.contains("12, 13")), "{:?}", a.warnings);
+    assert_rel(a.properties.mass, 1.0, 1e-15, "unit cube");
+}
+
+#[test]
+fn empty_files_are_errors() {
+    for text in ["", "# nothing\n", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"] {
+        let e = obj(text).expect_err("no faces");
+        assert!(e.to_string().contains("empty"), "{e}");
+    }
+    let e = parse_mesh(b"", Path::new("part.stl")).expect_err("empty STL");
+    assert!(e.to_string().contains("part.stl"), "{e}");
+}
+
+#[test]
+fn non_finite_coordinates_name_the_line() {
+    for bad in ["v 1 nan 0", "v inf 0 0", "v 0 0 1e400", "v 0 -inf 0"] {
+        let text = CUBE_OBJ.replacen("v 1 1 0", bad, 1);
+        let msg = obj_error(&text);
+        assert!(msg.contains("line 4"), "{bad}: {msg}");
+        assert!(msg.contains("non-finite"), "{bad}: {msg}");
+    }
+}
+
+#[test]
+fn indices_out_of_range_name_the_line() {
+    for (bad, what) in [("f 5 6 7 9", "past the end"), ("f 5 6 7 -9", "relative, before the start"), ("f 0 6 7 8", "zero")] {
+        let text = CUBE_OBJ.replacen("f 5 6 7 8", bad, 1);
+        let msg = obj_error(&text);
+        assert!(msg.contains("line 11"), "{what} ({bad}): {msg}");
+    }
+    // Relative indices that are in range are fine.
+    let rel = CUBE_OBJ.replacen("f 5 6 7 8", "f -4 -3 -2 -1", 1);
+    assert!(diagnose(&obj(&rel).expect("valid")).is_closed());
+}
+
+#[test]
+fn malformed_lines_are_named() {
+    for (bad, line) in [
+        ("v 1 1", 4),
+        ("v 1 x 0", 4),
+        ("v 1 1 0 0", 4),     // w = 0 divides by zero
+        ("v 1 1 0 1 2", 4),   // five numbers: neither w nor a colour
+        ("f 5 6 seven 8", 11),
+        ("vn 0 0", 3),
+    ] {
+        let text = if bad.starts_with("vn") {
+            CUBE_OBJ.replacen("v 0 0 0\n", "v 0 0 0\nvn 0 0\n", 1)
+        } else if bad.starts_with('f') {
+            CUBE_OBJ.replacen("f 5 6 7 8", bad, 1)
+        } else {
+            CUBE_OBJ.replacen("v 1 1 0", bad, 1)
+        };
+        let msg = obj_error(&text);
+        assert!(msg.contains(&format!("line {line}")), "{bad}: {msg}");
+    }
+}
+
+#[test]
+fn faces_with_fewer_than_three_corners_name_the_line() {
+    let text = CUBE_OBJ.replacen("f 5 6 7 8", "f 5 6", 1);
+    let msg = obj_error(&text);
+    assert!(msg.contains("line 11") && msg.contains("2 corner"), "{msg}");
+    let text = CUBE_OBJ.replacen("f 5 6 7 8", "f 5", 1);
+    let msg = obj_error(&text);
+    assert!(msg.contains("line 11") && msg.contains("1 corner"), "{msg}");
+    // Point and polyline elements before the bad face do not shift the count.
+    let text = CUBE_OBJ.replacen("f 1 4 3 2", "p 1\nl 1 2\nf 1 4 3 2", 1).replacen("f 5 6 7 8", "f 5 6", 1);
+    let msg = obj_error(&text);
+    assert!(msg.contains("line 13") && msg.contains("2 corner"), "{msg}");
+    let text = CUBE_OBJ.replacen("f 1 4 3 2", "f 1 4 3 2\np 1 2 3", 1).replacen("f 5 6 7 8", "f 5 6", 1);
+    let msg = obj_error(&text);
+    assert!(msg.contains("line 12"), "{msg}");
+}
+
+#[test]
+fn points_and_polylines_are_not_part_of_the_body() {
+    let extra = format!("{CUBE_OBJ}p 1 7\nl 1 7\nl 1 7 3 5\n");
+    let m = obj(&extra).expect("valid");
+    assert_eq!(m.face_count(), 6, "a polyline of any length bounds nothing");
+    let d = diagnose(&m);
+    assert!(d.is_closed(), "{d:?}");
+}
+
+#[test]
+fn a_flat_sheet_has_no_volume_but_a_shell() {
+    let sheet = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    let m = obj(sheet).expect("a valid mesh");
+    let e = solid_properties(&m, massprops::IntegrationPath::Auto).expect_err("flat");
+    assert!(matches!(e, MeshError::ZeroVolume { .. }), "{e:?}");
+    assert!(e.to_string().contains("shell"), "{e}");
+    assert!(matches!(mass_properties(&m, 1.0), Err(MeshError::ZeroVolume { .. })));
+    for method in [Method::Volume, Method::Points, Method::BoundingBox] {
+        assert!(matches!(analyze(&m, method, MassSpec::Density(1.0)), Err(MeshError::ZeroVolume { .. })), "{method:?}");
+    }
+    let sigma = 2.5;
+    let (p, area) = shell_properties(&m, sigma).expect("area 1");
+    assert_rel(area, 1.0, 1e-15, "area");
+    assert_rel(p.mass, sigma, 1e-15, "mass");
+    assert!((p.center_of_mass - Point3::new(0.5, 0.5, 0.0)).amax() < 1e-15);
+    let want = Matrix3::from_diagonal(&Vector3::new(1.0 / 12.0, 1.0 / 12.0, 1.0 / 6.0)) * sigma;
+    assert_mat(&p.inertia_com, &want, 1e-14, "square sheet");
+    let a = analyze(&m, Method::Shell, MassSpec::Density(sigma)).expect("shell works");
+    assert_eq!(a.volume, None);
+    assert_eq!(a.density, Some(sigma));
+    assert_mat(&a.properties.inertia_com, &want, 1e-14, "analyze shell");
+    // A double-sided sheet (both windings) encloses nothing either.
+    let both = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n";
+    assert!(matches!(mass_properties(&obj(both).expect("valid"), 1.0), Err(MeshError::ZeroVolume { .. })));
+}
+
+#[test]
+fn unreadable_and_unsupported_files() {
+    let missing = scratch("does-not-exist.obj");
+    let e = load_mesh(&missing).expect_err("no such file");
+    assert!(matches!(e, MeshError::Io { .. }), "{e:?}");
+    assert!(e.to_string().contains("does-not-exist.obj"), "{e}");
+    for name in ["part.ply", "part", "part.obj.gz"] {
+        let e = parse_mesh(CUBE_OBJ.as_bytes(), Path::new(name)).expect_err("unsupported");
+        assert!(matches!(e, MeshError::UnsupportedFormat { .. }), "{name}: {e:?}");
+        assert!(e.to_string().contains(name), "{e}");
+    }
+    // Extensions are case-insensitive.
+    assert!(parse_mesh(CUBE_OBJ.as_bytes(), Path::new("PART.OBJ")).is_ok());
+    // Binary junk named .obj is malformed, not a panic.
+    let e = parse_mesh(&[0xff, 0xfe, 0x00, 0x80, 0x81], Path::new("part.obj")).expect_err("binary");
+    assert!(e.to_string().contains("line 1"), "{e}");
+}
+
+fn binary_stl(mesh: &MeshBuilder, header: &[u8]) -> Vec<u8> {
+    let tri = mesh.clone().triangulated();
+    let mut out = vec![0u8; 80];
+    out[..header.len()].copy_from_slice(header);
+    out.extend_from_slice(&(tri.faces.len() as u32).to_le_bytes());
+    for f in &tri.faces {
+        out.extend_from_slice(&[0u8; 12]); // normal: readers must not need it
+        for &i in f {
+            for c in tri.positions[i].coords.iter() {
+                out.extend_from_slice(&(*c as f32).to_le_bytes());
+            }
+        }
+        out.extend_from_slice(&[0, 0]);
+    }
+    out
+}
+
+fn ascii_stl(mesh: &MeshBuilder, first_line: &str) -> String {
+    let tri = mesh.clone().triangulated();
+    let mut s = format!("{first_line}\n");
+    for f in &tri.faces {
+        s.push_str("  facet normal 0 0 0\n    outer loop\n");
+        for &i in f {
+            let p = tri.positions[i];
+            s.push_str(&format!("      vertex {} {} {}\n", p.x as f32, p.y as f32, p.z as f32));
+        }
+        s.push_str("    endloop\n  endfacet\n");
+    }
+    s.push_str("endsolid box\n");
+    s
+}
+
+#[test]
+fn stl_binary_and_ascii_give_the_obj_result() {
+    let b = dyadic_box();
+    let from_obj = obj(&shapes::to_obj("box", "test", &b)).expect("valid");
+    let want = mass_properties(&from_obj, 3.0).expect("closed");
+    assert_rel(want.mass, 3.0, 1e-15, "box volume 1");
+    let files: Vec<(&str, Vec<u8>)> = vec![
+        ("binary", binary_stl(&b, b"binary STL written by a test")),
+        ("binary, header starting with \"solid \"", binary_stl(&b, b"solid box exported by a CAD program")),
+        ("ascii", ascii_stl(&b, "solid box").into_bytes()),
+        ("ascii, unnamed solid", ascii_stl(&b, "solid").into_bytes()),
+    ];
+    for (what, bytes) in files {
+        let path = scratch("box.stl");
+        std::fs::write(&path, &bytes).expect("temp dir is writable");
+        let loaded = load_mesh(&path);
+        std::fs::remove_file(&path).expect("remove the scratch file");
+        let m = loaded.unwrap_or_else(|e| panic!("{what}: {e}"));
+        let d = diagnose(&m);
+        assert_eq!((d.vertices, d.faces), (8, 12), "{what}: welded");
+        assert!(d.is_closed() && d.is_consistently_oriented(), "{what}: {d:?}");
+        let p = mass_properties(&m, 3.0).expect("closed");
+        assert_rel(p.mass, want.mass, 1e-15, what);
+        assert!((p.center_of_mass - want.center_of_mass).amax() < 1e-15, "{what}");
+        assert_mat(&p.inertia_com, &want.inertia_com, 1e-14, what);
+    }
+    // A truncated binary file is malformed, not a panic.
+    let mut short = binary_stl(&b, b"binary");
+    short.truncate(84 + 50 * 5 + 7);
+    let e = parse_mesh(&short, Path::new("cut.stl")).expect_err("truncated");
+    assert!(matches!(e, MeshError::Malformed { .. }), "{e:?}");
+    assert!(e.to_string().contains("cut.stl"), "{e}");
+}
+
+#[test]
+fn all_objects_and_groups_of_an_obj_form_one_body() {
+    let one = shapes::to_obj("a", "first", &shapes::cuboid(Vector3::repeat(1.0), Point3::origin()));
+    let two = shapes::to_obj("b", "second", &shapes::cuboid(Vector3::repeat(1.0), Point3::new(3.0, 0.0, 0.0)));
+    // Indices of the second object continue after the first object's 8 vertices.
+    let two_shifted: String = two
+        .lines()
+        .map(|l| match l.strip_prefix("f ") {
+            Some(rest) => {
+                let idx: Vec<String> = rest.split(' ').map(|i| (i.parse::<usize>().expect("index") + 8).to_string()).collect();
+                format!("f {}\n", idx.join(" "))
+            }
+            None => format!("{l}\n"),
+        })
+        .collect();
+    let grouped = format!("{one}g part2\n{two_shifted}").replacen("o b\n", "g second\n", 1);
+    for text in [format!("{one}{two_shifted}"), grouped] {
+        let m = obj(&text).expect("valid");
+        assert_eq!(m.face_count(), 12);
+        let p = mass_properties(&m, 1.0).expect("closed");
+        assert_rel(p.mass, 2.0, 1e-15, "two unit cubes");
+        assert!((p.center_of_mass - Point3::new(1.5, 0.0, 0.0)).amax() < 1e-15);
+        // Parallel axis: each cube is 1.5 from the common centre along x.
+        let want = Matrix3::identity() / 3.0 + Matrix3::from_diagonal(&Vector3::new(0.0, 4.5, 4.5));
+        assert_mat(&p.inertia_com, &want, 1e-14, "two cubes");
+    }
+}
+
+#[test]
+fn per_corner_positions_are_welded() {
+    // Every face lists its own copies of its corners (as exporters do for normals and UVs).
+    let cube = shapes::cube();
+    let mut text = String::from("o cube\nvn 0 0 1\nvt 0 0\n");
+    let mut next = 1;
+    let mut faces = String::new();
+    for f in &cube.faces {
+        faces.push('f');
+        for &i in f {
+            let p = cube.positions[i];
+            text.push_str(&format!("v {} {} {}\n", p.x, p.y, p.z));
+            faces.push_str(&format!(" {next}/1/1"));
+            next += 1;
+        }
+        faces.push('\n');
+    }
+    text.push_str(&faces);
+    let m = obj(&text).expect("valid");
+    let d = diagnose(&m);
+    assert_eq!(d.vertices, 8);
+    assert_eq!(d.open_edges, 0);
+    assert!(d.is_closed() && d.is_consistently_oriented(), "{d:?}");
+    let p = mass_properties(&m, 1.0).expect("closed");
+    assert_mat(&p.inertia_com, &(Matrix3::identity() / 6.0), 1e-15, "welded cube");
+}
+
+#[test]
+fn errors_on_parameters_are_typed() {
+    let m = shapes::cube().build();
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(mass_properties(&m, bad), Err(MeshError::InvalidParameter { .. })), "{bad}");
+        for spec in [MassSpec::Density(bad), MassSpec::Mass(bad)] {
+            let e = analyze(&m, Method::Volume, spec).expect_err("invalid");
+            assert!(matches!(e, MeshError::InvalidParameter { .. }), "{e:?}");
+        }
+        assert!(shell_properties(&m, bad).is_err());
+    }
+    // Constructing a mesh validates it, face by face.
+    let pts = vec![Point3::origin(), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0)];
+    let e = PolyMesh::new(pts.clone(), &[vec![0, 1, 2], vec![0, 1, 7]]).expect_err("out of range");
+    assert!(e.to_string().contains("face 1") && e.to_string().contains("vertex 7"), "{e}");
+    let e = PolyMesh::new(pts, &[vec![0usize, 1]]).expect_err("two corners");
+    assert!(e.to_string().contains("face 0"), "{e}");
+}
