@@ -168,7 +168,8 @@ impl Body {
     }
     /// Angular momentum in the principal frame.
     pub fn angular_momentum_principal(&self) -> Vector3<f64> {
-        self.orientation.inverse_transform_vector(&self.angular_momentum)
+        self.orientation
+            .inverse_transform_vector(&self.angular_momentum)
     }
     /// Angular velocity in the principal frame, `I⁻¹ L_p`.
     pub fn omega_principal(&self) -> Vector3<f64> {
@@ -329,7 +330,10 @@ mod tests {
     #[test]
     fn rejects_bad_mass_properties() {
         let ok = Vector3::new(1.0, 2.0, 3.0);
-        assert_eq!(Body::from_moments(0.0, ok), Err(BodyError::InvalidMass(0.0)));
+        assert_eq!(
+            Body::from_moments(0.0, ok),
+            Err(BodyError::InvalidMass(0.0))
+        );
         assert!(Body::from_moments(f64::NAN, ok).is_err());
         assert!(Body::from_moments(1.0, Vector3::new(1.0, 2.0, f64::INFINITY)).is_err());
         assert!(matches!(
@@ -354,7 +358,9 @@ mod tests {
         // A box tensor diag(3, 1, 2) rotated by a known rotation: moments come back 1, 2, 3 and
         // the axes reproduce the tensor.
         let rot = Rotation3::from_euler_angles(0.3, -0.7, 1.1);
-        let t = rot.matrix() * Matrix3::from_diagonal(&Vector3::new(3.0, 1.0, 2.0)) * rot.matrix().transpose();
+        let t = rot.matrix()
+            * Matrix3::from_diagonal(&Vector3::new(3.0, 1.0, 2.0))
+            * rot.matrix().transpose();
         let b = Body::from_inertia_tensor(2.0, &t).expect("valid tensor");
         assert!(close(b.moments().x, 1.0, 1e-13));
         assert!(close(b.moments().y, 2.0, 1e-13));
@@ -382,7 +388,8 @@ mod tests {
     #[test]
     fn changing_mass_properties_keeps_momenta_and_pose() {
         let mut b = Body::from_moments(1.0, Vector3::new(1.0, 2.0, 3.0)).expect("valid");
-        b.set_omega_principal(Vector3::new(0.5, 1.0, -2.0)).expect("finite");
+        b.set_omega_principal(Vector3::new(0.5, 1.0, -2.0))
+            .expect("finite");
         b.set_velocity(Vector3::new(1.0, 0.0, 0.0)).expect("finite");
         let (l, p, pose) = (b.angular_momentum(), b.momentum(), b.body_orientation());
         // Doubling every dimension at fixed density: mass ×8, inertia ×32.

@@ -47,7 +47,11 @@ pub struct DriftTracker {
 }
 
 fn relative(diff: f64, reference: f64) -> f64 {
-    if reference == 0.0 { diff.abs() } else { (diff / reference).abs() }
+    if reference == 0.0 {
+        diff.abs()
+    } else {
+        (diff / reference).abs()
+    }
 }
 
 impl DriftTracker {
@@ -64,8 +68,12 @@ impl DriftTracker {
     /// Folds in one more state.
     pub fn observe(&mut self, d: &Diagnostics) {
         let n0 = self.l0.norm();
-        self.max_l_norm = self.max_l_norm.max(relative(d.angular_momentum_norm - n0, n0));
-        self.max_l_vector = self.max_l_vector.max(relative((d.angular_momentum - self.l0).norm(), n0));
+        self.max_l_norm = self
+            .max_l_norm
+            .max(relative(d.angular_momentum_norm - n0, n0));
+        self.max_l_vector = self
+            .max_l_vector
+            .max(relative((d.angular_momentum - self.l0).norm(), n0));
         self.max_energy = self.max_energy.max(relative(d.energy - self.e0, self.e0));
     }
     /// Largest relative change of |L| seen.

@@ -149,7 +149,7 @@ impl SoftString {
                 value: frequency_hz,
             });
         }
-        if !(max_force >= 0.0) {
+        if max_force.is_nan() || max_force < 0.0 {
             return Err(BodyError::OutOfRange {
                 name: "string force cap",
                 requirement: "non-negative",
@@ -308,8 +308,14 @@ mod tests {
         // exactly onto the target: J = −m (v + C/h).
         let mut b = crate::Body::from_moments(2.0, Vector3::new(1.0, 1.0, 1.0)).expect("valid");
         b.set_velocity(Vector3::new(0.5, 0.0, 0.0)).expect("finite");
-        let s = SoftString::new(Point3::new(1.0, 0.0, 0.0), Point3::origin(), 1e12, 1.0, f64::INFINITY)
-            .expect("valid");
+        let s = SoftString::new(
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::origin(),
+            1e12,
+            1.0,
+            f64::INFINITY,
+        )
+        .expect("valid");
         let h = 0.01;
         let j = s.impulse(&b, h);
         let expect = -2.0 * (Vector3::new(0.5, 0.0, 0.0) + Vector3::new(-1.0, 0.0, 0.0) / h);

@@ -28,6 +28,8 @@ pub use body::Body;
 pub use diagnostics::{Diagnostics, DriftTracker, FlipCounter};
 pub use error::{BodyError, SimError};
 pub use forces::{Damping, SoftString, Spring, Wrench, gravity, gravity_potential};
-pub use integrators::exact::{elliptic_f, elliptic_k, jacobi_elliptic, torque_free_omega, torque_free_period};
+pub use integrators::exact::{
+    elliptic_f, elliptic_k, jacobi_elliptic, torque_free_omega, torque_free_period,
+};
 pub use integrators::{Integrator, ParseNameError, RotationModel};
 pub use simulation::{Advance, Settings, Simulation};

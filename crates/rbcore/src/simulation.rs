@@ -92,7 +92,10 @@ pub struct Simulation {
     initial: Body,
     forces: ForceModel,
     string: Option<SoftString>,
-    time: f64,
+    /// Time and step count when `dt` last changed: time is `time_origin + (steps − steps_origin)·dt`,
+    /// a product rather than a running sum, so t stays exactly n·dt to rounding.
+    time_origin: f64,
+    steps_origin: u64,
     steps: u64,
     accumulator: f64,
     paused: bool,
@@ -115,7 +118,8 @@ impl Simulation {
                 ..ForceModel::default()
             },
             string: None,
-            time: 0.0,
+            time_origin: 0.0,
+            steps_origin: 0,
             steps: 0,
             accumulator: 0.0,
             paused: false,
@@ -133,6 +137,8 @@ impl Simulation {
     /// Invalid settings; the old ones stay.
     pub fn set_settings(&mut self, settings: Settings) -> Result<(), SimError> {
         settings.validate().map_err(SimError::InvalidSetting)?;
+        self.time_origin = self.time();
+        self.steps_origin = self.steps;
         self.settings = settings;
         self.forces.gravity = settings.gravity;
         Ok(())
@@ -147,7 +153,7 @@ impl Simulation {
     }
     /// Simulated time (s).
     pub fn time(&self) -> f64 {
-        self.time
+        self.time_origin + (self.steps - self.steps_origin) as f64 * self.settings.dt
     }
     /// Steps taken since the start or the last reset.
     pub fn steps(&self) -> u64 {
@@ -169,7 +175,8 @@ impl Simulation {
     /// a divergence halt. Settings, the spring and the paused flag are kept.
     pub fn reset(&mut self) {
         self.body = self.initial;
-        self.time = 0.0;
+        self.time_origin = 0.0;
+        self.steps_origin = 0;
         self.steps = 0;
         self.accumulator = 0.0;
         self.forces.applied.clear();
@@ -228,7 +235,8 @@ impl Simulation {
         if !self.paused {
             self.accumulator += frame_dt;
             // A relative slack of 1e-9 keeps frame_dt = n·dt from losing a step to rounding.
-            while self.accumulator >= dt * (1.0 - 1e-9) && steps < self.settings.max_catch_up_steps {
+            while self.accumulator >= dt * (1.0 - 1e-9) && steps < self.settings.max_catch_up_steps
+            {
                 self.step()?;
                 self.accumulator -= dt;
                 steps += 1;
@@ -263,12 +271,14 @@ impl Simulation {
             b.angular_momentum += (x - b.position).cross(&j);
         }
         self.settings.damping.apply(&mut b, 0.5 * h);
-        self.settings.integrator.step(&mut b, &self.forces, h, self.settings.model);
+        self.settings
+            .integrator
+            .step(&mut b, &self.forces, h, self.settings.model);
         self.settings.damping.apply(&mut b, 0.5 * h);
         self.forces.applied.clear();
         if let Some((quantity, value)) = divergence(&b) {
             let e = SimError::Diverged {
-                time: self.time + h,
+                time: self.time() + h,
                 step: self.steps + 1,
                 quantity,
                 value,
@@ -278,7 +288,6 @@ impl Simulation {
         }
         self.body = b;
         self.steps += 1;
-        self.time += h;
         Ok(())
     }
 
@@ -292,7 +301,7 @@ impl Simulation {
             + self.string.as_ref().map_or(0.0, |s| s.potential(b));
         let l = b.angular_momentum;
         Diagnostics {
-            time: self.time,
+            time: self.time(),
             omega_principal: b.omega_principal(),
             omega_world: b.omega_world(),
             angular_momentum: l,
@@ -330,7 +339,8 @@ mod tests {
 
     fn sim() -> Simulation {
         let mut b = Body::from_moments(1.0, Vector3::new(1.0, 2.0, 3.0)).expect("valid");
-        b.set_omega_principal(Vector3::new(0.1, 1.0, 0.1)).expect("finite");
+        b.set_omega_principal(Vector3::new(0.1, 1.0, 0.1))
+            .expect("finite");
         Simulation::new(b, Settings::default()).expect("valid settings")
     }
 
@@ -338,12 +348,24 @@ mod tests {
     fn rejects_bad_settings() {
         let b = Body::from_moments(1.0, Vector3::new(1.0, 2.0, 3.0)).expect("valid");
         for dt in [0.0, -1.0, f64::NAN, f64::INFINITY, 2.0] {
-            let s = Settings { dt, ..Settings::default() };
+            let s = Settings {
+                dt,
+                ..Settings::default()
+            };
             assert!(Simulation::new(b, s).is_err());
         }
-        let s = Settings { gravity: Vector3::new(0.0, f64::NAN, 0.0), ..Settings::default() };
+        let s = Settings {
+            gravity: Vector3::new(0.0, f64::NAN, 0.0),
+            ..Settings::default()
+        };
         assert!(Simulation::new(b, s).is_err());
-        let s = Settings { damping: Damping { linear: -1.0, angular: 0.0 }, ..Settings::default() };
+        let s = Settings {
+            damping: Damping {
+                linear: -1.0,
+                angular: 0.0,
+            },
+            ..Settings::default()
+        };
         assert!(Simulation::new(b, s).is_err());
         let mut ok = sim();
         assert!(ok.advance(f64::NAN).is_err());
@@ -388,10 +410,19 @@ mod tests {
     #[test]
     fn damping_decays_momenta_exponentially() {
         let mut s = sim();
-        s.body_mut().set_velocity(Vector3::new(1.0, 0.0, 0.0)).expect("finite");
+        s.body_mut()
+            .set_velocity(Vector3::new(1.0, 0.0, 0.0))
+            .expect("finite");
         let l0 = s.body().angular_momentum();
-        let damping = Damping { linear: 0.5, angular: 0.25 };
-        s.set_settings(Settings { damping, ..Settings::default() }).expect("valid");
+        let damping = Damping {
+            linear: 0.5,
+            angular: 0.25,
+        };
+        s.set_settings(Settings {
+            damping,
+            ..Settings::default()
+        })
+        .expect("valid");
         for _ in 0..240 {
             s.step().expect("stable");
         }

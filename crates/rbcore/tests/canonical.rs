@@ -3,13 +3,19 @@
 mod common;
 
 use common::{MOMENTS, OMEGA0, crossings, flip_period, run, simulation};
-use rbcore::{Integrator, RotationModel, jacobi_elliptic, elliptic_f};
+use rbcore::{Integrator, RotationModel, elliptic_f, jacobi_elliptic};
 
 const DT: f64 = 1.0 / 240.0;
 
 #[test]
 fn default_integrator_canonical_case() {
-    let mut sim = simulation(MOMENTS, OMEGA0, Integrator::default(), RotationModel::Full, DT);
+    let mut sim = simulation(
+        MOMENTS,
+        OMEGA0,
+        Integrator::default(),
+        RotationModel::Full,
+        DT,
+    );
     let d = run(&mut sim, 60.0);
     assert_eq!(d.len(), 14_401);
     let l0 = d[0].angular_momentum;
@@ -25,7 +31,10 @@ fn default_integrator_canonical_case() {
     assert_eq!(z.len(), 17, "reversals of ω₂ in 60 s");
     let period = 2.0 * (z[16] - z[0]) / 16.0;
     let exact = flip_period(MOMENTS, [0.001, 20.0, 0.003]);
-    assert!(((period - exact) / exact).abs() < 1e-3, "period {period} vs 4K/λ = {exact}");
+    assert!(
+        ((period - exact) / exact).abs() < 1e-3,
+        "period {period} vs 4K/λ = {exact}"
+    );
 }
 
 #[test]
@@ -43,7 +52,13 @@ fn default_integrator_follows_the_elliptic_closed_form_over_the_first_period() {
     let tau0 = elliptic_f((OMEGA0[1] / a2).atan2(OMEGA0[0] / a1), k);
     let period = flip_period(MOMENTS, l);
 
-    let mut sim = simulation(MOMENTS, OMEGA0, Integrator::default(), RotationModel::Full, DT);
+    let mut sim = simulation(
+        MOMENTS,
+        OMEGA0,
+        Integrator::default(),
+        RotationModel::Full,
+        DT,
+    );
     let d = run(&mut sim, period);
     let mut worst: f64 = 0.0;
     for s in &d {
@@ -56,7 +71,13 @@ fn default_integrator_follows_the_elliptic_closed_form_over_the_first_period() {
 
 #[test]
 fn coarse_step_still_flips_17_times() {
-    let mut sim = simulation(MOMENTS, OMEGA0, Integrator::default(), RotationModel::Full, 1.0 / 60.0);
+    let mut sim = simulation(
+        MOMENTS,
+        OMEGA0,
+        Integrator::default(),
+        RotationModel::Full,
+        1.0 / 60.0,
+    );
     let d = run(&mut sim, 60.0);
     let e0 = d[0].energy;
     assert!(d.iter().all(|s| ((s.energy - e0) / e0).abs() < 1e-9));
@@ -69,12 +90,18 @@ fn structure_preserving_integrators_get_the_flip() {
         let mut sim = simulation(MOMENTS, OMEGA0, integrator, RotationModel::Full, DT);
         let d = run(&mut sim, 60.0);
         let l0 = d[0].angular_momentum;
-        assert!(d.iter().all(|s| (s.angular_momentum - l0).norm() < 1e-10 * l0.norm()));
+        assert!(
+            d.iter()
+                .all(|s| (s.angular_momentum - l0).norm() < 1e-10 * l0.norm())
+        );
         let z = crossings(&d, 1);
         assert_eq!(z.len(), 17, "{integrator}");
         let period = 2.0 * (z[16] - z[0]) / 16.0;
         let exact = flip_period(MOMENTS, [0.001, 20.0, 0.003]);
-        assert!(((period - exact) / exact).abs() < 1e-3, "{integrator}: {period} vs {exact}");
+        assert!(
+            ((period - exact) / exact).abs() < 1e-3,
+            "{integrator}: {period} vs {exact}"
+        );
     }
 }
 
@@ -82,14 +109,24 @@ fn structure_preserving_integrators_get_the_flip() {
 fn stable_spins_about_major_and_minor_axes_keep_energy() {
     for omega in [[0.01, 0.01, 10.0], [10.0, 0.01, 0.01]] {
         let axis = if omega[2] > 1.0 { 2 } else { 0 };
-        for integrator in [Integrator::MidpointCayley, Integrator::Splitting, Integrator::Exact] {
+        for integrator in [
+            Integrator::MidpointCayley,
+            Integrator::Splitting,
+            Integrator::Exact,
+        ] {
             let mut sim = simulation(MOMENTS, omega, integrator, RotationModel::Full, DT);
             let d = run(&mut sim, 120.0);
             let e0 = d[0].energy;
             for s in &d {
-                assert!(((s.energy - e0) / e0).abs() < 1e-6, "{integrator} {omega:?}");
+                assert!(
+                    ((s.energy - e0) / e0).abs() < 1e-6,
+                    "{integrator} {omega:?}"
+                );
                 // Stays near the axis: the spin component never drops below 99.9 %.
-                assert!(s.omega_principal[axis] > 0.999 * omega[axis], "{integrator} {omega:?}");
+                assert!(
+                    s.omega_principal[axis] > 0.999 * omega[axis],
+                    "{integrator} {omega:?}"
+                );
             }
         }
     }
@@ -100,20 +137,41 @@ fn textbook_model_never_flips_and_its_world_l_moves() {
     for integrator in [Integrator::MidpointCayley, Integrator::Rk4] {
         let mut sim = simulation(MOMENTS, OMEGA0, integrator, RotationModel::Textbook, DT);
         let d = run(&mut sim, 60.0);
-        assert!(crossings(&d, 1).is_empty(), "{integrator}: textbook model must not flip");
+        assert!(
+            crossings(&d, 1).is_empty(),
+            "{integrator}: textbook model must not flip"
+        );
         let l0 = d[0].angular_momentum;
         let e0 = d[0].energy;
         // E and |L| stay put, so only the world L vector exposes the missing gyroscopic term:
         // with body ω fixed along ≈ e₂ and L = Iω not parallel to it, L precesses about ω.
         assert!(d.iter().all(|s| ((s.energy - e0) / e0).abs() < 1e-9));
-        assert!(d.iter().all(|s| ((s.angular_momentum_norm - l0.norm()) / l0.norm()).abs() < 1e-9));
-        let moved = d.iter().map(|s| (s.angular_momentum - l0).norm()).fold(0.0, f64::max);
-        assert!(moved > 1e-4 * l0.norm(), "{integrator}: world L moved only {moved}");
+        assert!(
+            d.iter()
+                .all(|s| ((s.angular_momentum_norm - l0.norm()) / l0.norm()).abs() < 1e-9)
+        );
+        let moved = d
+            .iter()
+            .map(|s| (s.angular_momentum - l0).norm())
+            .fold(0.0, f64::max);
+        assert!(
+            moved > 1e-4 * l0.norm(),
+            "{integrator}: world L moved only {moved}"
+        );
     }
     // A clearly off-axis spin makes the motion of L large: L sweeps a cone about ω.
-    let mut sim = simulation(MOMENTS, [1.0, 1.0, 1.0], Integrator::MidpointCayley, RotationModel::Textbook, DT);
+    let mut sim = simulation(
+        MOMENTS,
+        [1.0, 1.0, 1.0],
+        Integrator::MidpointCayley,
+        RotationModel::Textbook,
+        DT,
+    );
     let d = run(&mut sim, 10.0);
     let l0 = d[0].angular_momentum;
-    let moved = d.iter().map(|s| (s.angular_momentum - l0).norm()).fold(0.0, f64::max);
+    let moved = d
+        .iter()
+        .map(|s| (s.angular_momentum - l0).norm())
+        .fold(0.0, f64::max);
     assert!(moved > 0.5 * l0.norm());
 }

@@ -24,7 +24,11 @@ fn free_body(m: Vector3<f64>, w: Vector3<f64>) -> Body {
 
 /// Runs `n` steps, returning the worst relative deviations of E, |L| and the world L vector.
 fn drift(body: Body, integrator: Integrator, n: usize) -> (f64, f64, f64) {
-    let settings = Settings { integrator, model: RotationModel::Full, ..Settings::default() };
+    let settings = Settings {
+        integrator,
+        model: RotationModel::Full,
+        ..Settings::default()
+    };
     let mut sim = Simulation::new(body, settings).expect("valid");
     let d0 = sim.diagnostics();
     let (mut de, mut dn, mut dv): (f64, f64, f64) = (0.0, 0.0, 0.0);

@@ -13,7 +13,13 @@ fn engine_style_drifts_energy_to_the_separatrix_level() {
     // Explicit gyroscopic step + |L| rescale raises E of a major-axis spin and lowers E of a
     // minor-axis spin, both toward L²/2I₂ where the flip lives.
     for omega in [[1.0, 1.0, 10.0], [10.0, 0.3, 0.3]] {
-        let mut sim = simulation(MOMENTS, omega, Integrator::EngineStyle, RotationModel::Full, DT);
+        let mut sim = simulation(
+            MOMENTS,
+            omega,
+            Integrator::EngineStyle,
+            RotationModel::Full,
+            DT,
+        );
         let d = run(&mut sim, 60.0);
         let target = d[0].angular_momentum_norm.powi(2) / (2.0 * MOMENTS[1]);
         let gap = |i: usize| (d[i].energy - target).abs();
@@ -21,20 +27,44 @@ fn engine_style_drifts_energy_to_the_separatrix_level() {
         for w in every_10s.windows(2) {
             assert!(gap(w[1]) < gap(w[0]), "{omega:?}: gap must shrink");
         }
-        assert!(gap(14_400) < 0.3 * gap(0), "{omega:?}: {} vs {}", gap(14_400), gap(0));
+        assert!(
+            gap(14_400) < 0.3 * gap(0),
+            "{omega:?}: {} vs {}",
+            gap(14_400),
+            gap(0)
+        );
         // |L| is kept by construction.
-        assert!(d.iter().all(|s| (s.angular_momentum_norm / d[0].angular_momentum_norm - 1.0).abs() < 1e-12));
+        assert!(
+            d.iter().all(
+                |s| (s.angular_momentum_norm / d[0].angular_momentum_norm - 1.0).abs() < 1e-12
+            )
+        );
     }
     // The same with the default integrator: no drift at all, the major-axis spin stays put.
-    let mut sim = simulation(MOMENTS, [1.0, 1.0, 10.0], Integrator::MidpointCayley, RotationModel::Full, DT);
+    let mut sim = simulation(
+        MOMENTS,
+        [1.0, 1.0, 10.0],
+        Integrator::MidpointCayley,
+        RotationModel::Full,
+        DT,
+    );
     let d = run(&mut sim, 60.0);
-    assert!(d.iter().all(|s| (s.energy / d[0].energy - 1.0).abs() < 1e-12));
+    assert!(
+        d.iter()
+            .all(|s| (s.energy / d[0].energy - 1.0).abs() < 1e-12)
+    );
     assert!(crossings(&d, 2).is_empty());
 }
 
 #[test]
 fn implicit_euler_bleeds_energy_and_momentum_every_step() {
-    let mut sim = simulation(MOMENTS, OMEGA0, Integrator::ImplicitEuler, RotationModel::Full, DT);
+    let mut sim = simulation(
+        MOMENTS,
+        OMEGA0,
+        Integrator::ImplicitEuler,
+        RotationModel::Full,
+        DT,
+    );
     let d = run(&mut sim, 60.0);
     for w in d.windows(2) {
         assert!(w[1].energy <= w[0].energy * (1.0 + 1e-14));
@@ -72,14 +102,26 @@ fn symmetric_top_precesses_at_the_closed_form_rates() {
         (Integrator::Exact, 1e-10),
         (Integrator::Rk4, 1e-6),
     ] {
-        let mut sim = simulation([i_perp, i_perp, i3], [1.0, 0.0, w3], integrator, RotationModel::Full, DT);
+        let mut sim = simulation(
+            [i_perp, i_perp, i3],
+            [1.0, 0.0, w3],
+            integrator,
+            RotationModel::Full,
+            DT,
+        );
         let d = run(&mut sim, 10.0);
         let axis: Vec<_> = d.iter().map(|s| s.orientation * Vector3::z()).collect();
         let world_rate = swept_angle(&axis, &d[0].angular_momentum) / 10.0;
-        assert!((world_rate / (l_norm / i_perp) - 1.0).abs() < tol, "{integrator}: {world_rate}");
+        assert!(
+            (world_rate / (l_norm / i_perp) - 1.0).abs() < tol,
+            "{integrator}: {world_rate}"
+        );
         let body_w: Vec<_> = d.iter().map(|s| s.omega_principal).collect();
         let body_rate = swept_angle(&body_w, &Vector3::z()) / 10.0;
-        assert!((body_rate / ((i3 - i_perp) * w3 / i_perp) - 1.0).abs() < tol, "{integrator}: {body_rate}");
+        assert!(
+            (body_rate / ((i3 - i_perp) * w3 / i_perp) - 1.0).abs() < tol,
+            "{integrator}: {body_rate}"
+        );
     }
 }
 
@@ -92,9 +134,14 @@ fn free_fall_follows_the_parabola() {
         let mut body = Body::from_moments(2.0, Vector3::from(MOMENTS)).expect("valid");
         body.set_position(Point3::from(r0)).expect("finite");
         body.set_velocity(v0).expect("finite");
-        body.set_omega_principal(Vector3::new(0.3, 2.0, -0.5)).expect("finite");
+        body.set_omega_principal(Vector3::new(0.3, 2.0, -0.5))
+            .expect("finite");
         let l0 = body.angular_momentum();
-        let settings = Settings { gravity: g, integrator, ..Settings::default() };
+        let settings = Settings {
+            gravity: g,
+            integrator,
+            ..Settings::default()
+        };
         let mut sim = Simulation::new(body, settings).expect("valid");
         for _ in 0..480 {
             sim.step().expect("stable");
@@ -107,12 +154,24 @@ fn free_fall_follows_the_parabola() {
             _ => 0.0,
         };
         let expect = r0 + v0 * t + g * (0.5 * t * (t + bias));
-        assert!((sim.body().position().coords - expect).norm() < 1e-11, "{integrator}");
-        assert!((sim.body().velocity() - (v0 + g * t)).norm() < 1e-11, "{integrator}");
+        assert!(
+            (sim.body().position().coords - expect).norm() < 1e-11,
+            "{integrator}"
+        );
+        assert!(
+            (sim.body().velocity() - (v0 + g * t)).norm() < 1e-11,
+            "{integrator}"
+        );
         // Gravity acts at the centre of mass: no torque. (The engine steps do not keep the world
         // L vector even without torque; that is their own test.)
-        if !matches!(integrator, Integrator::EngineStyle | Integrator::ImplicitEuler) {
-            assert!((sim.body().angular_momentum() - l0).norm() < 1e-9 * l0.norm(), "{integrator}");
+        if !matches!(
+            integrator,
+            Integrator::EngineStyle | Integrator::ImplicitEuler
+        ) {
+            assert!(
+                (sim.body().angular_momentum() - l0).norm() < 1e-9 * l0.norm(),
+                "{integrator}"
+            );
         }
     }
 }
@@ -120,7 +179,8 @@ fn free_fall_follows_the_parabola() {
 #[test]
 fn poke_changes_momenta_by_j_and_r_cross_j() {
     let mut body = Body::from_moments(3.0, Vector3::from(MOMENTS)).expect("valid");
-    body.set_position(Point3::new(1.0, 2.0, 3.0)).expect("finite");
+    body.set_position(Point3::new(1.0, 2.0, 3.0))
+        .expect("finite");
     let mut sim = Simulation::new(body, Settings::default()).expect("valid");
     let x = Point3::new(1.5, 2.0, 3.0);
     let j = Vector3::new(0.0, 0.6, 0.0);
@@ -136,7 +196,8 @@ fn poke_changes_momenta_by_j_and_r_cross_j() {
 
 fn hanging(integrator: Integrator) -> (Simulation, Point3<f64>) {
     let mut body = Body::from_moments(1.0, Vector3::from(MOMENTS)).expect("valid");
-    body.set_omega_principal(Vector3::new(0.0, 0.5, 0.0)).expect("finite");
+    body.set_omega_principal(Vector3::new(0.0, 0.5, 0.0))
+        .expect("finite");
     let attachment = Point3::new(0.5, 0.0, 0.0);
     let grabbed = body.point_to_world(&attachment);
     let settings = Settings {
@@ -150,9 +211,14 @@ fn hanging(integrator: Integrator) -> (Simulation, Point3<f64>) {
 #[test]
 fn soft_string_is_stable_at_3000_hz_while_a_plain_spring_explodes() {
     let attachment = Point3::new(0.5, 0.0, 0.0);
-    for integrator in [Integrator::MidpointCayley, Integrator::Rk4, Integrator::EngineStyle] {
+    for integrator in [
+        Integrator::MidpointCayley,
+        Integrator::Rk4,
+        Integrator::EngineStyle,
+    ] {
         let (mut sim, grabbed) = hanging(integrator);
-        let string = SoftString::new(grabbed, attachment, 3000.0, 1.0, f64::INFINITY).expect("valid");
+        let string =
+            SoftString::new(grabbed, attachment, 3000.0, 1.0, f64::INFINITY).expect("valid");
         sim.set_string(Some(string));
         let mech = |s: &Simulation| {
             let d = s.diagnostics();
@@ -170,9 +236,14 @@ fn soft_string_is_stable_at_3000_hz_while_a_plain_spring_explodes() {
     // The plain spring with the same stiffness (k = m ω²) diverges within a second.
     let (mut sim, grabbed) = hanging(Integrator::MidpointCayley);
     let k = (2.0 * std::f64::consts::PI * 3000.0f64).powi(2);
-    sim.set_spring(Some(Spring::new(grabbed, attachment, k, 0.0).expect("valid")));
+    sim.set_spring(Some(
+        Spring::new(grabbed, attachment, k, 0.0).expect("valid"),
+    ));
     let outcome = (0..240).try_for_each(|_| sim.step());
-    assert!(matches!(outcome, Err(SimError::Diverged { .. })), "{outcome:?}");
+    assert!(
+        matches!(outcome, Err(SimError::Diverged { .. })),
+        "{outcome:?}"
+    );
     // After the halt, the state is the last good one and further calls keep failing.
     assert!(sim.body().momentum().iter().all(|x| x.is_finite()));
     assert!(sim.advance(1.0).is_err());
@@ -185,7 +256,9 @@ fn soft_string_pulls_the_point_to_the_target() {
     let mut sim = Simulation::new(body, Settings::default()).expect("valid");
     let attachment = Point3::new(0.5, 0.2, 0.0);
     let target = Point3::new(1.0, 1.0, 0.5);
-    sim.set_string(Some(SoftString::new(target, attachment, 2.0, 1.0, f64::INFINITY).expect("valid")));
+    sim.set_string(Some(
+        SoftString::new(target, attachment, 2.0, 1.0, f64::INFINITY).expect("valid"),
+    ));
     for _ in 0..2400 {
         sim.step().expect("stable");
     }
@@ -205,7 +278,8 @@ fn exact_flow_is_step_independent_and_the_others_converge_to_it() {
     };
     let reference = final_state(Integrator::Exact, 1.0 / 960.0);
     let error = |d: &rbcore::Diagnostics| {
-        (d.omega_principal - reference.omega_principal).norm() + 10.0 * d.orientation.angle_to(&reference.orientation)
+        (d.omega_principal - reference.omega_principal).norm()
+            + 10.0 * d.orientation.angle_to(&reference.orientation)
     };
     for dt in [1.0 / 60.0, 1.0 / 240.0] {
         let e = error(&final_state(Integrator::Exact, dt));
@@ -217,7 +291,10 @@ fn exact_flow_is_step_independent_and_the_others_converge_to_it() {
         (Integrator::Rk4, 4),
         (Integrator::Midpoint, 2),
     ] {
-        let errs: Vec<f64> = [120.0, 240.0, 480.0].iter().map(|hz| error(&final_state(integrator, 1.0 / hz))).collect();
+        let errs: Vec<f64> = [120.0, 240.0, 480.0]
+            .iter()
+            .map(|hz| error(&final_state(integrator, 1.0 / hz)))
+            .collect();
         let expected_ratio = f64::from(1u32 << order);
         for w in errs.windows(2) {
             let ratio = w[0] / w[1];

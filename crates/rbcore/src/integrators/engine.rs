@@ -34,7 +34,7 @@ fn backward_euler(l: &Vector3<f64>, w: &Vector3<f64>, h: f64) -> Vector3<f64> {
             break;
         };
         x -= delta;
-        if !(delta.norm() > tol) {
+        if delta.norm() <= tol || delta.norm().is_nan() {
             break;
         }
     }
@@ -42,7 +42,13 @@ fn backward_euler(l: &Vector3<f64>, w: &Vector3<f64>, h: f64) -> Vector3<f64> {
 }
 
 /// One engine-style step.
-pub(crate) fn step(body: &mut Body, forces: &ForceModel, h: f64, model: RotationModel, gyro: Gyroscopic) {
+pub(crate) fn step(
+    body: &mut Body,
+    forces: &ForceModel,
+    h: f64,
+    model: RotationModel,
+    gyro: Gyroscopic,
+) {
     let w = forces.wrench(body);
     body.momentum += w.force * h;
     body.angular_momentum += w.torque * h;
@@ -53,12 +59,18 @@ pub(crate) fn step(body: &mut Body, forces: &ForceModel, h: f64, model: Rotation
             Gyroscopic::ExplicitRescaled => {
                 let trial = l + l.cross(&body.inv_moments.component_mul(&l)) * h;
                 let n = trial.norm();
-                if n > 0.0 { trial * (l.norm() / n) } else { trial }
+                if n > 0.0 {
+                    trial * (l.norm() / n)
+                } else {
+                    trial
+                }
             }
             Gyroscopic::BackwardEuler => backward_euler(&l, &body.inv_moments, h),
         },
     };
-    let omega_world = body.orientation.transform_vector(&body.inv_moments.component_mul(&l_new));
+    let omega_world = body
+        .orientation
+        .transform_vector(&body.inv_moments.component_mul(&l_new));
     let q = body.orientation.into_inner();
     body.orientation = UnitQuaternion::new_normalize(q + quaternion_rate(&q, &omega_world) * h);
     body.angular_momentum = body.orientation.transform_vector(&l_new);

@@ -88,7 +88,11 @@ pub fn elliptic_f(phi: f64, k: f64) -> f64 {
 fn f_from_complementary(phi: f64, kp: f64) -> f64 {
     if kp == 0.0 {
         // F(φ, 1) = artanh(sin φ), finite only on (−π/2, π/2).
-        return if phi.abs() < 0.5 * PI { phi.sin().atanh() } else { phi.signum() * f64::INFINITY };
+        return if phi.abs() < 0.5 * PI {
+            phi.sin().atanh()
+        } else {
+            phi.signum() * f64::INFINITY
+        };
     }
     let (mut a, mut b, mut phi, mut pow2) = (1.0_f64, kp, phi, 1.0_f64);
     for _ in 0..MAX_AGM {
@@ -166,7 +170,11 @@ impl EllipticMotion {
         let d1 = sq[1] * (1.0 - i[0] / i[1]) + sq[2] * (1.0 - i[0] / i[2]);
         let d3 = sq[0] * (i[2] / i[0] - 1.0) + sq[1] * (i[2] / i[1] - 1.0);
         let d2 = sq[0] * (1.0 - i[1] / i[0]) + sq[2] * (1.0 - i[1] / i[2]);
-        let (axes, dc, dd) = if d2 >= 0.0 { ([0, 1, 2], d3, d1) } else { ([2, 1, 0], d1, d3) };
+        let (axes, dc, dd) = if d2 >= 0.0 {
+            ([0, 1, 2], d3, d1)
+        } else {
+            ([2, 1, 0], d1, d3)
+        };
         let [c, s, d] = axes;
         let (ic, is, id) = (i[c], i[s], i[d]);
         let amplitude = [
@@ -224,7 +232,11 @@ pub fn torque_free_period(moments: &Vector3<f64>, l_principal: &Vector3<f64>) ->
 
 /// Angular velocity in the principal frame at time `t` of the exact torque-free motion starting
 /// from body angular momentum `l0` (moments ascending). `None` where [`torque_free_period`] is.
-pub fn torque_free_omega(moments: &Vector3<f64>, l0: &Vector3<f64>, t: f64) -> Option<Vector3<f64>> {
+pub fn torque_free_omega(
+    moments: &Vector3<f64>,
+    l0: &Vector3<f64>,
+    t: f64,
+) -> Option<Vector3<f64>> {
     let m = EllipticMotion::new(l0, moments)?;
     Some(m.momentum_at(t).component_div(moments))
 }
@@ -275,7 +287,8 @@ pub(crate) fn free_rotor(body: &mut Body, h: f64) {
     let (th1, ph1) = theta_phi(&permute(&motion.momentum_at(h)));
     let rz = |x: f64| UnitQuaternion::from_axis_angle(&Vector3::z_axis(), x);
     let rx = |x: f64| UnitQuaternion::from_axis_angle(&Vector3::x_axis(), x);
-    let q = body.orientation * pi.inverse() * rz(-ph0) * rx(-th0) * rz(dpsi) * rx(th1) * rz(ph1) * pi;
+    let q =
+        body.orientation * pi.inverse() * rz(-ph0) * rx(-th0) * rz(dpsi) * rx(th1) * rz(ph1) * pi;
     if q.coords.iter().all(|x| x.is_finite()) {
         body.orientation = q;
     } else {
@@ -323,7 +336,10 @@ mod tests {
         for k in [0.0, 0.3, 0.7, 0.99] {
             for phi in [0.4, 1.2, 2.5, -3.0, 7.0] {
                 let f = elliptic_f(phi, k);
-                assert!((f - quadrature_f(phi, k)).abs() < 1e-11 * f.abs(), "k={k} phi={phi}");
+                assert!(
+                    (f - quadrature_f(phi, k)).abs() < 1e-11 * f.abs(),
+                    "k={k} phi={phi}"
+                );
             }
             assert!((elliptic_f(PI / 2.0, k) - elliptic_k(k)).abs() < 1e-14);
         }
@@ -338,7 +354,9 @@ mod tests {
             // Quarter and half-quarter periods: sn(K) = 1, dn(K) = k'; sn(K/2) = 1/√(1+k'),
             // cn(K/2) = √(k'/(1+k')), dn(K/2) = √k'.
             let (s, c, d) = jacobi_elliptic(kk, k);
-            assert!((s - 1.0).abs() < 1e-14 && c.abs() < 1e-7 && (d - kp).abs() < 1e-7 * kp.max(1e-3));
+            assert!(
+                (s - 1.0).abs() < 1e-14 && c.abs() < 1e-7 && (d - kp).abs() < 1e-7 * kp.max(1e-3)
+            );
             let (s, c, d) = jacobi_elliptic(0.5 * kk, k);
             assert!((s - 1.0 / (1.0 + kp).sqrt()).abs() < 1e-13);
             assert!((c - (kp / (1.0 + kp)).sqrt()).abs() < 1e-13);
@@ -347,7 +365,9 @@ mod tests {
             for u in [0.3, 1.1, 2.9] {
                 let (s1, c1, d1) = jacobi_elliptic(u, k);
                 let (s2, c2, d2) = jacobi_elliptic(u + 4.0 * kk, k);
-                assert!((s1 - s2).abs() < 1e-12 && (c1 - c2).abs() < 1e-12 && (d1 - d2).abs() < 1e-12);
+                assert!(
+                    (s1 - s2).abs() < 1e-12 && (c1 - c2).abs() < 1e-12 && (d1 - d2).abs() < 1e-12
+                );
                 assert!((s1 * s1 + c1 * c1 - 1.0).abs() < 1e-15);
                 assert!((elliptic_f(s1.atan2(c1), k) - u).abs() < 1e-12 * kk);
             }
@@ -361,7 +381,11 @@ mod tests {
     #[test]
     fn gauss_legendre_integrates_degree_15_exactly() {
         let integral = |f: &dyn Fn(f64) -> f64| {
-            GL_NODES.iter().zip(GL_WEIGHTS).map(|(x, w)| w * (f(*x) + f(-x))).sum::<f64>()
+            GL_NODES
+                .iter()
+                .zip(GL_WEIGHTS)
+                .map(|(x, w)| w * (f(*x) + f(-x)))
+                .sum::<f64>()
         };
         assert!((integral(&|_| 1.0) - 2.0).abs() < 1e-15);
         assert!((integral(&|x| x.powi(14)) - 2.0 / 15.0).abs() < 1e-15);
@@ -371,7 +395,11 @@ mod tests {
     fn closed_form_satisfies_eulers_equations() {
         // Central difference of the closed form against L × I⁻¹L, both sides of the separatrix.
         let moments = Vector3::new(1.0, 2.0, 3.0);
-        for l0 in [Vector3::new(0.3, 2.0, 0.9), Vector3::new(2.0, 0.5, -0.3), Vector3::new(-0.5, -1.0, 2.5)] {
+        for l0 in [
+            Vector3::new(0.3, 2.0, 0.9),
+            Vector3::new(2.0, 0.5, -0.3),
+            Vector3::new(-0.5, -1.0, 2.5),
+        ] {
             let m = EllipticMotion::new(&l0, &moments).expect("generic motion");
             assert!((m.momentum_at(0.0) - l0).norm() < 1e-13);
             for t in [0.4, 1.7, 5.0] {

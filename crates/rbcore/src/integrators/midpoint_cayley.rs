@@ -32,7 +32,7 @@ pub(crate) fn midpoint_momentum(l: &Vector3<f64>, w: &Vector3<f64>, h: f64) -> V
             break;
         };
         m -= delta;
-        if !(delta.norm() > tol) {
+        if delta.norm() <= tol || delta.norm().is_nan() {
             break;
         }
     }

@@ -143,14 +143,22 @@ impl Integrator {
     /// Advances `body` by `h` under `forces` with the given rotation model.
     pub(crate) fn step(self, body: &mut Body, forces: &ForceModel, h: f64, model: RotationModel) {
         match self {
-            Integrator::MidpointCayley => kick_rotate_kick(body, forces, h, model, midpoint_cayley::free_rotor),
-            Integrator::Splitting => kick_rotate_kick(body, forces, h, model, splitting::free_rotor),
+            Integrator::MidpointCayley => {
+                kick_rotate_kick(body, forces, h, model, midpoint_cayley::free_rotor)
+            }
+            Integrator::Splitting => {
+                kick_rotate_kick(body, forces, h, model, splitting::free_rotor)
+            }
             Integrator::Exact => kick_rotate_kick(body, forces, h, model, exact::free_rotor),
             Integrator::Rk4 => rk4::step(body, forces, h, model),
             Integrator::Euler => textbook::euler_step(body, forces, h, model),
             Integrator::Midpoint => textbook::midpoint_step(body, forces, h, model),
-            Integrator::EngineStyle => engine::step(body, forces, h, model, engine::Gyroscopic::ExplicitRescaled),
-            Integrator::ImplicitEuler => engine::step(body, forces, h, model, engine::Gyroscopic::BackwardEuler),
+            Integrator::EngineStyle => {
+                engine::step(body, forces, h, model, engine::Gyroscopic::ExplicitRescaled)
+            }
+            Integrator::ImplicitEuler => {
+                engine::step(body, forces, h, model, engine::Gyroscopic::BackwardEuler)
+            }
         }
     }
 }
@@ -224,7 +232,10 @@ mod tests {
             assert_eq!(i.name().parse::<Integrator>(), Ok(i));
             assert_eq!(i.to_string(), i.name());
         }
-        assert_eq!("textbook".parse::<RotationModel>(), Ok(RotationModel::Textbook));
+        assert_eq!(
+            "textbook".parse::<RotationModel>(),
+            Ok(RotationModel::Textbook)
+        );
         assert!("Euler".parse::<Integrator>().is_err());
         assert_eq!(Integrator::default(), Integrator::MidpointCayley);
     }

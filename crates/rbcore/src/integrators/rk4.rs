@@ -58,7 +58,8 @@ pub(crate) fn step(body: &mut Body, forces: &ForceModel, h: f64, model: Rotation
     let k4 = derivative(body, &axpy(&s, h, &k3), forces, model);
     let sixth = h / 6.0;
     body.position = Point3::from(s.r + (k1.r + (k2.r + k3.r) * 2.0 + k4.r) * sixth);
-    body.orientation = UnitQuaternion::new_normalize(s.q + (k1.q + (k2.q + k3.q) * 2.0 + k4.q) * sixth);
+    body.orientation =
+        UnitQuaternion::new_normalize(s.q + (k1.q + (k2.q + k3.q) * 2.0 + k4.q) * sixth);
     body.momentum = s.p + (k1.p + (k2.p + k3.p) * 2.0 + k4.p) * sixth;
     body.angular_momentum = s.l + (k1.l + (k2.l + k3.l) * 2.0 + k4.l) * sixth;
 }

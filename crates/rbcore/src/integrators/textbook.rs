@@ -36,7 +36,9 @@ fn load(body: &Body) -> State {
 
 fn store(body: &mut Body, s: &State) {
     body.position = Point3::from(s.r);
-    body.orientation = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(gram_schmidt(&s.rot)));
+    body.orientation = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(
+        gram_schmidt(&s.rot),
+    ));
     body.momentum = s.p;
     body.angular_momentum = s.l;
 }

@@ -10,9 +10,16 @@ pub const MOMENTS: [f64; 3] = [1.0, 2.0, 3.0];
 pub const OMEGA0: [f64; 3] = [0.001, 10.0, 0.001];
 
 /// A free body with the given moments and principal-frame ω.
-pub fn simulation(moments: [f64; 3], omega: [f64; 3], integrator: Integrator, model: RotationModel, dt: f64) -> Simulation {
+pub fn simulation(
+    moments: [f64; 3],
+    omega: [f64; 3],
+    integrator: Integrator,
+    model: RotationModel,
+    dt: f64,
+) -> Simulation {
     let mut body = Body::from_moments(1.0, Vector3::from(moments)).expect("valid body");
-    body.set_omega_principal(Vector3::from(omega)).expect("finite");
+    body.set_omega_principal(Vector3::from(omega))
+        .expect("finite");
     let settings = Settings {
         dt,
         integrator,
@@ -63,7 +70,12 @@ pub fn crossings(d: &[Diagnostics], c: usize) -> Vec<f64> {
     d.windows(2)
         .filter(|w| (w[0].omega_principal[c] > 0.0) != (w[1].omega_principal[c] > 0.0))
         .map(|w| {
-            let (t0, y0, t1, y1) = (w[0].time, w[0].omega_principal[c], w[1].time, w[1].omega_principal[c]);
+            let (t0, y0, t1, y1) = (
+                w[0].time,
+                w[0].omega_principal[c],
+                w[1].time,
+                w[1].omega_principal[c],
+            );
             t0 + (t1 - t0) * y0 / (y0 - y1)
         })
         .collect()
