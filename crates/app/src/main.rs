@@ -6,6 +6,7 @@
 mod error;
 mod props;
 mod report;
+mod simulate;
 
 use std::process::ExitCode;
 
@@ -24,12 +25,16 @@ enum Command {
     /// Mass properties of a mesh (OBJ or STL): volume, mass, centre of mass, inertia tensor,
     /// principal moments and axes, the bounding-box and point-mass approximations, diagnostics.
     Props(props::PropsArgs),
+    /// Headless rigid-body simulation of a free body (CSV on stdout or --csv FILE); --compare
+    /// prints the integrator accuracy-for-cost table.
+    Simulate(simulate::SimulateArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Props(args) => props::run(args),
+        Command::Simulate(args) => simulate::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
