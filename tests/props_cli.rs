@@ -196,9 +196,10 @@ fn usage_errors_exit_2() {
     assert_eq!(run(&["props", "assets/cube.obj", "--density", "-1"]).status.code(), Some(2));
     assert_eq!(run(&["props", "assets/cube.obj", "--mass", "1", "--density", "2"]).status.code(), Some(2));
     assert_eq!(run(&["props", "assets/cube.obj", "--method", "magic"]).status.code(), Some(2));
+    assert_eq!(run(&["props"]).status.code(), Some(2));
     let help = run(&[]);
-    assert_eq!(help.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&help.stderr).contains("props"));
+    assert_eq!(help.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&help.stdout).contains("props"));
 }
 
 #[test]

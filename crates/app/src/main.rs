@@ -14,7 +14,7 @@ use clap::{Parser, Subcommand};
 
 /// Inertia Lab: exact mass properties of any mesh, and how they shape its rotation.
 #[derive(Parser, Debug)]
-#[command(name = "inertia-lab", version, about, arg_required_else_help = true)]
+#[command(name = "inertia-lab", version, about)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -31,6 +31,12 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    // Until the desktop app exists, running the binary bare explains the commands.
+    if std::env::args_os().len() == 1 {
+        use clap::CommandFactory;
+        let _ = Cli::command().print_help();
+        return ExitCode::SUCCESS;
+    }
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Props(args) => props::run(args),
