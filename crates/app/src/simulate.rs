@@ -132,6 +132,13 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
 
 /// Number of steps for `--duration`.
 fn step_count(args: &SimulateArgs) -> Result<u64, CliError> {
+    if !(args.dt > 0.0 && args.dt <= rbcore::MAX_DT) {
+        return Err(CliError::Usage(format!(
+            "--dt must be greater than 0 and at most {} s, got {}",
+            rbcore::MAX_DT,
+            args.dt
+        )));
+    }
     if !(args.duration.is_finite() && args.duration >= 0.0) {
         return Err(CliError::Usage(format!(
             "--duration must be a finite number >= 0, got {}",

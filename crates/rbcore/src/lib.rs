@@ -32,4 +32,4 @@ pub use integrators::exact::{
     elliptic_f, elliptic_k, jacobi_elliptic, torque_free_omega, torque_free_period,
 };
 pub use integrators::{Integrator, ParseNameError, RotationModel};
-pub use simulation::{Advance, Settings, Simulation};
+pub use simulation::{Advance, MAX_DT, Settings, Simulation};
