@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use common::{assert_mat, assert_rel, box_tensor};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{
-    Method, MassSpec, MeshError, PolyMesh, analyze, diagnose, load_mesh, mass_properties,
+    MassSpec, MeshError, Method, PolyMesh, analyze, diagnose, load_mesh, mass_properties,
     parse_mesh, shell_properties, solid_properties,
 };
 use nalgebra::{Matrix3, Point3, Vector3};
@@ -22,7 +22,10 @@ fn obj(text: &str) -> Result<PolyMesh, MeshError> {
 fn obj_error(text: &str) -> String {
     let e = obj(text).expect_err("the file is bad");
     let msg = e.to_string();
-    assert!(msg.contains("part.obj"), "the message names the file: {msg}");
+    assert!(
+        msg.contains("part.obj"),
+        "the message names the file: {msg}"
+    );
     msg
 }
 
@@ -79,13 +82,26 @@ fn open_mesh_counts_its_boundary_edges() {
     assert!(!d.is_closed());
     assert_eq!(d.open_edge_examples.len(), 4);
     for (a, b) in &d.open_edge_examples {
-        assert!((4..8).contains(a) && (4..8).contains(b), "top edges: {a}-{b}");
+        assert!(
+            (4..8).contains(a) && (4..8).contains(b),
+            "top edges: {a}-{b}"
+        );
     }
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
-    assert!(a.warnings.iter().any(|w| w.contains("open") && w.contains("4 boundary edge")), "{:?}", a.warnings);
+    assert!(
+        a.warnings
+            .iter()
+            .any(|w| w.contains("open") && w.contains("4 boundary edge")),
+        "{:?}",
+        a.warnings
+    );
     // The shell method is meant for open meshes: no open-mesh warning there.
     let s = analyze(&mesh, Method::Shell, MassSpec::Density(1.0)).expect("area");
-    assert!(!s.warnings.iter().any(|w| w.contains("open")), "{:?}", s.warnings);
+    assert!(
+        !s.warnings.iter().any(|w| w.contains("open")),
+        "{:?}",
+        s.warnings
+    );
     assert_rel(s.properties.mass, 5.0, 1e-15, "five unit faces");
 }
 
@@ -93,9 +109,16 @@ fn open_mesh_counts_its_boundary_edges() {
 fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
     // Box [0,1]³ and box [1,2]×[1,2]×[0,1] share the edge x = y = 1: four faces use it.
     let mut b = shapes::cuboid(Vector3::repeat(1.0), Point3::new(0.5, 0.5, 0.5));
-    b.append(&shapes::cuboid(Vector3::repeat(1.0), Point3::new(1.5, 1.5, 0.5)));
+    b.append(&shapes::cuboid(
+        Vector3::repeat(1.0),
+        Point3::new(1.5, 1.5, 0.5),
+    ));
     let (positions, remap) = massprops::weld_exact(&b.positions);
-    let faces: Vec<Vec<usize>> = b.faces.iter().map(|f| f.iter().map(|&i| remap[i] as usize).collect()).collect();
+    let faces: Vec<Vec<usize>> = b
+        .faces
+        .iter()
+        .map(|f| f.iter().map(|&i| remap[i] as usize).collect())
+        .collect();
     let mesh = PolyMesh::new(positions, &faces).expect("valid");
     let d = diagnose(&mesh);
     assert_eq!(d.vertices, 14);
@@ -104,20 +127,32 @@ fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
     assert!(!d.is_closed());
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume 2");
     assert_rel(a.properties.mass, 2.0, 1e-15, "two unit boxes");
-    assert!(a.warnings.iter().any(|w| w.contains("1 non-manifold edge")), "{:?}", a.warnings);
+    assert!(
+        a.warnings.iter().any(|w| w.contains("1 non-manifold edge")),
+        "{:?}",
+        a.warnings
+    );
 }
 
 #[test]
 fn one_flipped_face_gives_four_inconsistent_edges() {
+    // (The top: flipping a face normal to x would cancel all of ∫x·nₓ, which Mirtich's volume
+    // uses, and leave no volume to analyse.)
     let mut b = shapes::cube();
-    b.faces[3].reverse();
+    b.faces[1].reverse();
     let mesh = b.build();
     let d = diagnose(&mesh);
     assert_eq!(d.inconsistent_edges, 4);
     assert_eq!(d.open_edges, 0);
     assert!(!d.is_consistently_oriented());
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
-    assert!(a.warnings.iter().any(|w| w.contains("4 edge(s)") && w.contains("wind")), "{:?}", a.warnings);
+    assert!(
+        a.warnings
+            .iter()
+            .any(|w| w.contains("4 edge(s)") && w.contains("wind")),
+        "{:?}",
+        a.warnings
+    );
 }
 
 #[test]
@@ -132,24 +167,38 @@ fn inverted_mesh_is_flipped_and_warned_about() {
     assert!(a.flipped);
     assert_eq!(a.warnings.len(), 1, "{:?}", a.warnings);
     assert!(a.warnings[0].contains("clockwise"), "{:?}", a.warnings);
-    assert_mat(&a.properties.inertia_com, &box_tensor(56.0, 1.0, 4.0, 7.0), 1e-14, "flipped book");
+    assert_mat(
+        &a.properties.inertia_com,
+        &box_tensor(56.0, 1.0, 4.0, 7.0),
+        1e-14,
+        "flipped book",
+    );
 }
 
 #[test]
 fn degenerate_and_non_planar_faces_are_reported() {
-    // A cube with one top corner raised: the three quads around it leave their planes.
+    // A cube with one corner pulled out diagonally: the three quads around it leave their planes.
     let mut b = shapes::cube();
-    b.positions[6].z += 0.1;
+    b.positions[6] += Vector3::new(0.1, 0.05, 0.1);
     let mesh = b.build();
     let d = diagnose(&mesh);
-    let around: Vec<usize> = (0..b.faces.len()).filter(|&f| b.faces[f].contains(&6)).collect();
+    let around: Vec<usize> = (0..b.faces.len())
+        .filter(|&f| b.faces[f].contains(&6))
+        .collect();
     assert_eq!(d.nonplanar_faces, 3);
     assert_eq!(d.nonplanar_face_examples, around);
     assert_eq!(d.degenerate_faces, 0);
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume");
-    assert!(a.warnings.iter().any(|w| w.contains("3 non-planar")), "{:?}", a.warnings);
+    assert!(
+        a.warnings.iter().any(|w| w.contains("3 non-planar")),
+        "{:?}",
+        a.warnings
+    );
     // Its triangulation is planar by construction.
-    assert_eq!(diagnose(&b.clone().triangulated().build()).nonplanar_faces, 0);
+    assert_eq!(
+        diagnose(&b.clone().triangulated().build()).nonplanar_faces,
+        0
+    );
 
     // A zero-area triangle (three collinear corners) glued into a closed mesh.
     let mut c = shapes::cube().triangulated();
@@ -161,7 +210,13 @@ fn degenerate_and_non_planar_faces_are_reported() {
     assert_eq!(d.degenerate_faces, 2);
     assert_eq!(d.degenerate_face_examples, vec![12, 13]);
     let a = analyze(&c.build(), Method::Volume, MassSpec::Density(1.0)).expect("volume");
-    assert!(a.warnings.iter().any(|w| w.contains("2 degenerate face(s)") && w.contains("12, 13")), "{:?}", a.warnings);
+    assert!(
+        a.warnings
+            .iter()
+            .any(|w| w.contains("2 degenerate face(s)") && w.contains("12, 13")),
+        "{:?}",
+        a.warnings
+    );
     assert_rel(a.properties.mass, 1.0, 1e-15, "unit cube");
 }
 
@@ -187,7 +242,11 @@ fn non_finite_coordinates_name_the_line() {
 
 #[test]
 fn indices_out_of_range_name_the_line() {
-    for (bad, what) in [("f 5 6 7 9", "past the end"), ("f 5 6 7 -9", "relative, before the start"), ("f 0 6 7 8", "zero")] {
+    for (bad, what) in [
+        ("f 5 6 7 9", "past the end"),
+        ("f 5 6 7 -9", "relative, before the start"),
+        ("f 0 6 7 8", "zero"),
+    ] {
         let text = CUBE_OBJ.replacen("f 5 6 7 8", bad, 1);
         let msg = obj_error(&text);
         assert!(msg.contains("line 11"), "{what} ({bad}): {msg}");
@@ -202,8 +261,8 @@ fn malformed_lines_are_named() {
     for (bad, line) in [
         ("v 1 1", 4),
         ("v 1 x 0", 4),
-        ("v 1 1 0 0", 4),     // w = 0 divides by zero
-        ("v 1 1 0 1 2", 4),   // five numbers: neither w nor a colour
+        ("v 1 1 0 0", 4),   // w = 0 divides by zero
+        ("v 1 1 0 1 2", 4), // five numbers: neither w nor a colour
         ("f 5 6 seven 8", 11),
         ("vn 0 0", 3),
     ] {
@@ -228,10 +287,14 @@ fn faces_with_fewer_than_three_corners_name_the_line() {
     let msg = obj_error(&text);
     assert!(msg.contains("line 11") && msg.contains("1 corner"), "{msg}");
     // Point and polyline elements before the bad face do not shift the count.
-    let text = CUBE_OBJ.replacen("f 1 4 3 2", "p 1\nl 1 2\nf 1 4 3 2", 1).replacen("f 5 6 7 8", "f 5 6", 1);
+    let text = CUBE_OBJ
+        .replacen("f 1 4 3 2", "p 1\nl 1 2\nf 1 4 3 2", 1)
+        .replacen("f 5 6 7 8", "f 5 6", 1);
     let msg = obj_error(&text);
     assert!(msg.contains("line 13") && msg.contains("2 corner"), "{msg}");
-    let text = CUBE_OBJ.replacen("f 1 4 3 2", "f 1 4 3 2\np 1 2 3", 1).replacen("f 5 6 7 8", "f 5 6", 1);
+    let text = CUBE_OBJ
+        .replacen("f 1 4 3 2", "f 1 4 3 2\np 1 2 3", 1)
+        .replacen("f 5 6 7 8", "f 5 6", 1);
     let msg = obj_error(&text);
     assert!(msg.contains("line 12"), "{msg}");
 }
@@ -252,9 +315,18 @@ fn a_flat_sheet_has_no_volume_but_a_shell() {
     let e = solid_properties(&m, massprops::IntegrationPath::Auto).expect_err("flat");
     assert!(matches!(e, MeshError::ZeroVolume { .. }), "{e:?}");
     assert!(e.to_string().contains("shell"), "{e}");
-    assert!(matches!(mass_properties(&m, 1.0), Err(MeshError::ZeroVolume { .. })));
+    assert!(matches!(
+        mass_properties(&m, 1.0),
+        Err(MeshError::ZeroVolume { .. })
+    ));
     for method in [Method::Volume, Method::Points, Method::BoundingBox] {
-        assert!(matches!(analyze(&m, method, MassSpec::Density(1.0)), Err(MeshError::ZeroVolume { .. })), "{method:?}");
+        assert!(
+            matches!(
+                analyze(&m, method, MassSpec::Density(1.0)),
+                Err(MeshError::ZeroVolume { .. })
+            ),
+            "{method:?}"
+        );
     }
     let sigma = 2.5;
     let (p, area) = shell_properties(&m, sigma).expect("area 1");
@@ -269,7 +341,10 @@ fn a_flat_sheet_has_no_volume_but_a_shell() {
     assert_mat(&a.properties.inertia_com, &want, 1e-14, "analyze shell");
     // A double-sided sheet (both windings) encloses nothing either.
     let both = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n";
-    assert!(matches!(mass_properties(&obj(both).expect("valid"), 1.0), Err(MeshError::ZeroVolume { .. })));
+    assert!(matches!(
+        mass_properties(&obj(both).expect("valid"), 1.0),
+        Err(MeshError::ZeroVolume { .. })
+    ));
 }
 
 #[test]
@@ -280,7 +355,10 @@ fn unreadable_and_unsupported_files() {
     assert!(e.to_string().contains("does-not-exist.obj"), "{e}");
     for name in ["part.ply", "part", "part.obj.gz"] {
         let e = parse_mesh(CUBE_OBJ.as_bytes(), Path::new(name)).expect_err("unsupported");
-        assert!(matches!(e, MeshError::UnsupportedFormat { .. }), "{name}: {e:?}");
+        assert!(
+            matches!(e, MeshError::UnsupportedFormat { .. }),
+            "{name}: {e:?}"
+        );
         assert!(e.to_string().contains(name), "{e}");
     }
     // Extensions are case-insensitive.
@@ -314,7 +392,10 @@ fn ascii_stl(mesh: &MeshBuilder, first_line: &str) -> String {
         s.push_str("  facet normal 0 0 0\n    outer loop\n");
         for &i in f {
             let p = tri.positions[i];
-            s.push_str(&format!("      vertex {} {} {}\n", p.x as f32, p.y as f32, p.z as f32));
+            s.push_str(&format!(
+                "      vertex {} {} {}\n",
+                p.x as f32, p.y as f32, p.z as f32
+            ));
         }
         s.push_str("    endloop\n  endfacet\n");
     }
@@ -330,7 +411,14 @@ fn stl_binary_and_ascii_give_the_obj_result() {
     assert_rel(want.mass, 3.0, 1e-15, "box volume 1");
     let files: Vec<(&str, Vec<u8>)> = vec![
         ("binary", binary_stl(&b, b"binary STL written by a test")),
-        ("binary, header starting with \"solid \"", binary_stl(&b, b"solid box exported by a CAD program")),
+        (
+            "binary, header starting with \"solid \"",
+            binary_stl(&b, b"solid box exported by a CAD program"),
+        ),
+        (
+            "binary, header with a \"solid \" line",
+            binary_stl(&b, b"solid box\n"),
+        ),
         ("ascii", ascii_stl(&b, "solid box").into_bytes()),
         ("ascii, unnamed solid", ascii_stl(&b, "solid").into_bytes()),
     ];
@@ -342,10 +430,16 @@ fn stl_binary_and_ascii_give_the_obj_result() {
         let m = loaded.unwrap_or_else(|e| panic!("{what}: {e}"));
         let d = diagnose(&m);
         assert_eq!((d.vertices, d.faces), (8, 12), "{what}: welded");
-        assert!(d.is_closed() && d.is_consistently_oriented(), "{what}: {d:?}");
+        assert!(
+            d.is_closed() && d.is_consistently_oriented(),
+            "{what}: {d:?}"
+        );
         let p = mass_properties(&m, 3.0).expect("closed");
         assert_rel(p.mass, want.mass, 1e-15, what);
-        assert!((p.center_of_mass - want.center_of_mass).amax() < 1e-15, "{what}");
+        assert!(
+            (p.center_of_mass - want.center_of_mass).amax() < 1e-15,
+            "{what}"
+        );
         assert_mat(&p.inertia_com, &want.inertia_com, 1e-14, what);
     }
     // A truncated binary file is malformed, not a panic.
@@ -358,14 +452,25 @@ fn stl_binary_and_ascii_give_the_obj_result() {
 
 #[test]
 fn all_objects_and_groups_of_an_obj_form_one_body() {
-    let one = shapes::to_obj("a", "first", &shapes::cuboid(Vector3::repeat(1.0), Point3::origin()));
-    let two = shapes::to_obj("b", "second", &shapes::cuboid(Vector3::repeat(1.0), Point3::new(3.0, 0.0, 0.0)));
+    let one = shapes::to_obj(
+        "a",
+        "first",
+        &shapes::cuboid(Vector3::repeat(1.0), Point3::origin()),
+    );
+    let two = shapes::to_obj(
+        "b",
+        "second",
+        &shapes::cuboid(Vector3::repeat(1.0), Point3::new(3.0, 0.0, 0.0)),
+    );
     // Indices of the second object continue after the first object's 8 vertices.
     let two_shifted: String = two
         .lines()
         .map(|l| match l.strip_prefix("f ") {
             Some(rest) => {
-                let idx: Vec<String> = rest.split(' ').map(|i| (i.parse::<usize>().expect("index") + 8).to_string()).collect();
+                let idx: Vec<String> = rest
+                    .split(' ')
+                    .map(|i| (i.parse::<usize>().expect("index") + 8).to_string())
+                    .collect();
                 format!("f {}\n", idx.join(" "))
             }
             None => format!("{l}\n"),
@@ -408,14 +513,25 @@ fn per_corner_positions_are_welded() {
     assert_eq!(d.open_edges, 0);
     assert!(d.is_closed() && d.is_consistently_oriented(), "{d:?}");
     let p = mass_properties(&m, 1.0).expect("closed");
-    assert_mat(&p.inertia_com, &(Matrix3::identity() / 6.0), 1e-15, "welded cube");
+    assert_mat(
+        &p.inertia_com,
+        &(Matrix3::identity() / 6.0),
+        1e-15,
+        "welded cube",
+    );
 }
 
 #[test]
 fn errors_on_parameters_are_typed() {
     let m = shapes::cube().build();
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        assert!(matches!(mass_properties(&m, bad), Err(MeshError::InvalidParameter { .. })), "{bad}");
+        assert!(
+            matches!(
+                mass_properties(&m, bad),
+                Err(MeshError::InvalidParameter { .. })
+            ),
+            "{bad}"
+        );
         for spec in [MassSpec::Density(bad), MassSpec::Mass(bad)] {
             let e = analyze(&m, Method::Volume, spec).expect_err("invalid");
             assert!(matches!(e, MeshError::InvalidParameter { .. }), "{e:?}");
@@ -423,9 +539,16 @@ fn errors_on_parameters_are_typed() {
         assert!(shell_properties(&m, bad).is_err());
     }
     // Constructing a mesh validates it, face by face.
-    let pts = vec![Point3::origin(), Point3::new(1.0, 0.0, 0.0), Point3::new(0.0, 1.0, 0.0)];
+    let pts = vec![
+        Point3::origin(),
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(0.0, 1.0, 0.0),
+    ];
     let e = PolyMesh::new(pts.clone(), &[vec![0, 1, 2], vec![0, 1, 7]]).expect_err("out of range");
-    assert!(e.to_string().contains("face 1") && e.to_string().contains("vertex 7"), "{e}");
+    assert!(
+        e.to_string().contains("face 1") && e.to_string().contains("vertex 7"),
+        "{e}"
+    );
     let e = PolyMesh::new(pts, &[vec![0usize, 1]]).expect_err("two corners");
     assert!(e.to_string().contains("face 0"), "{e}");
 }

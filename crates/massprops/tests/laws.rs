@@ -16,9 +16,11 @@ fn body(kind: usize) -> MeshBuilder {
         0 => shapes::t_handle(),
         1 => shapes::l_bracket().triangulated(),
         2 => shapes::cuboid(Vector3::new(1.0, 2.5, 0.4), Point3::new(0.3, -0.2, 0.9)),
-        3 => shapes::prism(&common::star(Point2::new(0.5, 0.2), 1.0, 0.4, 5), 0.0, 0.7).triangulated(),
+        3 => shapes::prism(&common::star(Point2::new(0.5, 0.2), 1.0, 0.4, 5), 0.0, 0.7)
+            .triangulated(),
         _ => {
-            let mut b = shapes::cuboid(Vector3::new(1.0, 1.0, 1.0), Point3::origin()).triangulated();
+            let mut b =
+                shapes::cuboid(Vector3::new(1.0, 1.0, 1.0), Point3::origin()).triangulated();
             // Pull one corner out: an irregular closed triangle mesh.
             b.positions[6] += Vector3::new(0.4, 0.3, 0.7);
             b
@@ -42,7 +44,8 @@ fn size(mesh: &PolyMesh) -> f64 {
 }
 
 fn rotation() -> impl Strategy<Value = UnitQuaternion<f64>> {
-    (-3.2..3.2f64, -1.6..1.6f64, -3.2..3.2f64).prop_map(|(r, p, y)| UnitQuaternion::from_euler_angles(r, p, y))
+    (-3.2..3.2f64, -1.6..1.6f64, -3.2..3.2f64)
+        .prop_map(|(r, p, y)| UnitQuaternion::from_euler_angles(r, p, y))
 }
 
 fn vector(r: f64) -> impl Strategy<Value = Vector3<f64>> {
@@ -151,7 +154,9 @@ fn principal_frame_rebuilds_the_tensor_for_every_law_body() {
     for kind in 0..5 {
         let p = props(&body(kind).build(), IntegrationPath::Auto, 1.0);
         let r: Rotation3<f64> = p.principal.rotation;
-        let rebuilt = r.matrix() * nalgebra::Matrix3::from_diagonal(&p.principal.moments) * r.matrix().transpose();
+        let rebuilt = r.matrix()
+            * nalgebra::Matrix3::from_diagonal(&p.principal.moments)
+            * r.matrix().transpose();
         assert_mat(&rebuilt, &p.inertia_com, 1e-13, "R diag(I) Rᵀ");
     }
 }

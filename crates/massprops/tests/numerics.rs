@@ -45,7 +45,11 @@ fn a_body_moved_1e6_from_the_origin_keeps_its_central_inertia_to_1e_12() {
     let quads_too = shapes::cuboid(Vector3::new(1.5, 0.25, 3.0), Point3::new(0.5, -0.75, 0.25));
     for body in [b, quads_too] {
         let mesh = body.build();
-        for offset in [Vector3::new(1e6, 0.0, 0.0), Vector3::new(1e6, -1e6, 1e6), Vector3::new(-3e6, 2e6, 1e6)] {
+        for offset in [
+            Vector3::new(1e6, 0.0, 0.0),
+            Vector3::new(1e6, -1e6, 1e6),
+            Vector3::new(-3e6, 2e6, 1e6),
+        ] {
             let far = mesh.map_positions(|p| p + offset).expect("finite");
             for path in [IntegrationPath::Polygon, IntegrationPath::Auto] {
                 let near = props(&mesh, path);
@@ -66,11 +70,16 @@ fn the_ten_integrals_of_a_far_body_are_those_of_the_near_one() {
     // The ten integrals are taken about the bounding-box centre, so moving the body moves the
     // reference point with it and leaves the values unchanged up to round-off.
     let mesh = dyadic_body().build();
-    let far = mesh.map_positions(|p| p + Vector3::new(1e6, 1e6, -1e6)).expect("finite");
+    let far = mesh
+        .map_positions(|p| p + Vector3::new(1e6, 1e6, -1e6))
+        .expect("finite");
     let a = massprops::volume_integrals(&mesh, IntegrationPath::Triangle);
     let b = massprops::volume_integrals(&far, IntegrationPath::Triangle);
     for (x, y) in a.values.iter().zip(b.values) {
-        assert!((x - y).abs() <= 1e-13 * a.values[4].abs().max(a.values[0].abs()), "{x} vs {y}");
+        assert!(
+            (x - y).abs() <= 1e-13 * a.values[4].abs().max(a.values[0].abs()),
+            "{x} vs {y}"
+        );
     }
 }
 
@@ -88,12 +97,20 @@ fn tiny_and_huge_bodies_have_correct_principal_axes() {
     ] {
         let size = Vector3::new(a, b, c) * scale;
         let motion = Isometry3::from_parts(Translation3::from(offset), rot);
-        let mesh = shapes::cuboid(size, Point3::origin()).transformed(&motion).triangulated().build();
+        let mesh = shapes::cuboid(size, Point3::origin())
+            .transformed(&motion)
+            .triangulated()
+            .build();
         let p = mass_properties(&mesh, rho).expect("closed box");
         let m = rho * size.x * size.y * size.z;
         let what = format!("box at scale {scale:e}");
         assert_rel(p.mass, m, 1e-13, &what);
-        assert_mat(&p.inertia_com, &(r * box_tensor(m, size.x, size.y, size.z) * r.transpose()), 1e-12, &what);
+        assert_mat(
+            &p.inertia_com,
+            &(r * box_tensor(m, size.x, size.y, size.z) * r.transpose()),
+            1e-12,
+            &what,
+        );
         assert_eq!(p.principal.degeneracy, Degeneracy::Distinct, "{what}");
         let axes = p.principal.rotation.matrix();
         // Smallest moment about the longest edge (z before rotation), largest about the shortest.
@@ -109,20 +126,35 @@ fn tiny_and_huge_bodies_have_correct_principal_axes() {
 
 #[test]
 fn a_mm_part_in_metres_has_the_axes_of_the_same_part_in_millimetres() {
-    let mm = shapes::t_handle().build().map_positions(|p| p * 1000.0).expect("finite");
+    let mm = shapes::t_handle()
+        .build()
+        .map_positions(|p| p * 1000.0)
+        .expect("finite");
     let turned = |m: &PolyMesh| {
         let q = UnitQuaternion::from_euler_angles(0.7, 0.2, -0.4);
         m.map_positions(|p| q * p).expect("finite")
     };
     let in_mm = mass_properties(&turned(&mm), 1.0).expect("closed");
     let in_m = mass_properties(&turned(&shapes::t_handle().build()), 1.0).expect("closed");
-    assert!(in_m.principal.moments.amax() < 1e-6, "moments are tiny in metres");
-    let (a, b) = (in_mm.principal.rotation.matrix(), in_m.principal.rotation.matrix());
+    assert!(
+        in_m.principal.moments.amax() < 1e-6,
+        "moments are tiny in metres"
+    );
+    let (a, b) = (
+        in_mm.principal.rotation.matrix(),
+        in_m.principal.rotation.matrix(),
+    );
     for i in 0..3 {
-        assert!(a.column(i).dot(&b.column(i)) > 1.0 - 1e-12, "axis {i}: {a} vs {b}");
+        assert!(
+            a.column(i).dot(&b.column(i)) > 1.0 - 1e-12,
+            "axis {i}: {a} vs {b}"
+        );
     }
     // Moments scale by 1000⁵ (lengths) at fixed density.
-    assert!((in_m.principal.moments * 1e15 - in_mm.principal.moments).amax() < 1e-12 * in_mm.principal.moments.amax());
+    assert!(
+        (in_m.principal.moments * 1e15 - in_mm.principal.moments).amax()
+            < 1e-12 * in_mm.principal.moments.amax()
+    );
 }
 
 /// A unit cube whose top-front edge 4–5 is split by its midpoint 8 on one side, closed by a
@@ -145,13 +177,26 @@ fn cube_with_sliver() -> (MeshBuilder, usize) {
 #[test]
 fn a_zero_area_face_in_a_closed_mesh_contributes_zero_and_no_nan() {
     let (b, sliver) = cube_with_sliver();
-    for (name, mesh) in [("polygons", b.build()), ("triangles", b.clone().triangulated().build())] {
+    for (name, mesh) in [
+        ("polygons", b.build()),
+        ("triangles", b.clone().triangulated().build()),
+    ] {
         let d = diagnose(&mesh);
-        assert!(d.is_closed() && d.is_consistently_oriented(), "{name}: {d:?}");
+        assert!(
+            d.is_closed() && d.is_consistently_oriented(),
+            "{name}: {d:?}"
+        );
         assert!(d.degenerate_faces >= 1, "{name}: {d:?}");
-        for path in [IntegrationPath::Polygon, IntegrationPath::Triangle, IntegrationPath::TriangleParallel] {
+        for path in [
+            IntegrationPath::Polygon,
+            IntegrationPath::Triangle,
+            IntegrationPath::TriangleParallel,
+        ] {
             let p = props(&mesh, path);
-            assert!(p.inertia_com.iter().all(|x| x.is_finite()), "{name} {path:?}");
+            assert!(
+                p.inertia_com.iter().all(|x| x.is_finite()),
+                "{name} {path:?}"
+            );
             assert_rel(p.mass, 1.0, 1e-15, name);
             assert!((p.center_of_mass - Point3::new(0.5, 0.5, 0.5)).amax() < 1e-15);
             assert_mat(&p.inertia_com, &(Matrix3::identity() / 6.0), 1e-15, name);
@@ -166,31 +211,56 @@ fn a_zero_area_face_in_a_closed_mesh_contributes_zero_and_no_nan() {
     let mesh = c.build();
     for path in [IntegrationPath::Polygon, IntegrationPath::Triangle] {
         let p = props(&mesh, path);
-        assert_mat(&p.inertia_com, &(Matrix3::identity() / 6.0), 1e-15, "collapsed face");
+        assert_mat(
+            &p.inertia_com,
+            &(Matrix3::identity() / 6.0),
+            1e-15,
+            "collapsed face",
+        );
     }
 }
 
 #[test]
 fn principal_axes_are_right_handed_and_orthonormal() {
-    let mut bodies: Vec<(String, PolyMesh)> =
-        shapes::samples().into_iter().map(|(n, _, b)| (n.to_string(), b.build())).collect();
-    for (k, q) in [(0.3, 0.1, 2.0), (-1.0, 1.4, 0.2), (3.0, -0.5, -2.5)].into_iter().enumerate() {
+    let mut bodies: Vec<(String, PolyMesh)> = shapes::samples()
+        .into_iter()
+        .map(|(n, _, b)| (n.to_string(), b.build()))
+        .collect();
+    for (k, q) in [(0.3, 0.1, 2.0), (-1.0, 1.4, 0.2), (3.0, -0.5, -2.5)]
+        .into_iter()
+        .enumerate()
+    {
         let rot = UnitQuaternion::from_euler_angles(q.0, q.1, q.2);
-        let m = shapes::l_bracket().build().map_positions(|p| rot * p).expect("finite");
+        let m = shapes::l_bracket()
+            .build()
+            .map_positions(|p| rot * p)
+            .expect("finite");
         bodies.push((format!("turned L-bracket {k}"), m));
     }
     for (name, mesh) in bodies {
         let p = mass_properties(&mesh, 1.0).expect("closed");
         let r = p.principal.rotation.matrix();
-        assert!((r.transpose() * r - Matrix3::identity()).amax() < 1e-14, "{name}: orthonormal");
-        assert!((r.determinant() - 1.0).abs() < 1e-14, "{name}: right-handed");
-        assert!((r.column(0).cross(&r.column(1)) - r.column(2)).amax() < 1e-14, "{name}: e1 × e2 = e3");
+        assert!(
+            (r.transpose() * r - Matrix3::identity()).amax() < 1e-14,
+            "{name}: orthonormal"
+        );
+        assert!(
+            (r.determinant() - 1.0).abs() < 1e-14,
+            "{name}: right-handed"
+        );
+        assert!(
+            (r.column(0).cross(&r.column(1)) - r.column(2)).amax() < 1e-14,
+            "{name}: e1 × e2 = e3"
+        );
         let m = p.principal.moments;
         assert!(m[0] <= m[1] && m[1] <= m[2], "{name}: ascending");
         // Each axis is an eigenvector: I a = λ a.
         for i in 0..3 {
             let a = r.column(i);
-            assert!((p.inertia_com * a - a * m[i]).amax() < 1e-12 * m[2], "{name}: axis {i}");
+            assert!(
+                (p.inertia_com * a - a * m[i]).amax() < 1e-12 * m[2],
+                "{name}: axis {i}"
+            );
         }
     }
 }
@@ -201,8 +271,17 @@ fn degenerate_moments_are_reported() {
     assert_eq!(cube.principal.degeneracy, Degeneracy::Spherical);
     // A turned cube is still spherical: every axis is principal.
     let rot = UnitQuaternion::from_euler_angles(0.4, 0.9, -1.3);
-    let turned = shapes::cube().build().map_positions(|p| rot * p).expect("finite");
-    assert_eq!(mass_properties(&turned, 1.0).expect("closed").principal.degeneracy, Degeneracy::Spherical);
+    let turned = shapes::cube()
+        .build()
+        .map_positions(|p| rot * p)
+        .expect("finite");
+    assert_eq!(
+        mass_properties(&turned, 1.0)
+            .expect("closed")
+            .principal
+            .degeneracy,
+        Degeneracy::Spherical
+    );
 
     // A long cylinder (rod): the axial moment is the unique smallest, I2 = I3.
     let rod = mass_properties(&shapes::cylinder(0.5, 0.0, 6.0, 48).build(), 1.0).expect("closed");
@@ -214,7 +293,10 @@ fn degenerate_moments_are_reported() {
     assert!(disc.principal.rotation.matrix().column(2).z.abs() > 1.0 - 1e-14);
     // A tilted rod: the unique axis follows the tilt.
     let tilt = UnitQuaternion::from_euler_angles(0.6, -0.3, 0.2);
-    let tilted = shapes::cylinder(0.5, 0.0, 6.0, 48).build().map_positions(|p| tilt * p).expect("finite");
+    let tilted = shapes::cylinder(0.5, 0.0, 6.0, 48)
+        .build()
+        .map_positions(|p| tilt * p)
+        .expect("finite");
     let t = mass_properties(&tilted, 1.0).expect("closed");
     assert_eq!(t.principal.degeneracy, Degeneracy::Moments23);
     let axis = tilt * Vector3::z();
@@ -230,10 +312,42 @@ fn degenerate_moments_are_reported() {
 #[test]
 fn the_independent_tetrahedron_sum_agrees_far_from_the_origin() {
     // Cross-check of the test's own reference method with a body away from the origin.
-    let mesh = dyadic_body().build().map_positions(|p| p + Vector3::new(1e3, -2e3, 5e2)).expect("finite");
+    let mesh = dyadic_body()
+        .build()
+        .map_positions(|p| p + Vector3::new(1e3, -2e3, 5e2))
+        .expect("finite");
     let (v, c, i) = tetra_sum(&mesh);
     let p = props(&mesh, IntegrationPath::Polygon);
     assert_rel(p.mass, v, 1e-12, "volume");
     assert!((p.center_of_mass - c).amax() < 1e-10);
     assert_mat(&p.inertia_com, &i, 1e-10, "tensor");
+}
+
+#[test]
+fn extreme_scales_keep_full_relative_accuracy_on_both_paths() {
+    let base = shapes::l_bracket();
+    let reference = props(&base.build(), IntegrationPath::Polygon);
+    for s in [1e-45, 1e-30, 1e-12, 1e12, 1e30, 1e45] {
+        let scaled = base.build().map_positions(|p| p * s).expect("finite");
+        let tri = base
+            .clone()
+            .triangulated()
+            .build()
+            .map_positions(|p| p * s)
+            .expect("finite");
+        for (what, mesh, path) in [
+            ("polygon", &scaled, IntegrationPath::Polygon),
+            ("triangle", &tri, IntegrationPath::Triangle),
+        ] {
+            let p = props(mesh, path);
+            let what = format!("L-bracket × {s:e}, {what}");
+            assert_rel(p.mass, reference.mass * s.powi(3), 1e-13, &what);
+            assert_mat(
+                &p.inertia_com,
+                &(reference.inertia_com * s.powi(5)),
+                1e-12,
+                &what,
+            );
+        }
+    }
 }

@@ -20,13 +20,26 @@ fn solid(mesh: &PolyMesh, path: IntegrationPath) -> Solid {
 fn assert_same(a: &Solid, b: &Solid, scale: f64, what: &str) {
     assert_eq!(a.flipped, b.flipped, "{what}");
     assert_rel(a.volume, b.volume, TOL, what);
-    assert_point(&a.unit_density.center_of_mass, &b.unit_density.center_of_mass, scale, TOL, what);
-    assert_mat(&a.unit_density.inertia_com, &b.unit_density.inertia_com, TOL, what);
+    assert_point(
+        &a.unit_density.center_of_mass,
+        &b.unit_density.center_of_mass,
+        scale,
+        TOL,
+        what,
+    );
+    assert_mat(
+        &a.unit_density.inertia_com,
+        &b.unit_density.inertia_com,
+        TOL,
+        what,
+    );
 }
 
 /// A deterministic pseudo-random jitter in [−1, 1) (a 64-bit LCG; no dependency needed).
 fn jitter(state: &mut u64) -> f64 {
-    *state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+    *state = state
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
     ((*state >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
 }
 
@@ -56,20 +69,41 @@ fn samples_agree_on_every_path_and_with_their_triangulation() {
         let scale = size(&poly);
         let reference = solid(&poly, IntegrationPath::Polygon);
         for (what, s) in [
-            ("polygon path on the triangulation", solid(&tri, IntegrationPath::Polygon)),
+            (
+                "polygon path on the triangulation",
+                solid(&tri, IntegrationPath::Polygon),
+            ),
             ("triangle path", solid(&tri, IntegrationPath::Triangle)),
-            ("parallel triangle path", solid(&tri, IntegrationPath::TriangleParallel)),
+            (
+                "parallel triangle path",
+                solid(&tri, IntegrationPath::TriangleParallel),
+            ),
             ("auto", solid(&tri, IntegrationPath::Auto)),
         ] {
             assert_same(&s, &reference, scale, &format!("{name}: {what}"));
         }
         // The triangle paths fall back to Mirtich for polygon meshes.
-        assert_same(&solid(&poly, IntegrationPath::Triangle), &reference, scale, name);
+        assert_same(
+            &solid(&poly, IntegrationPath::Triangle),
+            &reference,
+            scale,
+            name,
+        );
 
         let (v, c, i) = tetra_sum(&tri);
-        assert_rel(reference.volume, v, TOL, &format!("{name}: tetrahedra volume"));
+        assert_rel(
+            reference.volume,
+            v,
+            TOL,
+            &format!("{name}: tetrahedra volume"),
+        );
         assert_point(&reference.unit_density.center_of_mass, &c, scale, TOL, name);
-        assert_mat(&reference.unit_density.inertia_com, &i, TOL, &format!("{name}: tetrahedra tensor"));
+        assert_mat(
+            &reference.unit_density.inertia_com,
+            &i,
+            TOL,
+            &format!("{name}: tetrahedra tensor"),
+        );
     }
 }
 
@@ -79,7 +113,15 @@ fn irregular_triangle_meshes_agree_on_every_path() {
         ("torus", shapes::torus(2.0, 0.7, 24, 12), 0.05),
         ("t_handle", shapes::t_handle(), 0.001),
         ("hammer", shapes::hammer(), 0.002),
-        ("star prism", shapes::prism(&common::star(nalgebra::Point2::new(1.0, 2.0), 2.0, 0.6, 7), -1.0, 3.0), 0.1),
+        (
+            "star prism",
+            shapes::prism(
+                &common::star(nalgebra::Point2::new(1.0, 2.0), 2.0, 0.6, 7),
+                -1.0,
+                3.0,
+            ),
+            0.1,
+        ),
     ];
     for (k, (name, builder, amount)) in cases.into_iter().enumerate() {
         let b = jittered(&builder, amount, 17 + k as u64);
@@ -87,11 +129,26 @@ fn irregular_triangle_meshes_agree_on_every_path() {
         let scale = size(&mesh);
         let mirtich = solid(&mesh, IntegrationPath::Polygon);
         let triangle = solid(&mesh, IntegrationPath::Triangle);
-        assert_same(&triangle, &mirtich, scale, &format!("jittered {name}: triangle vs polygon"));
+        assert_same(
+            &triangle,
+            &mirtich,
+            scale,
+            &format!("jittered {name}: triangle vs polygon"),
+        );
         let (v, c, i) = tetra_sum(&mesh);
-        assert_rel(mirtich.volume, v, TOL, &format!("jittered {name}: tetrahedra volume"));
+        assert_rel(
+            mirtich.volume,
+            v,
+            TOL,
+            &format!("jittered {name}: tetrahedra volume"),
+        );
         assert_point(&mirtich.unit_density.center_of_mass, &c, scale, TOL, name);
-        assert_mat(&mirtich.unit_density.inertia_com, &i, TOL, &format!("jittered {name}: tetrahedra"));
+        assert_mat(
+            &mirtich.unit_density.inertia_com,
+            &i,
+            TOL,
+            &format!("jittered {name}: tetrahedra"),
+        );
     }
 }
 
@@ -99,13 +156,19 @@ fn irregular_triangle_meshes_agree_on_every_path() {
 fn parallel_triangle_path_is_bit_identical_to_the_sequential_one() {
     // Enough triangles for many blocks of the fixed summation order, and an irregular mesh so the
     // partial sums are not all alike.
-    for (builder, seed) in [(shapes::sample_torus(), 1), (shapes::torus(1.0, 0.4, 200, 100), 2)] {
+    for (builder, seed) in [
+        (shapes::sample_torus(), 1),
+        (shapes::torus(1.0, 0.4, 200, 100), 2),
+    ] {
         let mesh = jittered(&builder, 0.01, seed).build();
         assert!(mesh.triangle_count() > 8 * 512);
         let seq = volume_integrals(&mesh, IntegrationPath::Triangle);
         let par = volume_integrals(&mesh, IntegrationPath::TriangleParallel);
         assert_eq!(seq, par);
-        assert_eq!(solid(&mesh, IntegrationPath::Triangle), solid(&mesh, IntegrationPath::TriangleParallel));
+        assert_eq!(
+            solid(&mesh, IntegrationPath::Triangle),
+            solid(&mesh, IntegrationPath::TriangleParallel)
+        );
     }
 }
 

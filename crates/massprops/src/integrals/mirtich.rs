@@ -158,6 +158,11 @@ fn face_contribution<const FMA: bool>(corners: &[Vector3<f64>], acc: &mut [f64; 
     if n[c] == 0.0 || !n[c].is_finite() {
         return;
     }
+    // But not of any size: |n| ~ L² for a face of size L, and the cubic terms (n³·L⁵ ~ L¹¹)
+    // underflow below L ~ 1e-27 (overflow above 1e27). Scaling n by the power of two that brings
+    // |n_γ| into [1, 2) is exact and keeps the unit normal's range.
+    let exponent = (n[c].abs().to_bits() >> 52) as i64; // biased: 0 (subnormal) ..= 2046
+    let n = n * f64::from_bits(((2046 - exponent) as u64) << 52);
     // The plane through the corners' mean keeps non-planar polygons' error symmetric.
     let mean = corners.iter().sum::<Vector3<f64>>() * (1.0 / corners.len() as f64);
     let w = -n.dot(&mean);

@@ -24,7 +24,6 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         triangulate: false,
         ignore_points: false,
         ignore_lines: false,
-        ..Default::default()
     };
     let (models, _materials) = tobj::load_obj_buf(&mut Cursor::new(bytes), &options, |_| {
         Err(tobj::LoadError::OpenFileFailed)
@@ -91,7 +90,11 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
     PolyMesh::from_flat(welded, indices, &arities).map_err(|e| {
         let line = match &e {
             MeshError::NonFiniteVertex { .. } => first_line(text, |kw, rest| {
-                kw == "v" && rest.split_whitespace().take(3).any(|t| t.parse::<f64>().is_ok_and(|v| !v.is_finite()))
+                kw == "v"
+                    && rest
+                        .split_whitespace()
+                        .take(3)
+                        .any(|t| t.parse::<f64>().is_ok_and(|v| !v.is_finite()))
             }),
             _ => None,
         };
@@ -107,11 +110,17 @@ fn describe(e: &tobj::LoadError) -> &'static str {
     use tobj::LoadError as E;
     match e {
         E::PositionParseError => "malformed vertex position: `v` needs three numbers",
+        E::ColorParseError => "malformed vertex: `v` takes x y z, x y z w or x y z r g b",
+        E::ScalingByZeroError => "a vertex has a weight w of zero",
         E::NormalParseError => "malformed normal: `vn` needs three numbers",
         E::TexcoordParseError => "malformed texture coordinate",
-        E::FaceParseError => "malformed face: `f` takes vertex indices like `f 1 2 3` or `f 1/1/1 2/2/2 3/3/3`",
+        E::FaceParseError => {
+            "malformed face: `f` takes vertex indices like `f 1 2 3` or `f 1/1/1 2/2/2 3/3/3`"
+        }
         E::FaceVertexOutOfBounds => "a face refers to a vertex that the file does not define",
-        E::FaceTexCoordOutOfBounds => "a face refers to a texture coordinate that the file does not define",
+        E::FaceTexCoordOutOfBounds => {
+            "a face refers to a texture coordinate that the file does not define"
+        }
         E::FaceNormalOutOfBounds => "a face refers to a normal that the file does not define",
         E::ReadError => "the file cannot be read as text",
         E::InvalidPolygon => "invalid polygon",
@@ -166,11 +175,25 @@ fn locate_tobj_error(text: &str, e: &tobj::LoadError) -> Option<usize> {
         t.len() >= n && t.iter().all(|x| x.parse::<f64>().is_ok())
     };
     match e {
-        E::PositionParseError => first_line(text, |kw, rest| kw == "v" && !numbers_ok(rest, 3)),
+        E::PositionParseError | E::ColorParseError | E::ScalingByZeroError => {
+            // What tobj accepts: x y z; x y z w with w ≠ 0; x y z r g b.
+            first_line(text, |kw, rest| {
+                let t: Vec<&str> = rest.split_whitespace().collect();
+                let number = |s: &str| s.parse::<f64>().ok();
+                let xyz = t.len() >= 3 && t[..3].iter().all(|x| number(x).is_some());
+                kw == "v"
+                    && !(xyz
+                        && match t.len() {
+                            3 | 6 => true,
+                            4 => number(t[3]).is_some_and(|w| w != 0.0),
+                            _ => false,
+                        })
+            })
+        }
         E::NormalParseError => first_line(text, |kw, rest| kw == "vn" && !numbers_ok(rest, 3)),
         E::TexcoordParseError => first_line(text, |kw, rest| kw == "vt" && !numbers_ok(rest, 1)),
         E::FaceParseError => first_line(text, |kw, rest| {
-            kw == "f"
+            (kw == "f" || kw == "l")
                 && rest.split_whitespace().any(|t| {
                     t.split('/')
                         .next()
@@ -178,20 +201,19 @@ fn locate_tobj_error(text: &str, e: &tobj::LoadError) -> Option<usize> {
                 })
         }),
         E::FaceVertexOutOfBounds => {
-            let count = text
-                .lines()
-                .filter(|l| l.trim_start().starts_with("v "))
-                .count() as i64;
+            let count = keywords(text).filter(|&(_, kw)| kw == "v").count() as i64;
             let mut seen = 0i64;
             first_line(text, |kw, rest| {
                 if kw == "v" {
                     seen += 1;
                 }
-                kw == "f"
+                (kw == "f" || kw == "l")
                     && rest.split_whitespace().any(|t| {
                         let i = t.split('/').next().and_then(|i| i.parse::<i64>().ok());
                         match i {
                             Some(i) if i > 0 => i > count,
+                            // OBJ indices start at 1; tobj reads 0 as out of range.
+                            Some(0) => true,
                             Some(i) => -i > seen,
                             None => false,
                         }

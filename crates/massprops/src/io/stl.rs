@@ -15,7 +15,8 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         line: None,
         message,
     };
-    let mut cursor = Cursor::new(bytes);
+    let patched = patch_for_detection(bytes);
+    let mut cursor = Cursor::new(patched.as_deref().unwrap_or(bytes));
     let reader = stl_io::create_stl_reader(&mut cursor)
         .map_err(|e| malformed(format!("not a readable STL file: {e}")))?;
     let mut corners = Vec::new();
@@ -30,13 +31,36 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         );
     }
     let (positions, remap) = weld_exact(&corners);
-    let triangles: Vec<[u32; 3]> = remap
-        .as_chunks::<3>()
-        .0
-        .to_vec();
+    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
     PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
         path: path.to_path_buf(),
         line: None,
         source: Box::new(e),
     })
+}
+
+/// `stl_io` takes a file for ASCII exactly when its first line starts with `"solid "`. Two common
+/// kinds of file defeat that test, and get a patched copy:
+/// - binary files whose free-form 80-byte header starts with `"solid "` (many CAD exporters write
+///   one): recognised by their size, 84 + 50 × the triangle count, and the header's first byte
+///   changed (the header carries no data);
+/// - ASCII files that open with a bare `solid` line (no name): a space is added after `solid`.
+fn patch_for_detection(bytes: &[u8]) -> Option<Vec<u8>> {
+    let binary_size = bytes
+        .get(80..84)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .is_some_and(|n| 84 + 50 * n as u64 == bytes.len() as u64);
+    if binary_size && bytes.starts_with(b"solid") {
+        let mut copy = bytes.to_vec();
+        copy[0] = b'_';
+        return Some(copy);
+    }
+    let first_line = bytes.split(|&b| b == b'\n').next().unwrap_or_default();
+    if !binary_size && first_line.trim_ascii_end() == b"solid" {
+        let mut copy = Vec::with_capacity(bytes.len() + 1);
+        copy.extend_from_slice(b"solid ");
+        copy.extend_from_slice(&bytes[5..]);
+        return Some(copy);
+    }
+    None
 }

@@ -23,21 +23,30 @@ pub fn mat_rel(a: &Matrix3<f64>, b: &Matrix3<f64>) -> f64 {
 #[track_caller]
 pub fn assert_mat(a: &Matrix3<f64>, b: &Matrix3<f64>, tol: f64, what: &str) {
     let r = mat_rel(a, b);
-    assert!(r <= tol, "{what}: relative difference {r:e} > {tol:e}\n got {a}\n want {b}");
+    assert!(
+        r <= tol,
+        "{what}: relative difference {r:e} > {tol:e}\n got {a}\n want {b}"
+    );
 }
 
 /// Asserts two scalars agree to `tol` relative.
 #[track_caller]
 pub fn assert_rel(a: f64, b: f64, tol: f64, what: &str) {
     let r = rel(a, b);
-    assert!(r <= tol, "{what}: {a:e} vs {b:e}, relative difference {r:e} > {tol:e}");
+    assert!(
+        r <= tol,
+        "{what}: {a:e} vs {b:e}, relative difference {r:e} > {tol:e}"
+    );
 }
 
 /// Asserts two points agree to `tol` times `scale`.
 #[track_caller]
 pub fn assert_point(a: &Point3<f64>, b: &Point3<f64>, scale: f64, tol: f64, what: &str) {
     let d = (a - b).amax();
-    assert!(d <= tol * scale, "{what}: {a} vs {b}, |Δ| = {d:e} > {tol:e} × {scale:e}");
+    assert!(
+        d <= tol * scale,
+        "{what}: {a} vs {b}, |Δ| = {d:e} > {tol:e} × {scale:e}"
+    );
 }
 
 /// Inertia tensor about the centre of a solid box of mass `m` and edges a, b, c along x, y, z.
@@ -74,7 +83,13 @@ pub fn inertia_from_covariance(c: &Matrix3<f64>) -> Matrix3<f64> {
 /// (0, e₁, e₂, e₃), whose ∫x² = 1/60 and ∫xy = 1/120.
 pub fn tetra_sum(mesh: &PolyMesh) -> (f64, Point3<f64>, Matrix3<f64>) {
     let n = mesh.positions().len() as f64;
-    let o = Point3::from(mesh.positions().iter().map(|p| p.coords).sum::<Vector3<f64>>() / n);
+    let o = Point3::from(
+        mesh.positions()
+            .iter()
+            .map(|p| p.coords)
+            .sum::<Vector3<f64>>()
+            / n,
+    );
     let c0 = Matrix3::new(2.0, 1.0, 1.0, 1.0, 2.0, 1.0, 1.0, 1.0, 2.0) / 120.0;
     let mut volume = 0.0;
     let mut first = Vector3::zeros();
@@ -138,7 +153,11 @@ pub fn polygon_moments(outline: &[Point2<f64>]) -> PolygonMoments {
 /// `outline` from z0 to z1, from the polygon's moments:
 /// ∫x²dV = h∫x²dA, ∫y²dV = h∫y²dA, ∫xy dV = h∫xy dA, ∫z²dV = A(z1³ − z0³)/3,
 /// ∫xz dV = A·cx·(z1² − z0²)/2, ∫yz dV = A·cy·(z1² − z0²)/2.
-pub fn prism_closed_form(outline: &[Point2<f64>], z0: f64, z1: f64) -> (f64, Point3<f64>, Matrix3<f64>) {
+pub fn prism_closed_form(
+    outline: &[Point2<f64>],
+    z0: f64,
+    z1: f64,
+) -> (f64, Point3<f64>, Matrix3<f64>) {
     let pm = polygon_moments(outline);
     let h = z1 - z0;
     let zz = pm.area * (z1.powi(3) - z0.powi(3)) / 3.0;
