@@ -128,14 +128,19 @@ pub(crate) fn compensated_total<const N: usize>(blocks: impl IntoIterator<Item =
 
 /// The reference point the integrals are taken about: the centre of the vertices' bounding box.
 pub(crate) fn reference_point(positions: &[Point3<f64>]) -> Point3<f64> {
-    let mut lo = Vector3::repeat(f64::INFINITY);
-    let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+    // Plain comparisons (not f64::min, whose NaN rules block vectorisation); coordinates are
+    // finite by the mesh's invariant.
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
     for p in positions {
-        lo = lo.inf(&p.coords);
-        hi = hi.sup(&p.coords);
+        for k in 0..3 {
+            let c = p[k];
+            lo[k] = if c < lo[k] { c } else { lo[k] };
+            hi[k] = if c > hi[k] { c } else { hi[k] };
+        }
     }
     // Halving each bound first cannot overflow, whatever the coordinates.
-    Point3::from(lo * 0.5 + hi * 0.5)
+    Point3::from(std::array::from_fn(|k| lo[k] * 0.5 + hi[k] * 0.5))
 }
 
 /// Computes the ten volume integrals of `mesh` about its bounding-box centre.
