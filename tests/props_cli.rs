@@ -23,7 +23,11 @@ fn props_json(args: &[&str]) -> Value {
     all.extend_from_slice(args);
     all.push("--json");
     let out = run(&all);
-    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
@@ -59,9 +63,23 @@ impl Drop for TempFile {
 fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
     let j = props_json(&["assets/t_handle.obj", "--density", "7800"]);
     for key in [
-        "schema_version", "file", "method", "density", "volume", "mass", "surface_area",
-        "center_of_mass", "inertia_com", "inertia_origin", "principal_moments", "principal_axes",
-        "bounding_box", "inertia_bbox", "inertia_points", "mesh", "warnings",
+        "schema_version",
+        "file",
+        "method",
+        "density",
+        "volume",
+        "mass",
+        "surface_area",
+        "center_of_mass",
+        "inertia_com",
+        "inertia_origin",
+        "principal_moments",
+        "principal_axes",
+        "bounding_box",
+        "inertia_bbox",
+        "inertia_points",
+        "mesh",
+        "warnings",
     ] {
         assert!(j.get(key).is_some(), "missing {key}");
     }
@@ -77,7 +95,13 @@ fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
     assert!(close(f(&j["volume"]), m / rho, 1e-12));
     assert!(close(f(&j["center_of_mass"][1]), yc, 1e-12));
     assert!(f(&j["center_of_mass"][0]).abs() < 1e-15);
-    let box_i = |m: f64, a: f64, b: f64, c: f64| [m / 12.0 * (b * b + c * c), m / 12.0 * (a * a + c * c), m / 12.0 * (a * a + b * b)];
+    let box_i = |m: f64, a: f64, b: f64, c: f64| {
+        [
+            m / 12.0 * (b * b + c * c),
+            m / 12.0 * (a * a + c * c),
+            m / 12.0 * (a * a + b * b),
+        ]
+    };
     let ib = box_i(mb, 0.08, 0.012, 0.012);
     let is = box_i(ms, 0.012, 0.05, 0.012);
     let (db, ds) = (0.006 - yc, -0.025 - yc);
@@ -90,7 +114,11 @@ fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
     assert!(close(f(&icom[2][2]), izz, 1e-12));
     assert!(f(&icom[0][1]).abs() < 1e-12 * izz);
     // About the origin: Ixx gains m·yc².
-    assert!(close(f(&j["inertia_origin"][0][0]), ixx + m * yc * yc, 1e-12));
+    assert!(close(
+        f(&j["inertia_origin"][0][0]),
+        ixx + m * yc * yc,
+        1e-12
+    ));
     // Principal moments ascending, axes right-handed and orthonormal.
     let pm: Vec<f64> = (0..3).map(|i| f(&j["principal_moments"][i])).collect();
     let mut expected = [ixx, iyy, izz];
@@ -124,7 +152,15 @@ fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
 
 #[test]
 fn every_sample_asset_is_a_closed_consistent_body() {
-    for name in ["t_handle", "tennis_racket", "book", "hammer", "l_bracket", "cube", "torus"] {
+    for name in [
+        "t_handle",
+        "tennis_racket",
+        "book",
+        "hammer",
+        "l_bracket",
+        "cube",
+        "torus",
+    ] {
         let j = props_json(&[&format!("assets/{name}.obj")]);
         assert_eq!(j["mesh"]["closed"], true, "{name}");
         assert_eq!(j["mesh"]["consistently_oriented"], true, "{name}");
@@ -145,7 +181,11 @@ fn book_mass_option_scale_and_methods() {
     // Scaling every length by 10 at fixed density multiplies the mass by 1000, I by 1e5.
     let s = props_json(&["assets/book.obj", "--scale", "10"]);
     assert!(close(f(&s["mass"]), 28_000.0, 1e-13));
-    assert!(close(f(&s["inertia_com"][0][0]), 28.0 * 65.0 / 12.0 * 1e5, 1e-13));
+    assert!(close(
+        f(&s["inertia_com"][0][0]),
+        28.0 * 65.0 / 12.0 * 1e5,
+        1e-13
+    ));
     // The bbox method of a box is the box itself.
     let b = props_json(&["assets/book.obj", "--method", "bbox"]);
     assert!(close(f(&b["inertia_com"][0][0]), 28.0 * 65.0 / 12.0, 1e-13));
@@ -155,7 +195,11 @@ fn book_mass_option_scale_and_methods() {
     assert!(close(f(&sh["mass"]), 78.0, 1e-13));
     // Points: eight masses m/8 at the corners: Ixx = m(2² + 3.5²).
     let p = props_json(&["assets/book.obj", "--method", "points"]);
-    assert!(close(f(&p["inertia_com"][0][0]), 28.0 * (4.0 + 12.25), 1e-13));
+    assert!(close(
+        f(&p["inertia_com"][0][0]),
+        28.0 * (4.0 + 12.25),
+        1e-13
+    ));
 }
 
 #[test]
@@ -193,9 +237,24 @@ fn bad_input_exits_3_with_file_and_line() {
 
 #[test]
 fn usage_errors_exit_2() {
-    assert_eq!(run(&["props", "assets/cube.obj", "--density", "-1"]).status.code(), Some(2));
-    assert_eq!(run(&["props", "assets/cube.obj", "--mass", "1", "--density", "2"]).status.code(), Some(2));
-    assert_eq!(run(&["props", "assets/cube.obj", "--method", "magic"]).status.code(), Some(2));
+    assert_eq!(
+        run(&["props", "assets/cube.obj", "--density", "-1"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        run(&["props", "assets/cube.obj", "--mass", "1", "--density", "2"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        run(&["props", "assets/cube.obj", "--method", "magic"])
+            .status
+            .code(),
+        Some(2)
+    );
     assert_eq!(run(&["props"]).status.code(), Some(2));
     let help = run(&[]);
     assert_eq!(help.status.code(), Some(0));
@@ -211,7 +270,11 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
     let j = props_json(&[file.path()]);
     assert_eq!(j["mesh"]["closed"], false);
     assert_eq!(j["mesh"]["open_edges"], 4);
-    assert!(j["warnings"][0].as_str().is_some_and(|w| w.contains("open")));
+    assert!(
+        j["warnings"][0]
+            .as_str()
+            .is_some_and(|w| w.contains("open"))
+    );
 
     // The same cube closed but wound inwards: same numbers, flipped and a warning.
     let inward = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\

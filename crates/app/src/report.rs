@@ -124,7 +124,13 @@ fn num(v: f64) -> String {
 
 fn matrix_lines(out: &mut String, m: &Matrix3<f64>) {
     for r in 0..3 {
-        let _ = writeln!(out, "    [{} {} {} ]", num(m[(r, 0)]), num(m[(r, 1)]), num(m[(r, 2)]));
+        let _ = writeln!(
+            out,
+            "    [{} {} {} ]",
+            num(m[(r, 0)]),
+            num(m[(r, 1)]),
+            num(m[(r, 2)])
+        );
     }
 }
 
@@ -132,7 +138,11 @@ fn comparison_line(out: &mut String, name: &str, c: &Comparison, approx: &MassPr
     let angles: Vec<String> = c
         .axis_angle
         .iter()
-        .map(|a| a.map_or("n/a (equal moments)".into(), |a| format!("{:.3}°", a.to_degrees())))
+        .map(|a| {
+            a.map_or("n/a (equal moments)".into(), |a| {
+                format!("{:.3}°", a.to_degrees())
+            })
+        })
         .collect();
     let _ = writeln!(
         out,
@@ -162,31 +172,79 @@ pub fn table(file: &str, scale: f64, a: &Analysis) -> String {
     let _ = writeln!(s, "Mass properties of {file}");
     let _ = writeln!(s, "  method            {method}");
     if scale != 1.0 {
-        let _ = writeln!(s, "  scale             {scale} (applied to every coordinate)");
+        let _ = writeln!(
+            s,
+            "  scale             {scale} (applied to every coordinate)"
+        );
     }
     let opt = |v: Option<f64>| v.map_or("n/a".to_string(), |v| num(v).trim_start().to_string());
     let _ = writeln!(s, "  density           {}", opt(a.density));
     let _ = writeln!(s, "  volume            {}", opt(a.volume));
     let _ = writeln!(s, "  mass              {}", num(p.mass).trim_start());
-    let _ = writeln!(s, "  surface area      {}", num(d.surface_area).trim_start());
+    let _ = writeln!(
+        s,
+        "  surface area      {}",
+        num(d.surface_area).trim_start()
+    );
     let c = p.center_of_mass;
-    let _ = writeln!(s, "  centre of mass    {} {} {}", num(c.x), num(c.y), num(c.z));
+    let _ = writeln!(
+        s,
+        "  centre of mass    {} {} {}",
+        num(c.x),
+        num(c.y),
+        num(c.z)
+    );
     let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; mesh axes.");
     let _ = writeln!(s, "  inertia about the centre of mass");
     matrix_lines(&mut s, &p.inertia_com);
     let _ = writeln!(s, "  inertia about the mesh origin");
     matrix_lines(&mut s, &p.inertia_origin());
     let m = p.principal.moments;
-    let _ = writeln!(s, "  principal moments (ascending) {} {} {}", num(m.x), num(m.y), num(m.z));
+    let _ = writeln!(
+        s,
+        "  principal moments (ascending) {} {} {}",
+        num(m.x),
+        num(m.y),
+        num(m.z)
+    );
     let _ = writeln!(s, "    {}", p.principal.degeneracy.describe());
-    let _ = writeln!(s, "  principal axes (row i = axis of moment i, right-handed)");
+    let _ = writeln!(
+        s,
+        "  principal axes (row i = axis of moment i, right-handed)"
+    );
     matrix_lines(&mut s, &axes_rows(p));
     let (lo, hi) = d.bounding_box;
-    let _ = writeln!(s, "\nBounding box  min {} {} {}", num(lo.x), num(lo.y), num(lo.z));
-    let _ = writeln!(s, "              max {} {} {}", num(hi.x), num(hi.y), num(hi.z));
-    let _ = writeln!(s, "\nApproximations with the same mass, compared with the {} result:", a.method.name());
-    comparison_line(&mut s, "bounding-box cuboid (about the box centre)", &a.bounding_box.compare_to(p), &a.bounding_box);
-    comparison_line(&mut s, "vertex point masses (about their centre)", &a.point_masses.compare_to(p), &a.point_masses);
+    let _ = writeln!(
+        s,
+        "\nBounding box  min {} {} {}",
+        num(lo.x),
+        num(lo.y),
+        num(lo.z)
+    );
+    let _ = writeln!(
+        s,
+        "              max {} {} {}",
+        num(hi.x),
+        num(hi.y),
+        num(hi.z)
+    );
+    let _ = writeln!(
+        s,
+        "\nApproximations with the same mass, compared with the {} result:",
+        a.method.name()
+    );
+    comparison_line(
+        &mut s,
+        "bounding-box cuboid (about the box centre)",
+        &a.bounding_box.compare_to(p),
+        &a.bounding_box,
+    );
+    comparison_line(
+        &mut s,
+        "vertex point masses (about their centre)",
+        &a.point_masses.compare_to(p),
+        &a.point_masses,
+    );
     let yes = |b: bool| if b { "yes" } else { "no" };
     let _ = writeln!(
         s,

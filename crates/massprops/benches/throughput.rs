@@ -41,15 +41,19 @@ fn throughput(c: &mut Criterion) {
                 b.iter(|| volume_integrals(black_box(m), path))
             });
         }
-        group.bench_with_input(BenchmarkId::new("parry3d_f64", &label), &triangles, |b, t| {
-            b.iter(|| {
-                parry3d_f64::mass_properties::MassProperties::from_trimesh(
-                    1.0,
-                    black_box(&parry_vertices),
-                    black_box(t),
-                )
-            })
-        });
+        group.bench_with_input(
+            BenchmarkId::new("parry3d_f64", &label),
+            &triangles,
+            |b, t| {
+                b.iter(|| {
+                    parry3d_f64::mass_properties::MassProperties::from_trimesh(
+                        1.0,
+                        black_box(&parry_vertices),
+                        black_box(t),
+                    )
+                })
+            },
+        );
     }
     group.finish();
 }

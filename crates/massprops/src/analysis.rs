@@ -170,5 +170,8 @@ fn warnings(d: &MeshDiagnostics, method: Method, flipped: bool) -> Vec<String> {
 }
 
 fn join(v: &[usize]) -> String {
-    v.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
+    v.iter()
+        .map(usize::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
 }

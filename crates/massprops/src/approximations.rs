@@ -18,7 +18,17 @@ pub fn point_mass_properties(mesh: &PolyMesh, mass: f64) -> Result<MassPropertie
     let mut count = 0usize;
     for p in mesh.used_positions() {
         let d = p - reference;
-        sums.add(&[d.x, d.y, d.z, d.x * d.x, d.y * d.y, d.z * d.z, d.x * d.y, d.y * d.z, d.z * d.x]);
+        sums.add(&[
+            d.x,
+            d.y,
+            d.z,
+            d.x * d.x,
+            d.y * d.y,
+            d.z * d.z,
+            d.x * d.y,
+            d.y * d.z,
+            d.z * d.x,
+        ]);
         count += 1;
     }
     let s = sums.total();
@@ -61,9 +71,16 @@ mod tests {
         assert_eq!(p.center_of_mass, Point3::new(0.5, 1.0, 1.5));
         // Σ m_i x_i² about the centre: 1·(0.25·3 + 2.25) = 3, y: 1·(1·3 + 9) = 12, z: 27.
         let expected = Matrix3::new(39.0, 2.0, 3.0, 2.0, 30.0, 6.0, 3.0, 6.0, 15.0);
-        assert!((p.inertia_com - expected).amax() < 1e-13, "{}", p.inertia_com);
+        assert!(
+            (p.inertia_com - expected).amax() < 1e-13,
+            "{}",
+            p.inertia_com
+        );
         let b = bounding_box_properties(&tet, 12.0).expect("valid");
         assert_eq!(b.center_of_mass, Point3::new(1.0, 2.0, 3.0));
-        assert_eq!(b.inertia_com, Matrix3::from_diagonal(&Vector3::new(52.0, 40.0, 20.0)));
+        assert_eq!(
+            b.inertia_com,
+            Matrix3::from_diagonal(&Vector3::new(52.0, 40.0, 20.0))
+        );
     }
 }

@@ -110,7 +110,11 @@ pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
 /// Area, degeneracy and non-planarity of face `f`.
 fn face_shape(mesh: &PolyMesh, f: usize, corners: &mut Vec<Vector3<f64>>) -> (f64, bool, bool) {
     corners.clear();
-    let first = mesh.face_points(f).next().map(|p| p.coords).unwrap_or_default();
+    let first = mesh
+        .face_points(f)
+        .next()
+        .map(|p| p.coords)
+        .unwrap_or_default();
     // Corners relative to the first one, so a face far from the origin keeps its digits.
     corners.extend(mesh.face_points(f).map(|p| p.coords - first));
     let newell = newell_normal(corners);
@@ -121,7 +125,9 @@ fn face_shape(mesh: &PolyMesh, f: usize, corners: &mut Vec<Vector3<f64>>) -> (f6
         longest2 = longest2.max((c - prev).norm_squared());
         prev = c;
     }
-    let degenerate = !(twice_area > 2.0 * DEGENERATE_AREA_RATIO * longest2);
+    // Not greater (including NaN from overflowing coordinates) counts as degenerate.
+    let limit = 2.0 * DEGENERATE_AREA_RATIO * longest2;
+    let degenerate = twice_area.partial_cmp(&limit) != Some(std::cmp::Ordering::Greater);
     let nonplanar = corners.len() > 3 && !degenerate && {
         let n = newell / twice_area;
         let mean = corners.iter().sum::<Vector3<f64>>() / corners.len() as f64;
@@ -142,7 +148,8 @@ struct EdgeReport {
 fn edge_report(mesh: &PolyMesh) -> EdgeReport {
     // Key: low vertex in the high 32 bits, high vertex next; the lowest bit of a separate byte
     // records whether the face runs low → high.
-    let mut records: Vec<(u64, bool)> = Vec::with_capacity(mesh.triangle_count() + 2 * mesh.face_count());
+    let mut records: Vec<(u64, bool)> =
+        Vec::with_capacity(mesh.triangle_count() + 2 * mesh.face_count());
     for face in mesh.faces() {
         let mut prev = face[face.len() - 1];
         for &cur in face {

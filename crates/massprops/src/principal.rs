@@ -189,7 +189,10 @@ mod tests {
             let p = principal_inertia(&(t * s));
             check_decomposition(&(t * s), &p);
             assert!(((p.moments / s) - base.moments).amax() < 1e-14);
-            assert!((p.rotation.matrix() - base.rotation.matrix()).amax() < 1e-13, "scale {s}");
+            assert!(
+                (p.rotation.matrix() - base.rotation.matrix()).amax() < 1e-13,
+                "scale {s}"
+            );
         }
         let exact = principal_inertia(&(t * 2f64.powi(-70)));
         assert_eq!(exact.rotation, base.rotation);

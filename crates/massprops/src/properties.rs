@@ -6,8 +6,8 @@
 
 use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
 
-use crate::principal::{Degeneracy, PrincipalInertia, principal_inertia};
 use crate::MeshError;
+use crate::principal::{Degeneracy, PrincipalInertia, principal_inertia};
 
 /// Mass, centre of mass and inertia tensor (tensor convention, about the centre of mass, in the
 /// mesh's axes), with the principal moments and axes derived from it.
@@ -150,7 +150,10 @@ mod tests {
     fn parallel_axis_of_a_point_mass() {
         // A point mass m at (a, b, 0) seen from the origin: Ixx = m b², Iyy = m a², Ixy = −m a b.
         let t = parallel_axis_term(3.0, &Vector3::new(2.0, 5.0, 0.0));
-        assert_eq!(t, Matrix3::new(75.0, -30.0, 0.0, -30.0, 12.0, 0.0, 0.0, 0.0, 87.0));
+        assert_eq!(
+            t,
+            Matrix3::new(75.0, -30.0, 0.0, -30.0, 12.0, 0.0, 0.0, 0.0, 87.0)
+        );
     }
 
     #[test]

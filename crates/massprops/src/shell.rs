@@ -54,7 +54,7 @@ pub fn shell_properties(
     }
     let v = sums.total();
     let area = v[0];
-    if !(area > 0.0) {
+    if area.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err(MeshError::ZeroArea);
     }
     let mass = sigma * area;

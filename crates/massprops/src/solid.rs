@@ -48,7 +48,9 @@ pub fn solid_from_integrals(
     let (lo, hi) = mesh.bounding_box();
     let diagonal = (hi - lo).norm();
     let signed = integrals.volume();
-    if !(signed.abs() > ZERO_VOLUME_RATIO * diagonal.powi(3)) {
+    let limit = ZERO_VOLUME_RATIO * diagonal.powi(3);
+    // NaN (from overflow) fails this test too.
+    if signed.abs().partial_cmp(&limit) != Some(std::cmp::Ordering::Greater) {
         return Err(MeshError::ZeroVolume {
             volume: signed,
             diagonal,

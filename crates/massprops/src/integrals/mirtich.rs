@@ -34,18 +34,16 @@ fn block_sum<const FMA: bool>(
     faces: &[&[u32]],
     reference: Point3<f64>,
 ) -> [f64; 10] {
-    let corner = |i: &u32| positions[*i as usize] - reference;
+    let corner = |i: u32| positions[i as usize] - reference;
     let mut block = [0.0; 10];
     let mut corners = Vec::with_capacity(16);
     for face in faces {
         match *face {
-            [a, b, c] => face_contribution::<FMA>(&[a, b, c].map(|i| corner(&i)), &mut block),
-            [a, b, c, d] => {
-                face_contribution::<FMA>(&[a, b, c, d].map(|i| corner(&i)), &mut block)
-            }
+            [a, b, c] => face_contribution::<FMA>(&[a, b, c].map(|&i| corner(i)), &mut block),
+            [a, b, c, d] => face_contribution::<FMA>(&[a, b, c, d].map(|&i| corner(i)), &mut block),
             _ => {
                 corners.clear();
-                corners.extend(face.iter().map(corner));
+                corners.extend(face.iter().map(|&i| corner(i)));
                 face_contribution::<FMA>(&corners, &mut block);
             }
         }

@@ -118,7 +118,9 @@ impl<const N: usize> CompensatedSum<N> {
 }
 
 /// Sums per-block partial sums in their given order with compensation.
-pub(crate) fn compensated_total<const N: usize>(blocks: impl IntoIterator<Item = [f64; N]>) -> [f64; N] {
+pub(crate) fn compensated_total<const N: usize>(
+    blocks: impl IntoIterator<Item = [f64; N]>,
+) -> [f64; N] {
     let mut acc = CompensatedSum::<N>::new();
     for b in blocks {
         acc.add(&b);

@@ -25,7 +25,11 @@ const SCALE: [f64; 10] = [
 ];
 
 /// The ten volume integrals, sequentially.
-pub fn integrate(positions: &[Point3<f64>], triangles: &[[u32; 3]], reference: Point3<f64>) -> [f64; 10] {
+pub fn integrate(
+    positions: &[Point3<f64>],
+    triangles: &[[u32; 3]],
+    reference: Point3<f64>,
+) -> [f64; 10] {
     let blocks = triangles
         .chunks(BLOCK)
         .map(|chunk| block_sum(positions, chunk, reference));
@@ -137,6 +141,10 @@ fn block_sum(positions: &[Point3<f64>], chunk: &[[u32; 3]], reference: Point3<f6
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn block_sum_avx2(positions: &[Point3<f64>], chunk: &[[u32; 3]], reference: Point3<f64>) -> [f64; 10] {
+fn block_sum_avx2(
+    positions: &[Point3<f64>],
+    chunk: &[[u32; 3]],
+    reference: Point3<f64>,
+) -> [f64; 10] {
     block_kernel::<true>(positions, chunk, reference)
 }
