@@ -73,7 +73,7 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
         MassSpec::Mass(m) => positive("mass", m)?,
     };
     let diagnostics = diagnose(mesh);
-    let solid = solid_properties(mesh, IntegrationPath::Auto);
+    let solid = solid_properties(mesh, IntegrationPath::Auto).map_err(|e| explain(e, &diagnostics));
     let volume = solid.as_ref().ok().map(|s| s.volume);
     let (properties, density, flipped) = match method {
         Method::Shell => {
@@ -112,6 +112,28 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
         diagnostics,
         warnings,
     })
+}
+
+/// Replaces a zero-volume error's generic cause by what the diagnostics found: a mesh with
+/// inconsistently wound faces can cancel its own volume exactly.
+fn explain(e: MeshError, d: &MeshDiagnostics) -> MeshError {
+    match e {
+        MeshError::ZeroVolume {
+            volume, diagonal, ..
+        } if d.inconsistent_edges > 0 || d.open_edges > 0 || d.nonmanifold_edges > 0 => {
+            MeshError::ZeroVolume {
+                volume,
+                diagonal,
+                cause: format!(
+                    "the mesh has {} inconsistently wound edge(s), {} open edge(s) and {} \
+                     non-manifold edge(s): fix the winding and close the holes (or use the shell \
+                     method for sheets)",
+                    d.inconsistent_edges, d.open_edges, d.nonmanifold_edges
+                ),
+            }
+        }
+        other => other,
+    }
 }
 
 fn warnings(d: &MeshDiagnostics, method: Method, flipped: bool) -> Vec<String> {

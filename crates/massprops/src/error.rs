@@ -47,13 +47,15 @@ pub enum MeshError {
     /// The surface encloses (numerically) no volume, so the volume method has nothing to integrate.
     #[error(
         "the mesh encloses zero volume (signed volume {volume:e} for a bounding box of diagonal {diagonal:e}); \
-         it is flat, open or self-cancelling; use the shell method for sheets"
+         {cause}"
     )]
     ZeroVolume {
         /// The signed volume found.
         volume: f64,
         /// Bounding-box diagonal, for scale.
         diagonal: f64,
+        /// The likely cause, from the mesh diagnostics where they were computed.
+        cause: String,
     },
     /// A parameter (density, mass, scale, point) is not a positive finite number.
     #[error("invalid {name}: {value} (it must be a finite number greater than zero)")]

@@ -54,6 +54,7 @@ pub fn solid_from_integrals(
         return Err(MeshError::ZeroVolume {
             volume: signed,
             diagonal,
+            cause: "it is flat, open or self-cancelling; use the shell method for sheets".into(),
         });
     }
     let flipped = signed < 0.0;

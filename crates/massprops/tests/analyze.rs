@@ -193,3 +193,36 @@ fn warnings_say_what_is_wrong() {
         r.warnings[0]
     );
 }
+
+#[test]
+fn zero_volume_from_a_flipped_face_names_the_winding() {
+    // A unit cube with its +x face wound inwards: ∫x·nₓ cancels exactly, so the volume is 0.
+    let p = |x: f64, y: f64, z: f64| nalgebra::Point3::new(x, y, z);
+    let pts = vec![
+        p(0., 0., 0.),
+        p(1., 0., 0.),
+        p(1., 1., 0.),
+        p(0., 1., 0.),
+        p(0., 0., 1.),
+        p(1., 0., 1.),
+        p(1., 1., 1.),
+        p(0., 1., 1.),
+    ];
+    let faces = [
+        [0, 3, 2, 1],
+        [4, 5, 6, 7],
+        [0, 1, 5, 4],
+        [3, 7, 6, 2],
+        [0, 4, 7, 3],
+        [1, 5, 6, 2], // outward would be [1, 2, 6, 5]
+    ];
+    let mesh = massprops::PolyMesh::new(pts, &faces).expect("valid");
+    let e = massprops::analyze(
+        &mesh,
+        massprops::Method::Volume,
+        massprops::MassSpec::Density(1.0),
+    )
+    .expect_err("zero volume");
+    let text = e.to_string();
+    assert!(text.contains("4 inconsistently wound edge(s)"), "{text}");
+}
