@@ -1,9 +1,12 @@
 //! `inertia-lab`: exact mass properties and rigid-body dynamics of any mesh.
 //!
 //! Command-line entry points of the Inertia Lab binary: `props` (mass properties of a mesh,
-//! `massprops`) and `simulate` (headless rigid-body simulation, `rbcore`).
+//! `massprops`), `simulate` (headless rigid-body simulation, `rbcore`) and `export` (mass
+//! properties for engines and robot formats).
 
 mod error;
+mod export;
+mod export_cmd;
 mod props;
 mod report;
 mod simulate;
@@ -28,6 +31,10 @@ enum Command {
     /// Headless rigid-body simulation of a free body (CSV on stdout or --csv FILE); --compare
     /// prints the integrator accuracy-for-cost table.
     Simulate(simulate::SimulateArgs),
+    /// Mass properties for an engine or robot format (json, urdf, mjcf, sdf, unity, godot,
+    /// unreal, rapier, gltf), with the mesh's units and up axis, and each target's frame,
+    /// handedness, units and sign conventions handled.
+    Export(export_cmd::ExportArgs),
 }
 
 fn main() -> ExitCode {
@@ -41,6 +48,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Props(args) => props::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Export(args) => export_cmd::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
