@@ -1,54 +1,40 @@
 //! Mirtich's polygon method (B. Mirtich, "Fast and Accurate Computation of Polyhedral Mass
 //! Properties", J. Graphics Tools 1(2), 1996).
 //!
-//! Per face: the Newell normal n̂ and plane offset w (n̂·x + w = 0); project onto the coordinate
+//! Per face: the Newell normal n and plane offset w (n·x + w = 0); project onto the coordinate
 //! plane (α, β) orthogonal to the normal's largest component γ; Green's theorem turns the
 //! projection integrals (paper eq. 25–34, "π" integrals) into sums over edges; the face integrals
 //! follow from the plane equation (eq. 18–24); the divergence theorem (eq. 6–17) sums them into the
 //! volume integrals. Faces of zero area have a zero Newell normal and contribute exactly zero.
+//!
+//! Speed: the formulas are written once, generic over [`Real`], and run either on one face
+//! (`f64`) or on four faces of the same corner count side by side ([`Lanes`], one SIMD lane
+//! each). Each face's corners are permuted into (α, β) order when they are loaded, so every lane
+//! does the same arithmetic whatever its projection plane.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use nalgebra::{Point3, Vector3};
 
-use super::{BLOCK, compensated_total, madd};
+use super::{BLOCK, compensated_total};
 use crate::PolyMesh;
 
 /// The ten volume integrals of `mesh` with coordinates measured from `reference`.
 pub fn integrate(mesh: &PolyMesh, reference: Point3<f64>) -> [f64; 10] {
-    let faces: Vec<&[u32]> = mesh.faces().collect();
-    let blocks = faces
-        .chunks(BLOCK)
-        .map(|chunk| block_sum::<false>(mesh.positions(), chunk, reference));
+    let mut faces = mesh.faces().peekable();
+    let blocks = std::iter::from_fn(|| {
+        faces.peek()?;
+        Some(block_sum(
+            mesh.positions(),
+            faces.by_ref().take(BLOCK),
+            reference,
+        ))
+    });
     let mut total = compensated_total(blocks);
     for (t, scale) in total.iter_mut().zip(SCALE) {
         *t *= scale;
     }
     total
-}
-
-/// Sum of the (unscaled) contributions of a block of faces. Triangles and quads get their own
-/// copies of the face code, with loops of known length the compiler unrolls.
-// Measured: fused multiply-add makes this kernel slower (longer dependency chains), so it
-// is instantiated without it; the parameter stays for the shared face code.
-fn block_sum<const FMA: bool>(
-    positions: &[Point3<f64>],
-    faces: &[&[u32]],
-    reference: Point3<f64>,
-) -> [f64; 10] {
-    let corner = |i: u32| positions[i as usize] - reference;
-    let mut block = [0.0; 10];
-    let mut corners = Vec::with_capacity(16);
-    for face in faces {
-        match *face {
-            [a, b, c] => face_contribution::<FMA>(&[a, b, c].map(|&i| corner(i)), &mut block),
-            [a, b, c, d] => face_contribution::<FMA>(&[a, b, c, d].map(|&i| corner(i)), &mut block),
-            _ => {
-                corners.clear();
-                corners.extend(face.iter().map(|&i| corner(i)));
-                face_contribution::<FMA>(&corners, &mut block);
-            }
-        }
-    }
-    block
 }
 
 /// The divergence-theorem factors of eq. (13)–(17): T1/2, T2/3, TP/2.
@@ -65,6 +51,108 @@ const SCALE: [f64; 10] = [
     0.5,
 ];
 
+/// Faces integrated side by side.
+const LANES: usize = 4;
+
+/// The block kernel for this CPU: AVX2 where available (twice the vector width, and twice the
+/// registers' capacity, which the four-lane formulas need).
+fn block_sum<'a>(
+    positions: &[Point3<f64>],
+    faces: impl Iterator<Item = &'a [u32]>,
+    reference: Point3<f64>,
+) -> [f64; 10] {
+    #[cfg(target_arch = "x86_64")]
+    if super::has_avx2_fma() {
+        // SAFETY: the CPU supports AVX2 (checked at run time just above), which is all
+        // `block_sum_avx2` requires beyond safe Rust.
+        #[allow(unsafe_code)]
+        return unsafe { block_sum_avx2(positions, faces, reference) };
+    }
+    block_kernel(positions, faces, reference)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn block_sum_avx2<'a>(
+    positions: &[Point3<f64>],
+    faces: impl Iterator<Item = &'a [u32]>,
+    reference: Point3<f64>,
+) -> [f64; 10] {
+    block_kernel(positions, faces, reference)
+}
+
+/// Sum of the (unscaled) contributions of a block of faces. Triangles and quads are queued and
+/// integrated four at a time; other polygons, and what is left in the queues at the end of the
+/// block, one at a time. The order is fixed by the face order, so results are reproducible.
+#[inline(always)]
+fn block_kernel<'a>(
+    positions: &[Point3<f64>],
+    faces: impl Iterator<Item = &'a [u32]>,
+    reference: Point3<f64>,
+) -> [f64; 10] {
+    let corner = |i: u32| positions[i as usize] - reference;
+    let mut acc = [0.0; 10];
+    let mut triangles: Queue<3> = Queue::default();
+    let mut quads: Queue<4> = Queue::default();
+    let mut corners = Vec::with_capacity(16);
+    for face in faces {
+        match *face {
+            [a, b, c] => triangles.push([a, b, c], positions, reference, &mut acc),
+            [a, b, c, d] => quads.push([a, b, c, d], positions, reference, &mut acc),
+            _ => {
+                corners.clear();
+                corners.extend(face.iter().map(|&i| corner(i)));
+                add_face(&corners, &mut acc);
+            }
+        }
+    }
+    for f in triangles.pending() {
+        add_face(&f.map(corner), &mut acc);
+    }
+    for f in quads.pending() {
+        add_face(&f.map(corner), &mut acc);
+    }
+    acc
+}
+
+/// Up to [`LANES`] faces of `N` corners (as vertex indices) waiting to be integrated together.
+struct Queue<const N: usize> {
+    faces: [[u32; N]; LANES],
+    len: usize,
+}
+
+impl<const N: usize> Default for Queue<N> {
+    fn default() -> Self {
+        Self {
+            faces: [[0; N]; LANES],
+            len: 0,
+        }
+    }
+}
+
+impl<const N: usize> Queue<N> {
+    /// Queues a face; integrates the queue when it is full.
+    #[inline(always)]
+    fn push(
+        &mut self,
+        face: [u32; N],
+        positions: &[Point3<f64>],
+        reference: Point3<f64>,
+        acc: &mut [f64; 10],
+    ) {
+        self.faces[self.len] = face;
+        self.len += 1;
+        if self.len == LANES {
+            add_faces_side_by_side(&self.faces, positions, reference, acc);
+            self.len = 0;
+        }
+    }
+
+    fn pending(&self) -> &[[u32; N]] {
+        &self.faces[..self.len]
+    }
+}
+
 /// Newell's normal of a polygon: twice its vector area, exact for planar polygons of any shape.
 #[inline(always)]
 pub(crate) fn newell_normal(corners: &[Vector3<f64>]) -> Vector3<f64> {
@@ -79,31 +167,246 @@ pub(crate) fn newell_normal(corners: &[Vector3<f64>]) -> Vector3<f64> {
     n
 }
 
-/// Projection integrals over the face's projection onto the (α, β) plane, by Green's theorem.
-struct Projection {
-    p1: f64,
-    pa: f64,
-    pb: f64,
-    paa: f64,
-    pab: f64,
-    pbb: f64,
-    paaa: f64,
-    paab: f64,
-    pabb: f64,
-    pbbb: f64,
+/// A face's plane, ready for projection: γ = the normal's largest component, (α, β) the next two
+/// cyclically, the normal scaled to a convenient size, and the plane offset w.
+struct Plane {
+    gamma: usize,
+    n: Vector3<f64>,
+    w: f64,
 }
 
+/// The plane of a face, or `None` for a face of zero area (which contributes nothing).
 #[inline(always)]
-fn projection_integrals<const FMA: bool, const A: usize, const B: usize>(
-    corners: &[Vector3<f64>],
-) -> Projection {
-    let (a, b) = (A, B);
-    let (mut p1, mut pa, mut pb, mut paa, mut pab, mut pbb) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    let (mut paaa, mut paab, mut pabb, mut pbbb) = (0.0, 0.0, 0.0, 0.0);
-    let mut prev = corners[corners.len() - 1];
-    for &cur in corners {
-        let (a0, b0, a1, b1) = (prev[a], prev[b], cur[a], cur[b]);
-        prev = cur;
+fn plane(corners: &[Vector3<f64>]) -> Option<Plane> {
+    let n = newell_normal(corners);
+    let gamma = n.iamax();
+    if n[gamma] == 0.0 || !n[gamma].is_finite() {
+        return None;
+    }
+    // Every face term is homogeneous of degree 0 in (n, w), so any multiple of the Newell normal
+    // serves as well as the unit one, without a square root or a division. But not of any size:
+    // |n| ~ L² for a face of size L, and the cubic terms (n³·L⁵ ~ L¹¹) would underflow below
+    // L ~ 1e-27 (overflow above 1e27). Scaling n by the power of two that brings |n_γ| into
+    // [1, 2) is exact and keeps the unit normal's range.
+    let exponent = (n[gamma].abs().to_bits() >> 52) as i64; // biased: 0 (subnormal) ..= 2046
+    let n = n * f64::from_bits(((2046 - exponent) as u64) << 52);
+    // The plane through the corners' mean keeps non-planar polygons' error symmetric.
+    let mean = corners.iter().sum::<Vector3<f64>>() * (1.0 / corners.len() as f64);
+    Some(Plane {
+        gamma,
+        n,
+        w: -n.dot(&mean),
+    })
+}
+
+/// Adds one face's contribution (before the factors of [`SCALE`]) to `acc`.
+#[inline(always)]
+fn add_face(corners: &[Vector3<f64>], acc: &mut [f64; 10]) {
+    let Some(plane) = plane(corners) else {
+        return;
+    };
+    let (a, b) = ((plane.gamma + 1) % 3, (plane.gamma + 2) % 3);
+    let mut alpha = [0.0; 16];
+    let mut beta = [0.0; 16];
+    let mut alpha_long = Vec::new();
+    let mut beta_long = Vec::new();
+    let (alpha, beta) = if corners.len() <= 16 {
+        for (k, p) in corners.iter().enumerate() {
+            alpha[k] = p[a];
+            beta[k] = p[b];
+        }
+        (&alpha[..corners.len()], &beta[..corners.len()])
+    } else {
+        alpha_long.extend(corners.iter().map(|p| p[a]));
+        beta_long.extend(corners.iter().map(|p| p[b]));
+        (&alpha_long[..], &beta_long[..])
+    };
+    let n = plane.n;
+    let terms = face_terms(
+        &projection(alpha, beta),
+        n[a],
+        n[b],
+        n[plane.gamma],
+        plane.w,
+    );
+    scatter(&terms, plane.gamma, acc);
+}
+
+/// Adds [`LANES`] faces of `N` corners, integrated side by side: the same steps as [`plane`]
+/// and [`add_face`], with the per-face choice of projection plane made by lane-wise selects.
+#[inline(always)]
+fn add_faces_side_by_side<const N: usize>(
+    faces: &[[u32; N]; LANES],
+    positions: &[Point3<f64>],
+    reference: Point3<f64>,
+    acc: &mut [f64; 10],
+) {
+    let coordinate = |k: usize, axis: usize| {
+        Lanes(std::array::from_fn(|l| {
+            positions[faces[l][k] as usize][axis] - reference[axis]
+        }))
+    };
+    let x: [Lanes; N] = std::array::from_fn(|k| coordinate(k, 0));
+    let y: [Lanes; N] = std::array::from_fn(|k| coordinate(k, 1));
+    let z: [Lanes; N] = std::array::from_fn(|k| coordinate(k, 2));
+    let zero = Lanes::constant(0.0);
+    let (mut nx, mut ny, mut nz) = (zero, zero, zero);
+    let (mut sx, mut sy, mut sz) = (zero, zero, zero);
+    let mut prev = N - 1;
+    for k in 0..N {
+        nx = nx + (y[prev] - y[k]) * (z[prev] + z[k]);
+        ny = ny + (z[prev] - z[k]) * (x[prev] + x[k]);
+        nz = nz + (x[prev] - x[k]) * (y[prev] + y[k]);
+        (sx, sy, sz) = (sx + x[k], sy + y[k], sz + z[k]);
+        prev = k;
+    }
+    // γ per lane: the largest normal component (the first on ties, as `Vector3::iamax`).
+    let gamma: [usize; LANES] = std::array::from_fn(|l| {
+        let (ax, ay, az) = (nx.0[l].abs(), ny.0[l].abs(), nz.0[l].abs());
+        if ax >= ay && ax >= az {
+            0
+        } else if ay >= az {
+            1
+        } else {
+            2
+        }
+    });
+    let pick = |l: usize, g: usize, v: [Lanes; 3]| v[(gamma[l] + g) % 3].0[l];
+    let n = [nx, ny, nz];
+    let nc = Lanes(std::array::from_fn(|l| pick(l, 0, n)));
+    // Zero-area faces are skipped at the end; give them a harmless n_γ meanwhile.
+    let valid: [bool; LANES] = std::array::from_fn(|l| nc.0[l] != 0.0 && nc.0[l].is_finite());
+    // The exact power-of-two rescaling of [`plane`], per lane.
+    let scale = Lanes(std::array::from_fn(|l| {
+        let exponent = (nc.0[l].abs().to_bits() >> 52) as i64;
+        if valid[l] {
+            f64::from_bits(((2046 - exponent) as u64) << 52)
+        } else {
+            0.0
+        }
+    }));
+    let (nx, ny, nz) = (nx * scale, ny * scale, nz * scale);
+    let n = [nx, ny, nz];
+    let nc = Lanes(std::array::from_fn(|l| {
+        if valid[l] { pick(l, 0, n) } else { 1.0 }
+    }));
+    let na = Lanes(std::array::from_fn(|l| pick(l, 1, n)));
+    let nb = Lanes(std::array::from_fn(|l| pick(l, 2, n)));
+    let w = -(nx * sx + ny * sy + nz * sz) * Lanes::constant(1.0 / N as f64);
+    let alpha: [Lanes; N] =
+        std::array::from_fn(|k| Lanes(std::array::from_fn(|l| pick(l, 1, [x[k], y[k], z[k]]))));
+    let beta: [Lanes; N] =
+        std::array::from_fn(|k| Lanes(std::array::from_fn(|l| pick(l, 2, [x[k], y[k], z[k]]))));
+    let terms = face_terms(&projection(&alpha, &beta), na, nb, nc, w);
+    for l in 0..LANES {
+        if valid[l] {
+            scatter(&terms.map(|t| t.0[l]), gamma[l], acc);
+        }
+    }
+}
+
+/// Adds one face's twelve terms to the ten integrals, un-permuting (α, β, γ) back to (x, y, z).
+#[inline(always)]
+fn scatter(t: &[f64; 12], gamma: usize, acc: &mut [f64; 10]) {
+    let (a, b, c) = ((gamma + 1) % 3, (gamma + 2) % 3, gamma);
+    // ∫1 = ∮ x n_x dA, with whichever of the α, β, γ terms is the x one.
+    acc[0] += if a == 0 {
+        t[0]
+    } else if b == 0 {
+        t[1]
+    } else {
+        t[2]
+    };
+    acc[1 + a] += t[3];
+    acc[1 + b] += t[4];
+    acc[1 + c] += t[5];
+    acc[4 + a] += t[6];
+    acc[4 + b] += t[7];
+    acc[4 + c] += t[8];
+    // Products: slot 7 + a holds ∫αβ because (a, b) = (x, y), (y, z) or (z, x).
+    acc[7 + a] += t[9];
+    acc[7 + b] += t[10];
+    acc[7 + c] += t[11];
+}
+
+/// The arithmetic the formulas need: `f64`, or [`Lanes`] of them.
+trait Real:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    fn constant(v: f64) -> Self;
+}
+
+impl Real for f64 {
+    #[inline(always)]
+    fn constant(v: f64) -> Self {
+        v
+    }
+}
+
+/// [`LANES`] values operated on element by element (the compiler maps each to one SIMD op).
+#[derive(Clone, Copy)]
+struct Lanes([f64; LANES]);
+
+macro_rules! lanewise {
+    ($trait:ident, $method:ident, $op:tt) => {
+        impl $trait for Lanes {
+            type Output = Lanes;
+            #[inline(always)]
+            fn $method(self, rhs: Lanes) -> Lanes {
+                Lanes(std::array::from_fn(|l| self.0[l] $op rhs.0[l]))
+            }
+        }
+    };
+}
+lanewise!(Add, add, +);
+lanewise!(Sub, sub, -);
+lanewise!(Mul, mul, *);
+lanewise!(Div, div, /);
+
+impl Neg for Lanes {
+    type Output = Lanes;
+    #[inline(always)]
+    fn neg(self) -> Lanes {
+        Lanes(self.0.map(|v| -v))
+    }
+}
+
+impl Real for Lanes {
+    #[inline(always)]
+    fn constant(v: f64) -> Self {
+        Lanes([v; LANES])
+    }
+}
+
+/// Projection integrals over the face's projection onto the (α, β) plane (paper eq. 25–34).
+struct Projection<T> {
+    p1: T,
+    pa: T,
+    pb: T,
+    paa: T,
+    pab: T,
+    pbb: T,
+    paaa: T,
+    paab: T,
+    pabb: T,
+    pbbb: T,
+}
+
+/// Green's theorem over the polygon's edges (α[k], β[k]) → (α[k+1], β[k+1]).
+#[inline(always)]
+fn projection<T: Real>(alpha: &[T], beta: &[T]) -> Projection<T> {
+    let k = T::constant;
+    let zero = k(0.0);
+    let (mut p1, mut pa, mut pb, mut paa, mut pab, mut pbb) = (zero, zero, zero, zero, zero, zero);
+    let (mut paaa, mut paab, mut pabb, mut pbbb) = (zero, zero, zero, zero);
+    let last = alpha.len() - 1;
+    let (mut a0, mut b0) = (alpha[last], beta[last]);
+    for (&a1, &b1) in alpha.iter().zip(beta) {
         let (da, db) = (a1 - a0, b1 - b0);
         let (a0_2, b0_2, a1_2, b1_2) = (a0 * a0, b0 * b0, a1 * a1, b1 * b1);
         let (a0_3, b0_3, a1_3, b1_3) = (a0_2 * a0, b0_2 * b0, a1_2 * a1, b1_2 * b1);
@@ -114,117 +417,81 @@ fn projection_integrals<const FMA: bool, const A: usize, const B: usize>(
         let cb = b1 * (b1 + b0) + b0_2;
         let cbb = b1 * cb + b0_3;
         let cbbb = b1 * cbb + b0_3 * b0;
-        let cab = 3.0 * a1_2 + 2.0 * a1 * a0 + a0_2;
-        let kab = a1_2 + 2.0 * a1 * a0 + 3.0 * a0_2;
-        let caab = a0 * cab + 4.0 * a1_3;
-        let kaab = a1 * kab + 4.0 * a0_3;
-        let cabb = 4.0 * b1_3 + 3.0 * b1_2 * b0 + 2.0 * b1 * b0_2 + b0_3;
-        let kabb = b1_3 + 2.0 * b1_2 * b0 + 3.0 * b1 * b0_2 + 4.0 * b0_3;
-        p1 = madd::<FMA>(db, c1, p1);
-        pa = madd::<FMA>(db, ca, pa);
-        paa = madd::<FMA>(db, caa, paa);
-        paaa = madd::<FMA>(db, caaa, paaa);
-        pb = madd::<FMA>(da, cb, pb);
-        pbb = madd::<FMA>(da, cbb, pbb);
-        pbbb = madd::<FMA>(da, cbbb, pbbb);
-        pab = madd::<FMA>(db, madd::<FMA>(b1, cab, b0 * kab), pab);
-        paab = madd::<FMA>(db, madd::<FMA>(b1, caab, b0 * kaab), paab);
-        pabb = madd::<FMA>(da, madd::<FMA>(a1, cabb, a0 * kabb), pabb);
+        let cab = k(3.0) * a1_2 + k(2.0) * a1 * a0 + a0_2;
+        let kab = a1_2 + k(2.0) * a1 * a0 + k(3.0) * a0_2;
+        let caab = a0 * cab + k(4.0) * a1_3;
+        let kaab = a1 * kab + k(4.0) * a0_3;
+        let cabb = k(4.0) * b1_3 + k(3.0) * b1_2 * b0 + k(2.0) * b1 * b0_2 + b0_3;
+        let kabb = b1_3 + k(2.0) * b1_2 * b0 + k(3.0) * b1 * b0_2 + k(4.0) * b0_3;
+        p1 = p1 + db * c1;
+        pa = pa + db * ca;
+        paa = paa + db * caa;
+        paaa = paaa + db * caaa;
+        pb = pb + da * cb;
+        pbb = pbb + da * cbb;
+        pbbb = pbbb + da * cbbb;
+        pab = pab + db * (b1 * cab + b0 * kab);
+        paab = paab + db * (b1 * caab + b0 * kaab);
+        pabb = pabb + da * (a1 * cabb + a0 * kabb);
+        (a0, b0) = (a1, b1);
     }
     // Multiplications by the constant reciprocals: divisions would dominate the cost.
     Projection {
-        p1: p1 * 0.5,
-        pa: pa * (1.0 / 6.0),
-        paa: paa * (1.0 / 12.0),
-        paaa: paaa * (1.0 / 20.0),
-        pb: pb * (-1.0 / 6.0),
-        pbb: pbb * (-1.0 / 12.0),
-        pbbb: pbbb * (-1.0 / 20.0),
-        pab: pab * (1.0 / 24.0),
-        paab: paab * (1.0 / 60.0),
-        pabb: pabb * (-1.0 / 60.0),
+        p1: p1 * k(0.5),
+        pa: pa * k(1.0 / 6.0),
+        paa: paa * k(1.0 / 12.0),
+        paaa: paaa * k(1.0 / 20.0),
+        pb: pb * k(-1.0 / 6.0),
+        pbb: pbb * k(-1.0 / 12.0),
+        pbbb: pbbb * k(-1.0 / 20.0),
+        pab: pab * k(1.0 / 24.0),
+        paab: paab * k(1.0 / 60.0),
+        pabb: pabb * k(-1.0 / 60.0),
     }
 }
 
-/// Adds one face's contribution (before the factors of [`SCALE`]) to `acc`.
+/// The face integrals (paper eq. 18–24) times the normal components, as twelve terms:
+/// [nα·Fα, nβ·Fβ, nγ·Fγ, nα·Fα², nβ·Fβ², nγ·Fγ², nα·Fα³, nβ·Fβ³, nγ·Fγ³, nα·Fα²β, nβ·Fβ²γ, nγ·Fγ²α].
 #[inline(always)]
-fn face_contribution<const FMA: bool>(corners: &[Vector3<f64>], acc: &mut [f64; 10]) {
-    // Every term below is homogeneous of degree 0 in (n, w), so the unnormalised Newell normal
-    // serves as well as the unit one and saves a square root and a division per face.
-    let n = newell_normal(corners);
-    let c = n.iamax();
-    if n[c] == 0.0 || !n[c].is_finite() {
-        return;
-    }
-    // But not of any size: |n| ~ L² for a face of size L, and the cubic terms (n³·L⁵ ~ L¹¹)
-    // underflow below L ~ 1e-27 (overflow above 1e27). Scaling n by the power of two that brings
-    // |n_γ| into [1, 2) is exact and keeps the unit normal's range.
-    let exponent = (n[c].abs().to_bits() >> 52) as i64; // biased: 0 (subnormal) ..= 2046
-    let n = n * f64::from_bits(((2046 - exponent) as u64) << 52);
-    // The plane through the corners' mean keeps non-planar polygons' error symmetric.
-    let mean = corners.iter().sum::<Vector3<f64>>() * (1.0 / corners.len() as f64);
-    let w = -n.dot(&mean);
-    match c {
-        0 => add_projected::<FMA, 0, 1, 2>(corners, &n, w, acc),
-        1 => add_projected::<FMA, 1, 2, 0>(corners, &n, w, acc),
-        _ => add_projected::<FMA, 2, 0, 1>(corners, &n, w, acc),
-    }
-}
-
-/// The face's contribution once γ = `C` (the normal's largest component) is known; the
-/// projection plane is (α, β) = (`A`, `B`), cyclic after `C`, so every index is a constant.
-#[inline(always)]
-fn add_projected<const FMA: bool, const C: usize, const A: usize, const B: usize>(
-    corners: &[Vector3<f64>],
-    n: &Vector3<f64>,
-    w: f64,
-    acc: &mut [f64; 10],
-) {
-    let (a, b, c) = (A, B, C);
-    let p = projection_integrals::<FMA, A, B>(corners);
-
-    let (na, nb, nc) = (n[a], n[b], n[c]);
-    let k1 = 1.0 / nc;
-    let (k2, k3, k4) = (k1 * k1, k1 * k1 * k1, k1 * k1 * k1 * k1);
+fn face_terms<T: Real>(p: &Projection<T>, na: T, nb: T, nc: T, w: T) -> [T; 12] {
+    let k = T::constant;
+    let k1 = k(1.0) / nc;
+    let (k2, k3) = (k1 * k1, k1 * k1 * k1);
+    let k4 = k2 * k2;
     let fa = k1 * p.pa;
     let fb = k1 * p.pb;
     let fc = -k2 * (na * p.pa + nb * p.pb + w * p.p1);
     let faa = k1 * p.paa;
     let fbb = k1 * p.pbb;
-    let quad = na * na * p.paa + 2.0 * na * nb * p.pab + nb * nb * p.pbb;
-    let fcc = k3 * (quad + w * (2.0 * (na * p.pa + nb * p.pb) + w * p.p1));
+    let quad = na * na * p.paa + k(2.0) * na * nb * p.pab + nb * nb * p.pbb;
+    let fcc = k3 * (quad + w * (k(2.0) * (na * p.pa + nb * p.pb) + w * p.p1));
     let faaa = k1 * p.paaa;
     let fbbb = k1 * p.pbbb;
     let cubic = na * na * na * p.paaa
-        + 3.0 * na * na * nb * p.paab
-        + 3.0 * na * nb * nb * p.pabb
+        + k(3.0) * na * na * nb * p.paab
+        + k(3.0) * na * nb * nb * p.pabb
         + nb * nb * nb * p.pbbb;
-    let fccc = -k4 * (cubic + 3.0 * w * quad + w * w * (3.0 * (na * p.pa + nb * p.pb) + w * p.p1));
+    let fccc =
+        -k4 * (cubic + k(3.0) * w * quad + w * w * (k(3.0) * (na * p.pa + nb * p.pb) + w * p.p1));
     let faab = k1 * p.paab;
     let fbbc = -k2 * (na * p.pabb + nb * p.pbbb + w * p.pbb);
     let fcca = k3
         * (na * na * p.paaa
-            + 2.0 * na * nb * p.paab
+            + k(2.0) * na * nb * p.paab
             + nb * nb * p.pabb
-            + w * (2.0 * (na * p.paa + nb * p.pab) + w * p.pa));
-
-    // ∫1 = ∮ x n_x dA, with whichever of Fα, Fβ, Fγ is the face integral of x.
-    let fx = if a == 0 {
-        fa
-    } else if b == 0 {
-        fb
-    } else {
-        fc
-    };
-    acc[0] += n.x * fx;
-    acc[1 + a] += na * faa;
-    acc[1 + b] += nb * fbb;
-    acc[1 + c] += nc * fcc;
-    acc[4 + a] += na * faaa;
-    acc[4 + b] += nb * fbbb;
-    acc[4 + c] += nc * fccc;
-    // Products: slot 7 + a holds ∫αβ because (a, b) = (x, y), (y, z) or (z, x).
-    acc[7 + a] += na * faab;
-    acc[7 + b] += nb * fbbc;
-    acc[7 + c] += nc * fcca;
+            + w * (k(2.0) * (na * p.paa + nb * p.pab) + w * p.pa));
+    [
+        na * fa,
+        nb * fb,
+        nc * fc,
+        na * faa,
+        nb * fbb,
+        nc * fcc,
+        na * faaa,
+        nb * fbbb,
+        nc * fccc,
+        na * faab,
+        nb * fbbc,
+        nc * fcca,
+    ]
 }
