@@ -64,6 +64,14 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
     let mesh = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
     let analysis = massprops::analyze(&mesh, Method::Volume, spec)
         .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
+    // Mass given: make it exact (density = m / V, then m = ρV, can miss by an ulp).
+    let properties = match spec {
+        MassSpec::Mass(m) => analysis
+            .properties
+            .with_mass(m)
+            .map_err(|e| CliError::Input(format!("{file}: {e}")))?,
+        MassSpec::Density(_) => analysis.properties,
+    };
     for w in &analysis.warnings {
         eprintln!("warning: {file}: {w}");
     }
@@ -73,7 +81,7 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
         up: args.up,
         frame: args.frame,
     };
-    let out = export(&analysis.properties, &options).map_err(|e: ExportError| {
+    let out = export(&properties, &options).map_err(|e: ExportError| {
         if e.is_usage() {
             CliError::Usage(e.to_string())
         } else {

@@ -139,7 +139,9 @@ impl Axes {
             Axes::Mesh => "the mesh's own (right-handed)",
             Axes::RightYUp => "right-handed, +Y up",
             Axes::RightZUp => "right-handed, +Z up",
-            Axes::UnityLeftYUp => "Unity's left-handed, +Y up (x mirrored, as Unity's importer does)",
+            Axes::UnityLeftYUp => {
+                "Unity's left-handed, +Y up (x mirrored, as Unity's importer does)"
+            }
             Axes::UnrealLeftZUp => {
                 "Unreal's left-handed, +Z up (y mirrored, as Unreal's importer does)"
             }

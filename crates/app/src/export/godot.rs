@@ -51,10 +51,7 @@ pub fn render(body: &Converted, frame: Frame, warnings: &mut Vec<String>) -> Str
                 nalgebra::Vector3::new(i[(0, 0)], i[(1, 1)], i[(2, 2)]),
             )
         }
-        Frame::ComPrincipal => (
-            body.principal.inverse() * body.center_of_mass,
-            body.moments,
-        ),
+        Frame::ComPrincipal => (body.principal.inverse() * body.center_of_mass, body.moments),
     };
     let _ = writeln!(s, "[node name=\"Body\" type=\"RigidBody3D\"]");
     let _ = writeln!(s, "mass = {}", num(body.mass));

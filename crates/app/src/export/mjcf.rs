@@ -9,12 +9,28 @@
 //! decomposition of M and sets the frame orientation and diagonal inertia accordingly", and an
 //! orientation may not be given with it (MuJoCo 4.0: "at most one of 'fullinertia', 'quat', …").
 //! Units m, kg, kg·m² (MuJoCo is unit-agnostic; SI keeps gravity 9.81 right); Z-up.
+//! MuJoCo refuses a moving body whose mass or principal moments are below `mjMINVAL` = 1e-15
+//! ("inertia must have positive eigenvalues", "mass and inertia of moving bodies must be larger
+//! than mjMINVAL", MuJoCo 4.0), so such a body gets a warning.
 
 use super::Frame;
 use super::frames::{Converted, num};
 
-/// The `<inertial>` element, preceded by a comment stating the conventions.
-pub fn render(body: &Converted, frame: Frame) -> String {
+/// MuJoCo's `mjMINVAL`: the smallest mass or moment a moving body may have.
+const MJ_MINVAL: f64 = 1e-15;
+
+/// The `<inertial>` element, preceded by a comment stating the conventions; warns when MuJoCo
+/// would refuse the body as too small.
+pub fn render(body: &Converted, frame: Frame, warnings: &mut Vec<String>) -> String {
+    if body.mass < MJ_MINVAL || body.moments[0] < MJ_MINVAL {
+        warnings.push(format!(
+            "mjcf: mass {:e} kg, smallest principal moment {:e} kg*m^2: MuJoCo refuses a moving \
+             body with either below 1e-15 (mjMINVAL). Check --units (a mesh in metres read as \
+             mm has 1e-15 of its inertia at the same mass ratio) or model the part as part of a \
+             larger body",
+            body.mass, body.moments[0]
+        ));
+    }
     let c = &body.center_of_mass;
     let pos = format!("{} {} {}", num(c.x), num(c.y), num(c.z));
     let (note, element) = match frame {

@@ -34,8 +34,8 @@ mod urdf;
 
 use massprops::MassProperties;
 
-pub use frames::{LengthUnit, UpAxis, density_per_cubic_unit};
 use frames::{Axes, Conversion};
+pub use frames::{LengthUnit, UpAxis, density_per_cubic_unit};
 
 /// An output format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -192,7 +192,8 @@ pub enum ExportError {
          (I3 exceeds I1 + I2 by {:.3e} of I3): no distribution of positive mass has them, and \
          MuJoCo, PhysX and Bullet refuse or misbehave. Check the mesh for inconsistent winding \
          (some faces or parts counted as negative volume) and overlapping parts; \
-         `inertia-lab props` reports both", excess
+         `inertia-lab props` reports both",
+        excess
     )]
     TriangleInequality {
         /// Principal moments, ascending.
@@ -220,7 +221,10 @@ impl ExportError {
 }
 
 /// Writes `props` (mesh coordinates in `options.units`, mass in kg) in `options.format`.
-pub fn export(props: &MassProperties, options: &ExportOptions) -> Result<ExportOutput, ExportError> {
+pub fn export(
+    props: &MassProperties,
+    options: &ExportOptions,
+) -> Result<ExportOutput, ExportError> {
     let (default_frame, choice) = options.format.frames();
     let frame = options.frame.unwrap_or(default_frame);
     if frame != default_frame && !choice {
@@ -244,7 +248,7 @@ pub fn export(props: &MassProperties, options: &ExportOptions) -> Result<ExportO
     let text = match options.format {
         Format::Json => json::render(&body),
         Format::Urdf => urdf::render(&body, frame),
-        Format::Mjcf => mjcf::render(&body, frame),
+        Format::Mjcf => mjcf::render(&body, frame, &mut warnings),
         Format::Sdf => sdf::render(&body, frame),
         Format::Unity => unity::render(&body),
         Format::Godot => godot::render(&body, frame, &mut warnings),

@@ -1,0 +1,756 @@
+//! Round trips of `inertia-lab export`: every format's output is parsed with a real parser (or,
+//! for the C#, C++ and Rust snippets, a small number reader), the full inertia tensor is rebuilt
+//! in the mesh's own frame from what the target would read (its quaternion or roll-pitch-yaw
+//! convention, handedness and units, written out independently here), and compared with
+//! `massprops` on the mesh scaled to metres, to 1e-9 relative. Bodies are rotated, off-centre
+//! and asymmetric. MuJoCo and yourdfpy (Python) load the MJCF and URDF outputs themselves.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use massprops::shapes::{self, MeshBuilder};
+use massprops::{MassProperties, mass_properties};
+use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
+use serde_json::Value;
+
+const TOLERANCE: f64 = 1e-9;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_inertia-lab"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("the binary runs")
+}
+
+/// A temporary file, removed on drop.
+struct TempFile(PathBuf);
+
+static NEXT_FILE: AtomicUsize = AtomicUsize::new(0);
+
+impl TempFile {
+    fn new(name: &str, contents: &[u8]) -> Self {
+        let n = NEXT_FILE.fetch_add(1, Ordering::Relaxed);
+        let path = std::env::temp_dir().join(format!(
+            "inertia-lab-export-{}-{n}-{name}",
+            std::process::id()
+        ));
+        std::fs::write(&path, contents).expect("temp file written");
+        Self(path)
+    }
+    fn path(&self) -> &str {
+        self.0.to_str().expect("utf-8 temp path")
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+/// A body: its mesh (in its own units), the unit it is meant in, and the OBJ file holding it.
+struct Body {
+    name: &'static str,
+    mesh: MeshBuilder,
+    units: &'static str,
+    metres: f64,
+    file: TempFile,
+}
+
+fn body(name: &'static str, mesh: MeshBuilder, units: &'static str, metres: f64) -> Body {
+    let file = TempFile::new(
+        &format!("{name}.obj"),
+        shapes::to_obj(name, name, &mesh).as_bytes(),
+    );
+    Body {
+        name,
+        mesh,
+        units,
+        metres,
+        file,
+    }
+}
+
+fn motion(t: [f64; 3], euler: [f64; 3]) -> Isometry3<f64> {
+    Isometry3::from_parts(
+        Translation3::new(t[0], t[1], t[2]),
+        UnitQuaternion::from_euler_angles(euler[0], euler[1], euler[2]),
+    )
+}
+
+/// Rotated, off-centre, asymmetric bodies, coordinates in "mesh units".
+fn bodies() -> Vec<Body> {
+    vec![
+        // An L-bracket with millimetre-like numbers, tilted and moved away from the origin.
+        body(
+            "bracket",
+            scaled(&shapes::l_bracket(), 1000.0)
+                .transformed(&motion([30.0, -12.0, 55.0], [0.4, -1.1, 2.3])),
+            "mm",
+            0.001,
+        ),
+        body(
+            "hammer",
+            shapes::hammer().transformed(&motion([0.11, 0.05, -0.3], [0.7, 0.2, -1.3])),
+            "m",
+            1.0,
+        ),
+    ]
+}
+
+fn scaled(mesh: &MeshBuilder, s: f64) -> MeshBuilder {
+    let mut m = mesh.clone();
+    for p in &mut m.positions {
+        *p = Point3::from(p.coords * s);
+    }
+    m
+}
+
+/// The mesh scaled to metres, integrated at `density` kg/m³ (independent of the CLI's path).
+fn reference(mesh: &MeshBuilder, metres_per_unit: f64, density: f64) -> MassProperties {
+    mass_properties(&scaled(mesh, metres_per_unit).build(), density).expect("closed mesh")
+}
+
+/// Target coordinates → mesh coordinates, written out from the formats' documentation.
+fn target_to_mesh(target: &str, up: &str) -> Matrix3<f64> {
+    // Mesh → right-handed target of the other up axis.
+    let y_to_z = Matrix3::new(1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0);
+    let z_to_y = y_to_z.transpose();
+    let to_rh = |target_up: &str| match (up, target_up) {
+        ("y", "z") => y_to_z,
+        ("z", "y") => z_to_y,
+        _ => Matrix3::identity(),
+    };
+    let mesh_to_target = match target {
+        "mesh" => Matrix3::identity(),
+        "rh-y" => to_rh("y"),
+        "rh-z" => to_rh("z"),
+        // Unity mirrors x, Unreal mirrors y.
+        "unity" => Matrix3::from_diagonal(&Vector3::new(-1.0, 1.0, 1.0)) * to_rh("y"),
+        "unreal" => Matrix3::from_diagonal(&Vector3::new(1.0, -1.0, 1.0)) * to_rh("z"),
+        other => panic!("unknown target {other}"),
+    };
+    mesh_to_target.transpose()
+}
+
+/// Hamilton quaternion (w, x, y, z) → rotation matrix.
+fn quat(w: f64, x: f64, y: f64, z: f64) -> Matrix3<f64> {
+    let n = (w * w + x * x + y * y + z * z).sqrt();
+    let (w, x, y, z) = (w / n, x / n, y / n, z / n);
+    Matrix3::new(
+        1.0 - 2.0 * (y * y + z * z),
+        2.0 * (x * y - w * z),
+        2.0 * (x * z + w * y),
+        2.0 * (x * y + w * z),
+        1.0 - 2.0 * (x * x + z * z),
+        2.0 * (y * z - w * x),
+        2.0 * (x * z - w * y),
+        2.0 * (y * z + w * x),
+        1.0 - 2.0 * (x * x + y * y),
+    )
+}
+
+/// Fixed-axis roll-pitch-yaw (URDF, SDFormat): Rz(yaw)·Ry(pitch)·Rx(roll).
+fn rpy(r: f64, p: f64, y: f64) -> Matrix3<f64> {
+    let rx = Matrix3::new(1.0, 0.0, 0.0, 0.0, r.cos(), -r.sin(), 0.0, r.sin(), r.cos());
+    let ry = Matrix3::new(p.cos(), 0.0, p.sin(), 0.0, 1.0, 0.0, -p.sin(), 0.0, p.cos());
+    let rz = Matrix3::new(y.cos(), -y.sin(), 0.0, y.sin(), y.cos(), 0.0, 0.0, 0.0, 1.0);
+    rz * ry * rx
+}
+
+fn symmetric(xx: f64, yy: f64, zz: f64, xy: f64, xz: f64, yz: f64) -> Matrix3<f64> {
+    Matrix3::new(xx, xy, xz, xy, yy, yz, xz, yz, zz)
+}
+
+/// What a target reads, in its own frame and units.
+#[derive(Debug)]
+struct Read {
+    mass: f64,
+    com: Vector3<f64>,
+    inertia: Matrix3<f64>,
+}
+
+impl Read {
+    fn principal(mass: f64, com: Vector3<f64>, rotation: Matrix3<f64>, d: [f64; 3]) -> Self {
+        let diag = Matrix3::from_diagonal(&Vector3::from(d));
+        Read {
+            mass,
+            com,
+            inertia: rotation * diag * rotation.transpose(),
+        }
+    }
+}
+
+/// Relative errors (mass, centre of mass, tensor) of `read` against `exact`, after taking it back
+/// to the mesh frame in metres.
+fn errors(read: &Read, target: &str, up: &str, metres: f64, exact: &MassProperties) -> [f64; 3] {
+    let a = target_to_mesh(target, up);
+    let com = a * read.com * metres;
+    let inertia = a * read.inertia * a.transpose() * (metres * metres);
+    let scale = exact.inertia_com.amax();
+    let size = (exact.inertia_com.trace() / exact.mass).sqrt();
+    [
+        (read.mass - exact.mass).abs() / exact.mass,
+        (com - exact.center_of_mass.coords).amax() / size,
+        (inertia - exact.inertia_com).amax() / scale,
+    ]
+}
+
+fn check(label: &str, e: [f64; 3]) -> f64 {
+    eprintln!(
+        "{label}: mass {:.1e}, com {:.1e}, tensor {:.1e}",
+        e[0], e[1], e[2]
+    );
+    for v in e {
+        assert!(v <= TOLERANCE, "{label}: relative errors {e:?}");
+    }
+    e[2]
+}
+
+fn export(file: &str, args: &[&str]) -> String {
+    let mut all = vec!["export", file];
+    all.extend_from_slice(args);
+    let out = run(&all);
+    assert!(
+        out.status.success(),
+        "export {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+/// Equal to 1e-15 relative (serde_json's default float parser may miss by one ulp).
+fn same(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-15 * a.abs().max(b.abs())
+}
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().expect("a number")
+}
+
+fn floats(v: &Value) -> Vec<f64> {
+    v.as_array().expect("an array").iter().map(f).collect()
+}
+
+fn attr_floats(node: roxmltree::Node, name: &str) -> Vec<f64> {
+    node.attribute(name)
+        .unwrap_or_else(|| panic!("attribute {name}"))
+        .split_whitespace()
+        .map(|s| s.parse().expect("a number"))
+        .collect()
+}
+
+fn child<'a, 'i>(node: roxmltree::Node<'a, 'i>, name: &str) -> roxmltree::Node<'a, 'i> {
+    node.children()
+        .find(|c| c.has_tag_name(name))
+        .unwrap_or_else(|| panic!("element {name}"))
+}
+
+fn text_floats(node: roxmltree::Node) -> Vec<f64> {
+    node.text()
+        .unwrap_or_default()
+        .split_whitespace()
+        .map(|s| s.parse().expect("a number"))
+        .collect()
+}
+
+/// The number after `prefix` on the line that starts with it (`;`, `,` and C#'s `f` dropped).
+fn line_number(text: &str, prefix: &str) -> f64 {
+    let line = text
+        .lines()
+        .find_map(|l| l.trim_start().strip_prefix(prefix))
+        .unwrap_or_else(|| panic!("a line starting with {prefix:?} in\n{text}"));
+    let v = line
+        .trim()
+        .trim_end_matches([';', ','])
+        .trim_end_matches('f');
+    v.parse()
+        .unwrap_or_else(|_| panic!("number {v:?} after {prefix}"))
+}
+
+/// The comma-separated numbers between `marker` and the next `)` or `]` (C#, C++, Rust, tscn).
+fn numbers_after(text: &str, marker: &str) -> Vec<f64> {
+    let start = text
+        .find(marker)
+        .unwrap_or_else(|| panic!("{marker} in\n{text}"))
+        + marker.len();
+    let rest = &text[start..];
+    let end = rest.find([')', ']']).expect("closing bracket");
+    rest[..end]
+        .split(',')
+        .map(|s| {
+            let s = s.trim().trim_end_matches('f');
+            s.parse()
+                .unwrap_or_else(|_| panic!("number {s:?} after {marker}"))
+        })
+        .collect()
+}
+
+fn parse(format: &str, text: &str) -> Read {
+    match format {
+        "json" => {
+            let v: Value = serde_json::from_str(text).expect("JSON");
+            let i: Vec<Vec<f64>> = v["inertia_com"]
+                .as_array()
+                .expect("rows")
+                .iter()
+                .map(floats)
+                .collect();
+            let inertia = Matrix3::from_fn(|r, c| i[r][c]);
+            // The principal decomposition must say the same.
+            let q = floats(&v["principal_quaternion_xyzw"]);
+            let m = floats(&v["principal_moments"]);
+            let r = quat(q[3], q[0], q[1], q[2]);
+            let rebuilt =
+                r * Matrix3::from_diagonal(&Vector3::new(m[0], m[1], m[2])) * r.transpose();
+            assert!((rebuilt - inertia).amax() <= 1e-12 * inertia.amax());
+            let c = floats(&v["center_of_mass"]);
+            Read {
+                mass: f(&v["mass"]),
+                com: Vector3::new(c[0], c[1], c[2]),
+                inertia,
+            }
+        }
+        "urdf" => {
+            let doc = roxmltree::Document::parse(text).expect("XML");
+            let inertial = doc.root_element();
+            assert!(inertial.has_tag_name("inertial"));
+            let origin = child(inertial, "origin");
+            let xyz = attr_floats(origin, "xyz");
+            let a = attr_floats(origin, "rpy");
+            let i = child(inertial, "inertia");
+            let g = |n: &str| attr_floats(i, n)[0];
+            let r = rpy(a[0], a[1], a[2]);
+            let local = symmetric(g("ixx"), g("iyy"), g("izz"), g("ixy"), g("ixz"), g("iyz"));
+            Read {
+                mass: attr_floats(child(inertial, "mass"), "value")[0],
+                com: Vector3::new(xyz[0], xyz[1], xyz[2]),
+                inertia: r * local * r.transpose(),
+            }
+        }
+        "sdf" => {
+            let doc = roxmltree::Document::parse(text).expect("XML");
+            let inertial = doc.root_element();
+            let pose = text_floats(child(inertial, "pose"));
+            let i = child(inertial, "inertia");
+            let g = |n: &str| text_floats(child(i, n))[0];
+            let r = rpy(pose[3], pose[4], pose[5]);
+            let local = symmetric(g("ixx"), g("iyy"), g("izz"), g("ixy"), g("ixz"), g("iyz"));
+            Read {
+                mass: text_floats(child(inertial, "mass"))[0],
+                com: Vector3::new(pose[0], pose[1], pose[2]),
+                inertia: r * local * r.transpose(),
+            }
+        }
+        "mjcf" => {
+            let doc = roxmltree::Document::parse(text).expect("XML");
+            let e = doc.root_element();
+            let pos = attr_floats(e, "pos");
+            let mass = attr_floats(e, "mass")[0];
+            let com = Vector3::new(pos[0], pos[1], pos[2]);
+            if e.has_attribute("fullinertia") {
+                assert!(
+                    !e.has_attribute("quat"),
+                    "MuJoCo forbids quat with fullinertia"
+                );
+                let m = attr_floats(e, "fullinertia");
+                Read {
+                    mass,
+                    com,
+                    inertia: symmetric(m[0], m[1], m[2], m[3], m[4], m[5]),
+                }
+            } else {
+                let q = attr_floats(e, "quat");
+                let d = attr_floats(e, "diaginertia");
+                Read::principal(mass, com, quat(q[0], q[1], q[2], q[3]), [d[0], d[1], d[2]])
+            }
+        }
+        "unity" => {
+            let q = numbers_after(text, "new Quaternion(");
+            let c = numbers_after(text, "centerOfMass = new Vector3(");
+            let d = numbers_after(text, "inertiaTensor = new Vector3(");
+            let m = line_number(text, "body.mass = ");
+            let read = Read::principal(
+                m,
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[3], q[0], q[1], q[2]),
+                [d[0], d[1], d[2]],
+            );
+            // The JSON line carries the same values.
+            let line = text
+                .lines()
+                .find(|l| l.starts_with("// {"))
+                .expect("JSON comment line");
+            let v: Value = serde_json::from_str(&line[3..]).expect("JSON");
+            assert!(same(f(&v["mass"]), m));
+            assert!(same(f(&v["inertiaTensorRotation"]["w"]), q[3]));
+            assert!(same(f(&v["centerOfMass"]["z"]), c[2]));
+            assert!(same(f(&v["inertiaTensor"]["y"]), d[1]));
+            read
+        }
+        "godot" => {
+            let m = line_number(text, "mass = ");
+            let c = numbers_after(text, "center_of_mass = Vector3(");
+            let d = numbers_after(text, "inertia = Vector3(");
+            // Body axes; with a MeshFrame child, the mesh sits rotated by its quaternion.
+            let child = if text.contains("[node name=\"MeshFrame\"") {
+                let q = numbers_after(text, "quaternion = Quaternion(");
+                quat(q[3], q[0], q[1], q[2])
+            } else {
+                Matrix3::identity()
+            };
+            // child maps mesh-frame coordinates to body coordinates.
+            let com = child.transpose() * Vector3::new(c[0], c[1], c[2]);
+            Read::principal(m, com, child.transpose(), [d[0], d[1], d[2]])
+        }
+        "unreal" => {
+            let m = numbers_after(text, "SetMass_AssumesLocked(Actor, ")[0];
+            let pose = &text[text
+                .find("SetComLocalPose_AssumesLocked")
+                .expect("COM pose")..];
+            let q = numbers_after(pose, "FQuat(");
+            let c = numbers_after(pose, "FVector(");
+            let d = numbers_after(
+                text,
+                "SetMassSpaceInertiaTensor_AssumesLocked(Actor, FVector(",
+            );
+            Read::principal(
+                m,
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[3], q[0], q[1], q[2]),
+                [d[0], d[1], d[2]],
+            )
+        }
+        "rapier" => {
+            let c = numbers_after(text, "point![");
+            let m = line_number(text, "mass: ");
+            let d = numbers_after(text, "vector![");
+            let q = numbers_after(text, "Quaternion::new(");
+            // The bevy_rapier3d literal carries the same values.
+            assert_eq!(
+                numbers_after(text, "Quat::from_xyzw("),
+                vec![q[1], q[2], q[3], q[0]]
+            );
+            assert_eq!(numbers_after(text, "local_center_of_mass: Vec3::new("), c);
+            assert_eq!(numbers_after(text, "principal_inertia: Vec3::new("), d);
+            Read::principal(
+                m,
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[0], q[1], q[2], q[3]),
+                [d[0], d[1], d[2]],
+            )
+        }
+        "gltf" => {
+            let v: Value = serde_json::from_str(text).expect("JSON");
+            let motion = &v["extensions"]["KHR_physics_rigid_bodies"]["motion"];
+            let c = floats(&motion["centerOfMass"]);
+            let d = floats(&motion["inertiaDiagonal"]);
+            let q = floats(&motion["inertiaOrientation"]);
+            Read::principal(
+                f(&motion["mass"]),
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[3], q[0], q[1], q[2]),
+                [d[0], d[1], d[2]],
+            )
+        }
+        other => panic!("unknown format {other}"),
+    }
+}
+
+/// (format, target frame name in [`target_to_mesh`], length unit of the target in metres).
+const FORMATS: [(&str, &str, f64); 9] = [
+    ("json", "mesh", 1.0),
+    ("urdf", "rh-z", 1.0),
+    ("sdf", "rh-z", 1.0),
+    ("mjcf", "rh-z", 1.0),
+    ("unity", "unity", 1.0),
+    ("godot", "rh-y", 1.0),
+    ("unreal", "unreal", 0.01),
+    ("rapier", "rh-y", 1.0),
+    ("gltf", "rh-y", 1.0),
+];
+
+#[test]
+fn every_format_rebuilds_the_tensor_in_the_mesh_frame() {
+    let mut worst: f64 = 0.0;
+    for b in bodies() {
+        for (units, metres) in [("mm", 0.001), ("in", 0.0254), ("m", 1.0)] {
+            for up in ["y", "z"] {
+                let exact = reference(&b.mesh, metres, 2700.0);
+                for (format, target, target_metres) in FORMATS {
+                    for frame in ["com-principal", "origin"] {
+                        let refused = matches!(format, "unity" | "unreal" | "rapier" | "gltf")
+                            && frame == "origin";
+                        // Godot's body-axes diagonal drops products: checked separately.
+                        if refused || (format == "godot" && frame == "origin") {
+                            continue;
+                        }
+                        let text = export(
+                            b.file.path(),
+                            &[
+                                "--format",
+                                format,
+                                "--units",
+                                units,
+                                "--up",
+                                up,
+                                "--material",
+                                "aluminium",
+                                "--frame",
+                                frame,
+                            ],
+                        );
+                        let read = parse(format, &text);
+                        let e = errors(&read, target, up, target_metres, &exact);
+                        let label = format!("{} {format} {frame} units {units} up {up}", b.name);
+                        worst = worst.max(check(&label, e));
+                    }
+                }
+            }
+        }
+    }
+    eprintln!("worst tensor error over all formats: {worst:.2e}");
+}
+
+#[test]
+fn the_hammer_in_millimetres_weighs_half_a_kilo_and_is_a_thousand_times_smaller() {
+    let out = export(
+        "assets/hammer.obj",
+        &["--format", "urdf", "--units", "mm", "--mass", "0.5"],
+    );
+    assert!(out.contains("<inertial>"));
+    let read = parse("urdf", &out);
+    // Independently: the hammer's numbers as millimetres, at whatever density gives 0.5 kg.
+    let exact = reference(&shapes::hammer(), 0.001, 1.0)
+        .with_mass(0.5)
+        .expect("valid");
+    assert_eq!(read.mass, 0.5);
+    check(
+        "hammer urdf mm 0.5 kg",
+        errors(&read, "rh-z", "y", 1.0, &exact),
+    );
+    // Scale law: the same hammer in metres at 0.5 kg has 10⁶ times the inertia.
+    let metres = reference(&shapes::hammer(), 1.0, 1.0)
+        .with_mass(0.5)
+        .expect("valid");
+    assert!(
+        (metres.inertia_com / 1e6 - exact.inertia_com).amax() <= 1e-12 * exact.inertia_com.amax()
+    );
+    // Handle along the mesh's y (up) becomes URDF's z: the smallest moment is about z.
+    let i = read.inertia;
+    assert!(i[(2, 2)] < i[(0, 0)] && i[(2, 2)] < i[(1, 1)]);
+    // Density presets: 1 kg/m³ × volume, in kg.
+    let out = export(
+        "assets/cube.obj",
+        &["--format", "json", "--units", "cm", "--material", "steel"],
+    );
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    assert!(
+        (f(&v["mass"]) - 7850.0 * 1e-6).abs() < 1e-15,
+        "a 1 cm steel cube weighs 7.85 g"
+    );
+}
+
+#[test]
+fn godot_warns_when_it_must_drop_products_of_inertia() {
+    // A T-handle moved off-centre but not rotated: principal axes = body axes, exact.
+    let t = body(
+        "tee",
+        shapes::t_handle().transformed(&motion([0.2, -0.1, 0.05], [0.0; 3])),
+        "m",
+        1.0,
+    );
+    let exact = reference(&t.mesh, 1.0, 1000.0);
+    let out = run(&["export", t.file.path(), "--format", "godot"]);
+    assert!(out.status.success());
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let read = parse("godot", &String::from_utf8(out.stdout).expect("utf-8"));
+    check("tee godot origin", errors(&read, "rh-y", "y", 1.0, &exact));
+
+    // Rotated: a warning, and the body-axes diagonal is exactly the tensor's diagonal.
+    let b = &bodies()[1];
+    let exact = reference(&b.mesh, 1.0, 1000.0);
+    let out = run(&["export", b.file.path(), "--format", "godot"]);
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("principal axes are not the body axes"),
+        "{stderr}"
+    );
+    let read = parse("godot", &String::from_utf8(out.stdout).expect("utf-8"));
+    let diag = Vector3::from_fn(|i, _| exact.inertia_com[(i, i)]);
+    assert!((read.inertia.diagonal() - diag).amax() <= TOLERANCE * diag.amax());
+}
+
+#[test]
+fn output_file_frames_and_unphysical_bodies() {
+    let b = &bodies()[0];
+    let out_file = TempFile::new("out.xml", b"");
+    let out = run(&[
+        "export",
+        b.file.path(),
+        "--format",
+        "sdf",
+        "--output",
+        out_file.path(),
+    ]);
+    assert!(out.status.success() && out.stdout.is_empty());
+    let written = std::fs::read_to_string(&out_file.0).expect("written");
+    assert!(roxmltree::Document::parse(&written).is_ok());
+
+    // A format without a frame choice refuses --frame origin as a usage error.
+    let out = run(&[
+        "export",
+        b.file.path(),
+        "--format",
+        "unity",
+        "--frame",
+        "origin",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = run(&["export", b.file.path(), "--format", "urdf", "--mass", "-1"]);
+    assert_eq!(out.status.code(), Some(2));
+
+    // A unit cube plus a small inside-out cube far away: negative mass out there makes two
+    // moments negative. Refused with exit code 3 and an explanation.
+    let mut mesh = shapes::cube();
+    let mut hole = shapes::cuboid(Vector3::repeat(0.5), Point3::new(3.0, 0.0, 0.0));
+    for f in &mut hole.faces {
+        f.reverse();
+    }
+    mesh.append(&hole);
+    let bad = TempFile::new("bad.obj", shapes::to_obj("bad", "bad", &mesh).as_bytes());
+    let out = run(&["export", bad.path(), "--format", "mjcf"]);
+    assert_eq!(out.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("not positive definite") && stderr.contains("flipped faces"),
+        "{stderr}"
+    );
+    assert!(out.stdout.is_empty());
+
+    // The hammer (modelled in metres) read as millimetres at PLA density is far below
+    // MuJoCo's mjMINVAL: exported, with a warning.
+    let out = run(&["export", "assets/hammer.obj", "--format", "mjcf", "--units", "mm", "--material", "pla"]);
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("mjMINVAL") && stderr.contains("--units"), "{stderr}");
+}
+
+/// Runs a consumer script; `None` (with a note) only when python3 itself is missing.
+fn python(script: &str, file: &str) -> Option<Value> {
+    let out = match Command::new("python3")
+        .arg(root().join("tests/python").join(script))
+        .arg(file)
+        .output()
+    {
+        Ok(out) => out,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            eprintln!("SKIPPED {script}: python3 is not installed");
+            return None;
+        }
+        Err(e) => panic!("python3 {script}: {e}"),
+    };
+    assert!(
+        out.status.success(),
+        "{script} failed (is its package installed? .ci/run pip-installs it):\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    Some(serde_json::from_slice(&out.stdout).expect("JSON from the script"))
+}
+
+#[test]
+fn mujoco_compiles_the_mjcf_to_the_same_body() {
+    for b in bodies() {
+        for frame in ["origin", "com-principal"] {
+            let exact = reference(&b.mesh, b.metres, 1240.0);
+            let text = export(
+                b.file.path(),
+                &[
+                    "--format",
+                    "mjcf",
+                    "--units",
+                    b.units,
+                    "--material",
+                    "pla",
+                    "--frame",
+                    frame,
+                ],
+            );
+            let file = TempFile::new(&format!("{}-{frame}.mjcf", b.name), text.as_bytes());
+            let Some(v) = python("mujoco_inertial.py", file.path()) else {
+                return;
+            };
+            let q = floats(&v["iquat"]);
+            let p = floats(&v["ipos"]);
+            let d = floats(&v["inertia"]);
+            let read = Read::principal(
+                f(&v["mass"]),
+                Vector3::new(p[0], p[1], p[2]),
+                quat(q[0], q[1], q[2], q[3]),
+                [d[0], d[1], d[2]],
+            );
+            let label = format!("mujoco {} {} {frame}", v["version"], b.name);
+            check(&label, errors(&read, "rh-z", "y", 1.0, &exact));
+        }
+    }
+}
+
+#[test]
+fn yourdfpy_reads_the_urdf_as_the_same_body() {
+    for b in bodies() {
+        for frame in ["origin", "com-principal"] {
+            let exact = reference(&b.mesh, 0.0254, 7850.0);
+            let text = export(
+                b.file.path(),
+                &[
+                    "--format",
+                    "urdf",
+                    "--units",
+                    "in",
+                    "--up",
+                    "z",
+                    "--density",
+                    "7850",
+                    "--frame",
+                    frame,
+                ],
+            );
+            let file = TempFile::new(&format!("{}-{frame}.urdf", b.name), text.as_bytes());
+            let Some(v) = python("urdf_inertial.py", file.path()) else {
+                return;
+            };
+            let o: Vec<Vec<f64>> = v["origin"]
+                .as_array()
+                .expect("rows")
+                .iter()
+                .map(floats)
+                .collect();
+            let i: Vec<Vec<f64>> = v["inertia"]
+                .as_array()
+                .expect("rows")
+                .iter()
+                .map(floats)
+                .collect();
+            let r = Matrix3::from_fn(|row, col| o[row][col]);
+            let local = Matrix3::from_fn(|row, col| i[row][col]);
+            let read = Read {
+                mass: f(&v["mass"]),
+                com: Vector3::new(o[0][3], o[1][3], o[2][3]),
+                inertia: r * local * r.transpose(),
+            };
+            let label = format!("yourdfpy {} {} {frame}", v["version"], b.name);
+            check(&label, errors(&read, "rh-z", "z", 1.0, &exact));
+        }
+    }
+}
