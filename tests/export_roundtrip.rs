@@ -641,10 +641,22 @@ fn output_file_frames_and_unphysical_bodies() {
 
     // The hammer (modelled in metres) read as millimetres at PLA density is far below
     // MuJoCo's mjMINVAL: exported, with a warning.
-    let out = run(&["export", "assets/hammer.obj", "--format", "mjcf", "--units", "mm", "--material", "pla"]);
+    let out = run(&[
+        "export",
+        "assets/hammer.obj",
+        "--format",
+        "mjcf",
+        "--units",
+        "mm",
+        "--material",
+        "pla",
+    ]);
     assert!(out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("mjMINVAL") && stderr.contains("--units"), "{stderr}");
+    assert!(
+        stderr.contains("mjMINVAL") && stderr.contains("--units"),
+        "{stderr}"
+    );
 }
 
 /// Runs a consumer script; `None` (with a note) only when python3 itself is missing.
