@@ -1,15 +1,27 @@
 //! `inertia-lab`: exact mass properties and rigid-body dynamics of any mesh.
 //!
-//! Command-line entry points of the Inertia Lab binary: `props` (mass properties of a mesh,
+//! Without a subcommand the binary opens the desktop app (`gui`) on the flipping T-handle, or on
+//! a mesh given as the argument. Command-line entry points: `props` (mass properties of a mesh,
 //! `massprops`), `simulate` (headless rigid-body simulation, `rbcore`) and `export` (mass
 //! properties for engines and robot formats).
 
+mod camera;
+mod clock;
 mod error;
 mod export;
 mod export_cmd;
+mod geometry;
+mod gui;
+mod history;
+mod loader;
+mod model;
+mod panels;
+mod picking;
 mod props;
 mod report;
+mod settings;
 mod simulate;
+mod view3d;
 
 use std::process::ExitCode;
 
@@ -17,10 +29,17 @@ use clap::{Parser, Subcommand};
 
 /// Inertia Lab: exact mass properties of any mesh, and how they shape its rotation.
 #[derive(Parser, Debug)]
-#[command(name = "inertia-lab", version, about)]
+#[command(
+    name = "inertia-lab",
+    version,
+    about,
+    args_conflicts_with_subcommands = true
+)]
 struct Cli {
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
+    #[command(flatten)]
+    gui: gui::GuiArgs,
 }
 
 #[derive(Subcommand, Debug)]
@@ -38,17 +57,12 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    // Until the desktop app exists, running the binary bare explains the commands.
-    if std::env::args_os().len() == 1 {
-        use clap::CommandFactory;
-        let _ = Cli::command().print_help();
-        return ExitCode::SUCCESS;
-    }
     let cli = Cli::parse();
     let result = match &cli.command {
-        Command::Props(args) => props::run(args),
-        Command::Simulate(args) => simulate::run(args),
-        Command::Export(args) => export_cmd::run(args),
+        Some(Command::Props(args)) => props::run(args),
+        Some(Command::Simulate(args)) => simulate::run(args),
+        Some(Command::Export(args)) => export_cmd::run(args),
+        None => gui::run(&cli.gui),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,322 @@
+//! The desktop app: eframe glue around the model ([`Lab`]), the panels and the 3D view. Each
+//! frame: gather input (shortcuts, dropped files) and the panels' intents as [`Command`]s, apply
+//! them in one place, advance the simulation by the frame clock, repaint only while something
+//! moves. Settings persist through eframe's storage; GPU resources live only in the 3D scene.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use clap::Args;
+use egui::Key;
+
+use crate::error::CliError;
+use crate::model::{Command, Lab};
+use crate::panels::{self, PanelState};
+use crate::settings::AppSettings;
+use crate::view3d::View3d;
+use crate::view3d::scene::Scene;
+
+/// Key under which the settings are stored.
+const SETTINGS_KEY: &str = "inertia-lab-settings";
+
+/// Arguments of the app (no subcommand).
+#[derive(Args, Debug, Default)]
+pub struct GuiArgs {
+    /// Mesh to open (.obj or .stl); the built-in T-handle when absent.
+    pub file: Option<PathBuf>,
+    /// Render N frames continuously with default settings, print frame-time percentiles, exit.
+    #[arg(long, value_name = "N")]
+    pub bench_frames: Option<usize>,
+    /// With --bench-frames: simulate this many seconds first so the plots hold that much history.
+    #[arg(
+        long,
+        value_name = "SECONDS",
+        default_value_t = 0.0,
+        requires = "bench_frames"
+    )]
+    pub bench_history: f64,
+    /// With --bench-frames: collapse the plot panel (to measure what the plots cost).
+    #[arg(long, requires = "bench_frames")]
+    pub bench_no_plots: bool,
+}
+
+/// Frame-time measurement of `--bench-frames`.
+#[derive(Debug)]
+struct Bench {
+    frames: usize,
+    hide_plots: bool,
+    last: Option<Instant>,
+    times: Vec<f64>,
+    /// Frames skipped before measuring (window mapping, first uploads, shader compilation).
+    warmup: usize,
+}
+
+/// The app.
+pub struct LabApp {
+    lab: Lab,
+    view: View3d,
+    panels: PanelState,
+    scene: Option<Arc<Mutex<Scene>>>,
+    bench: Option<Bench>,
+}
+
+impl std::fmt::Debug for LabApp {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("LabApp")
+            .field("lab", &self.lab)
+            .finish_non_exhaustive()
+    }
+}
+
+impl LabApp {
+    /// The app on the default T-handle; `gl` is eframe's GL context (absent in UI tests, where
+    /// the 3D view shows a placeholder).
+    ///
+    /// # Errors
+    /// The built-in body cannot be set up (a bug).
+    pub fn new(
+        settings: AppSettings,
+        gl: Option<Arc<three_d::context::Context>>,
+        ctx: &egui::Context,
+    ) -> Result<Self, String> {
+        let mut lab = Lab::new(settings)?;
+        let repaint = ctx.clone();
+        lab.set_waker(move || repaint.request_repaint());
+        let scene = match gl.map(Scene::new) {
+            Some(Ok(scene)) => Some(Arc::new(Mutex::new(scene))),
+            Some(Err(e)) => {
+                eprintln!("inertia-lab: {e}; the 3D view is disabled");
+                None
+            }
+            None => None,
+        };
+        Ok(Self {
+            lab,
+            view: View3d::default(),
+            panels: PanelState::default(),
+            scene,
+            bench: None,
+        })
+    }
+
+    /// The model (for tests).
+    pub fn lab(&self) -> &Lab {
+        &self.lab
+    }
+
+    /// Records a command as if a panel had (for tests and the command line).
+    pub fn command(&mut self, c: Command) {
+        self.lab.apply(c);
+    }
+
+    /// One frame of the whole UI.
+    pub fn show(&mut self, ui: &mut egui::Ui) {
+        let ctx = ui.ctx().clone();
+        let mut commands = Vec::new();
+        self.shortcuts(&ctx, &mut commands);
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().to_path_buf())
+                .collect()
+        });
+        commands.extend(dropped.into_iter().take(1).map(Command::LoadFile));
+        self.lab.frame(Instant::now());
+
+        egui::Panel::top("message").show(ui, |ui| {
+            ui.horizontal(|ui| match self.lab.message() {
+                Some(m) => {
+                    let color = if m.error {
+                        egui::Color32::from_rgb(255, 110, 100)
+                    } else {
+                        ui.visuals().text_color()
+                    };
+                    ui.colored_label(color, &m.text);
+                    if ui.small_button("✖").on_hover_text("dismiss").clicked() {
+                        commands.push(Command::DismissMessage);
+                    }
+                }
+                None => {
+                    ui.label(
+                        "Inertia Lab — exact inertia vs the bounding-box guess. Press F1 for help.",
+                    );
+                }
+            });
+        });
+        egui::Panel::left("side")
+            .resizable(true)
+            .default_size(360.0)
+            .show(ui, |ui| {
+                panels::side::show(ui, &self.lab, &mut self.panels, &mut commands);
+            });
+        let hide_plots = self.bench.as_ref().is_some_and(|b| b.hide_plots);
+        if !hide_plots {
+            egui::Panel::bottom("plots")
+                .resizable(true)
+                .default_size(250.0)
+                .show(ui, |ui| {
+                    panels::plots::show(ui, &self.lab, &mut self.panels, &mut commands);
+                });
+        }
+        egui::CentralPanel::default().show(ui, |ui| {
+            self.view
+                .show(ui, &self.lab, self.scene.as_ref(), &mut commands);
+        });
+        if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
+            ctx.debug_painter().text(
+                ctx.content_rect().center(),
+                egui::Align2::CENTER_CENTER,
+                "Drop to load",
+                egui::FontId::proportional(32.0),
+                egui::Color32::WHITE,
+            );
+        }
+        panels::help::show(&ctx, &mut self.panels.help_open);
+        self.lab.apply_all(commands);
+        if self.lab.is_animating() || self.view.is_dragging() || self.bench.is_some() {
+            ctx.request_repaint();
+        }
+    }
+
+    fn shortcuts(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
+        if ctx.input(|i| i.key_pressed(Key::F1)) {
+            self.panels.help_open = !self.panels.help_open;
+        }
+        // Letters go to a text field when one has focus.
+        if ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        ctx.input(|i| {
+            if i.key_pressed(Key::Space) {
+                commands.push(Command::TogglePause);
+            }
+            if i.key_pressed(Key::S) {
+                commands.push(Command::Step);
+            }
+            if i.key_pressed(Key::R) {
+                commands.push(Command::Reset);
+            }
+            for (k, axis) in [(Key::Num1, 0), (Key::Num2, 1), (Key::Num3, 2)] {
+                if i.key_pressed(k) {
+                    commands.push(Command::Preset(axis));
+                }
+            }
+        });
+        if ctx.input(|i| i.key_pressed(Key::F)) {
+            self.view.frame_body(&self.lab);
+        }
+    }
+
+    /// Counts a benchmark frame; prints the table and closes the window after the last one.
+    fn bench_frame(&mut self, ctx: &egui::Context) {
+        let Some(b) = &mut self.bench else { return };
+        let now = Instant::now();
+        if let Some(last) = b.last {
+            if b.warmup > 0 {
+                b.warmup -= 1;
+            } else {
+                b.times.push((now - last).as_secs_f64() * 1e3);
+            }
+        }
+        b.last = Some(now);
+        if b.times.len() >= b.frames {
+            let mut t = b.times.clone();
+            t.sort_by(f64::total_cmp);
+            let pct = |p: f64| t[((p / 100.0) * (t.len() - 1) as f64).round() as usize];
+            let mean = t.iter().sum::<f64>() / t.len() as f64;
+            println!(
+                "frames {} ({} triangles, {} samples of history, plots {}): mean {:.1} ms \
+                 ({:.1} fps), p50 {:.1} ms, p90 {:.1} ms, p99 {:.1} ms, max {:.1} ms",
+                t.len(),
+                self.lab.body().mesh.triangles.len(),
+                self.lab.history().samples().len(),
+                if b.hide_plots { "hidden" } else { "shown" },
+                mean,
+                1e3 / mean,
+                pct(50.0),
+                pct(90.0),
+                pct(99.0),
+                pct(100.0)
+            );
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+    }
+}
+
+impl eframe::App for LabApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.show(ui);
+        let ctx = ui.ctx().clone();
+        self.bench_frame(&ctx);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        if self.bench.is_none() {
+            eframe::set_value(storage, SETTINGS_KEY, &self.lab.settings);
+        }
+    }
+}
+
+/// Opens the window and runs the app until it is closed.
+///
+/// # Errors
+/// No window or GL context could be created (no display, no OpenGL 3).
+pub fn run(args: &GuiArgs) -> Result<(), CliError> {
+    let bench = args.bench_frames.map(|frames| Bench {
+        frames: frames.max(1),
+        hide_plots: args.bench_no_plots,
+        last: None,
+        times: Vec::with_capacity(frames),
+        warmup: 10,
+    });
+    let options = eframe::NativeOptions {
+        renderer: eframe::Renderer::Glow,
+        // Without a depth buffer the 3D occlusion is wrong (stack notes).
+        depth_buffer: 24,
+        // MSAA more than doubles frame time on software GL (llvmpipe).
+        multisampling: 0,
+        glow_options: egui_glow::GlowConfiguration {
+            vsync: bench.is_none(),
+            ..Default::default()
+        },
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Inertia Lab")
+            .with_inner_size([1280.0, 800.0])
+            .with_min_inner_size([640.0, 480.0])
+            .with_drag_and_drop(true),
+        persist_window: bench.is_none(),
+        ..Default::default()
+    };
+    let file = args.file.clone();
+    let history = args.bench_history;
+    eframe::run_native(
+        "inertia-lab",
+        options,
+        Box::new(move |cc| {
+            let settings = match (&bench, cc.storage) {
+                (None, Some(storage)) => {
+                    eframe::get_value(storage, SETTINGS_KEY).unwrap_or_default()
+                }
+                _ => AppSettings::default(),
+            };
+            let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
+            if let Some(path) = file {
+                app.command(Command::LoadFile(path));
+                if bench.is_some() {
+                    // The measured frames must all show the mesh.
+                    app.lab.wait_for_load();
+                }
+            }
+            if bench.is_some() {
+                if history > 0.0 {
+                    app.lab.advance_for(history);
+                }
+                app.bench = bench;
+            }
+            Ok(Box::new(app))
+        }),
+    )
+    .map_err(|e| CliError::Runtime(format!("cannot start the app: {e}")))
+}

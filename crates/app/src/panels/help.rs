@@ -1,0 +1,70 @@
+//! The F1 help overlay: controls and what the views show.
+
+use crate::view3d::overlay::AXIS_COLORS;
+
+/// Shows the help window while `open`.
+pub fn show(ctx: &egui::Context, open: &mut bool) {
+    egui::Window::new("Help (F1)")
+        .open(open)
+        .collapsible(false)
+        .resizable(false)
+        .default_width(460.0)
+        .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+        .show(ctx, |ui| {
+            ui.heading("On the body");
+            egui::Grid::new("help-gestures")
+                .striped(true)
+                .show(ui, |ui| {
+                    for (what, how) in [
+                        (
+                            "Click the body",
+                            "poke: impulse J along the view ray; ΔL = r × J flashes",
+                        ),
+                        (
+                            "Drag the body",
+                            "string: pulls the grabbed point towards the pointer",
+                        ),
+                        ("Drag the background", "orbit the camera"),
+                        ("Right or middle drag", "pan"),
+                        ("Wheel", "zoom"),
+                        ("F or double-click", "frame the body"),
+                    ] {
+                        ui.strong(what);
+                        ui.label(how);
+                        ui.end_row();
+                    }
+                });
+            ui.heading("Keys");
+            egui::Grid::new("help-keys").striped(true).show(ui, |ui| {
+                for (key, what) in [
+                    ("Space", "pause / run"),
+                    ("S", "one step (pauses)"),
+                    ("R", "reset to the start state"),
+                    ("1 2 3", "spin about principal axis 1, 2, 3"),
+                    ("F1", "this help"),
+                ] {
+                    ui.strong(key);
+                    ui.label(what);
+                    ui.end_row();
+                }
+            });
+            ui.heading("What you see");
+            ui.horizontal_wrapped(|ui| {
+                ui.label("Principal axes");
+                for (i, c) in AXIS_COLORS.iter().enumerate() {
+                    ui.colored_label(*c, format!("{}", i + 1));
+                }
+                ui.label(
+                    "(moments ascending). Orange ω and purple L arrows are in world space: with \
+                     no torque L stays fixed while ω wanders — the T-handle flips about it.",
+                );
+            });
+            ui.label(
+                "Spinning about axis 2 (intermediate moment) is unstable: a tiny perturbation \
+                 grows and the body flips periodically (Dzhanibekov effect). Axes 1 and 3 are \
+                 stable. Switch \"Simulation uses\" to the bounding box to see how the usual \
+                 approximation changes the motion; the Textbook model drops the gyroscopic term \
+                 and never flips.",
+            );
+        });
+}

@@ -1,0 +1,54 @@
+//! The 2D panels: the side panel (body, mass properties, motion, interaction, view), the plot
+//! panel and the F1 help. Each reads the model and records [`crate::model::Command`]s; none
+//! changes the model itself.
+
+pub mod help;
+pub mod plots;
+pub mod side;
+
+/// UI-only state of the panels (text being typed, plot following), not persisted.
+#[derive(Debug, Clone)]
+pub struct PanelState {
+    /// Path typed in the "open" field.
+    pub path: String,
+    /// Where "Export CSV" writes.
+    pub csv_path: String,
+    /// Whether the plots follow the latest time (sliding window) or stay where the user put them.
+    pub follow: bool,
+    /// Whether the F1 help is shown.
+    pub help_open: bool,
+}
+
+impl Default for PanelState {
+    fn default() -> Self {
+        Self {
+            path: String::new(),
+            csv_path: "inertia-lab.csv".to_owned(),
+            follow: true,
+            help_open: false,
+        }
+    }
+}
+
+/// A label and a number field tied to it (screen readers and the UI tests find it by the label).
+pub(crate) fn number(
+    ui: &mut egui::Ui,
+    label: &str,
+    value: &mut f64,
+    range: std::ops::RangeInclusive<f64>,
+    speed: f64,
+    suffix: &str,
+) -> egui::Response {
+    ui.horizontal(|ui| {
+        let l = ui.label(label);
+        ui.add(
+            egui::DragValue::new(value)
+                .range(range)
+                .speed(speed)
+                .suffix(suffix)
+                .max_decimals(6),
+        )
+        .labelled_by(l.id)
+    })
+    .inner
+}

@@ -1,0 +1,147 @@
+//! The plot panel: ω in the principal frame, L in world with |L|, and the energies, side by side
+//! with linked time axes over a sliding window; the energy drift as a number; CSV export.
+
+use std::path::PathBuf;
+
+use egui::Color32;
+use egui_plot::{Legend, Line, Plot, PlotPoints};
+
+use super::{PanelState, number};
+use crate::history::{History, Sample};
+use crate::model::{Command, Lab};
+use crate::view3d::overlay::AXIS_COLORS;
+
+type Series = (&'static str, Color32, fn(&Sample) -> f64);
+
+const OMEGA: [Series; 3] = [
+    ("ω1", AXIS_COLORS[0], |s| s.omega_principal[0]),
+    ("ω2", AXIS_COLORS[1], |s| s.omega_principal[1]),
+    ("ω3", AXIS_COLORS[2], |s| s.omega_principal[2]),
+];
+const MOMENTUM: [Series; 4] = [
+    ("Lx", AXIS_COLORS[0], |s| s.l[0]),
+    ("Ly", AXIS_COLORS[1], |s| s.l[1]),
+    ("Lz", AXIS_COLORS[2], |s| s.l[2]),
+    ("|L|", Color32::WHITE, |s| s.l_norm),
+];
+const ENERGY: [Series; 3] = [
+    ("T", Color32::from_rgb(255, 170, 60), |s| s.kinetic),
+    ("U", Color32::from_rgb(110, 200, 255), |s| s.potential),
+    ("E", Color32::WHITE, |s| s.energy),
+];
+
+/// Shows the controls row and the three plots.
+pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut Vec<Command>) {
+    let history = lab.history();
+    let mut settings = lab.settings.clone();
+    ui.horizontal(|ui| {
+        let label = if lab.sim().is_paused() {
+            "▶ Run"
+        } else {
+            "⏸ Pause"
+        };
+        if ui.button(label).clicked() {
+            commands.push(Command::TogglePause);
+        }
+        ui.checkbox(&mut state.follow, "Follow");
+        number(
+            ui,
+            "Window",
+            &mut settings.plots.window,
+            0.5..=600.0,
+            0.5,
+            " s",
+        );
+        number(
+            ui,
+            "History",
+            &mut settings.plots.history,
+            1.0..=600.0,
+            1.0,
+            " s",
+        );
+        ui.separator();
+        ui.label(drift_text(lab));
+        ui.separator();
+        let l = ui.label("CSV");
+        ui.add(egui::TextEdit::singleline(&mut state.csv_path).desired_width(120.0))
+            .labelled_by(l.id);
+        if ui.button("Export CSV").clicked() && !state.csv_path.trim().is_empty() {
+            commands.push(Command::ExportCsv(PathBuf::from(state.csv_path.trim())));
+        }
+        if ui
+            .button("…")
+            .on_hover_text("choose where to save")
+            .clicked()
+        {
+            commands.push(Command::ExportCsvDialog);
+        }
+    });
+    if settings != lab.settings {
+        commands.push(Command::Settings(Box::new(settings)));
+    }
+    let t_end = history.last().map_or(0.0, |s| s.t);
+    let window = lab.settings.plots.window;
+    let bounds = state.follow.then_some((t_end - window, t_end));
+    let since = bounds.map_or(f64::NEG_INFINITY, |b| b.0);
+    let width = (ui.available_width() / 3.0 - 8.0).max(50.0);
+    let height = (ui.available_height() - 20.0).max(60.0);
+    ui.horizontal(|ui| {
+        for (id, title, series) in [
+            ("plot-omega", "ω, principal frame (rad/s)", &OMEGA[..]),
+            ("plot-l", "L, world (kg·m²/s)", &MOMENTUM[..]),
+            ("plot-energy", "energy (J)", &ENERGY[..]),
+        ] {
+            ui.vertical(|ui| {
+                ui.small(title);
+                draw(ui, id, history, series, since, bounds, [width, height]);
+            });
+        }
+    });
+}
+
+/// One plot: decimated to about two points per horizontal pixel (min and max per bucket), so
+/// its cost does not grow with the history length.
+fn draw(
+    ui: &mut egui::Ui,
+    id: &str,
+    history: &History,
+    series: &[Series],
+    since: f64,
+    bounds: Option<(f64, f64)>,
+    [width, height]: [f32; 2],
+) {
+    let max_points = (width as usize).max(64) * 2;
+    Plot::new(id)
+        .legend(Legend::default())
+        .link_axis(egui::Id::unique("plots-time"), [true, false])
+        .link_cursor(egui::Id::unique("plots-time"), [true, false])
+        .allow_scroll(false)
+        .width(width)
+        .height(height)
+        .show(ui, |p| {
+            if let Some((a, b)) = bounds {
+                p.set_plot_bounds_x(a..=b.max(a + 1e-3));
+                p.set_auto_bounds([false, true]);
+            }
+            for (name, color, f) in series {
+                let points = history.series(since, max_points, f);
+                p.line(
+                    Line::new(*name, PlotPoints::new(points))
+                        .color(*color)
+                        .width(1.5),
+                );
+            }
+        });
+}
+
+/// The energy drift readout.
+fn drift_text(lab: &Lab) -> String {
+    if lab.string_view().is_some() {
+        return "ΔE/E: n/a while the string pulls".to_owned();
+    }
+    match lab.history().energy_drift() {
+        Some((now, max)) => format!("ΔE/E₀ {now:+.2e} (max {max:.2e})"),
+        None => "ΔE/E₀: n/a (E₀ = 0)".to_owned(),
+    }
+}

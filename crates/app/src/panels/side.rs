@@ -1,0 +1,381 @@
+//! The side panel: body and loading, mass-properties table, the inertia source, motion controls
+//! and presets, interaction strengths, view toggles, diagnostics and warnings.
+
+use std::path::PathBuf;
+
+use egui::{Color32, RichText};
+use rbcore::{Integrator, RotationModel};
+
+use super::{PanelState, number};
+use crate::loader::SAMPLES;
+use crate::model::{Command, Lab};
+use crate::settings::{Equivalent, InertiaSource, MassSpec};
+
+/// Shows the panel contents.
+pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut Vec<Command>) {
+    let mut s = lab.settings.clone();
+    egui::ScrollArea::vertical().show(ui, |ui| {
+        ui.heading(format!("Inertia Lab — {}", lab.body().name));
+        body_section(ui, lab, state, commands, &mut s);
+        table_section(ui, lab, &mut s);
+        motion_section(ui, lab, commands, &mut s);
+        interaction_section(ui, lab, &mut s);
+        view_section(ui, &mut s);
+        diagnostics_section(ui, lab);
+        ui.separator();
+        if ui.button("Reset settings").clicked() {
+            commands.push(Command::ResetSettings);
+        }
+    });
+    if s != lab.settings {
+        commands.push(Command::Settings(Box::new(s)));
+    }
+}
+
+fn body_section(
+    ui: &mut egui::Ui,
+    lab: &Lab,
+    state: &mut PanelState,
+    commands: &mut Vec<Command>,
+    s: &mut crate::settings::AppSettings,
+) {
+    egui::CollapsingHeader::new("Body")
+        .default_open(true)
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                if ui
+                    .add_enabled(!lab.dialog_open(), egui::Button::new("Open mesh…"))
+                    .clicked()
+                {
+                    commands.push(Command::OpenDialog);
+                }
+                ui.label("or drop an OBJ/STL file on the window");
+            });
+            ui.horizontal(|ui| {
+                let l = ui.label("Path");
+                let edit = ui
+                    .add(egui::TextEdit::singleline(&mut state.path).desired_width(150.0))
+                    .labelled_by(l.id);
+                let enter = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                if (ui.button("Load").clicked() || enter) && !state.path.trim().is_empty() {
+                    commands.push(Command::LoadFile(PathBuf::from(state.path.trim())));
+                }
+            });
+            ui.horizontal_wrapped(|ui| {
+                ui.label("Samples:");
+                for (label, ..) in SAMPLES {
+                    if ui.small_button(label).clicked() {
+                        commands.push(Command::LoadSample(label.to_owned()));
+                    }
+                }
+            });
+            if let Some(l) = lab.loading() {
+                ui.horizontal(|ui| {
+                    ui.spinner();
+                    ui.label(format!("{}: {}", l.path.display(), l.stage));
+                });
+                ui.add(egui::ProgressBar::new(l.fraction).show_percentage());
+            }
+            number(ui, "Size ×", &mut s.body.scale, 1e-3..=1e3, 0.01, "");
+            ui.horizontal(|ui| {
+                let density = matches!(s.body.mass, MassSpec::Density(_));
+                let exact = lab.properties(InertiaSource::Exact);
+                if ui.radio(density, "Density").clicked() && !density {
+                    s.body.mass = MassSpec::Density(
+                        lab.body().analysis.properties.mass.recip() * exact.mass
+                            / s.body.scale.powi(3),
+                    );
+                }
+                if ui.radio(!density, "Mass").clicked() && density {
+                    s.body.mass = MassSpec::Mass(exact.mass);
+                }
+            });
+            match &mut s.body.mass {
+                MassSpec::Density(d) => {
+                    number(ui, "Density", d, 1e-6..=1e6, 10.0, " kg/m³");
+                }
+                MassSpec::Mass(m) => {
+                    number(ui, "Mass", m, 1e-9..=1e9, 0.01, " kg");
+                }
+            }
+        });
+}
+
+fn fmt(x: f64) -> String {
+    format!("{x:.4e}")
+}
+
+fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::AppSettings) {
+    egui::CollapsingHeader::new("Mass properties")
+        .default_open(true)
+        .show(ui, |ui| {
+            let [exact, bbox, points] = InertiaSource::ALL.map(|src| lab.properties(src));
+            let [_, cb, cp] = InertiaSource::ALL.map(|src| lab.comparison(src));
+            egui::Grid::new("mass-table")
+                .striped(true)
+                .num_columns(4)
+                .show(ui, |ui| {
+                    ui.label("");
+                    ui.strong("exact");
+                    ui.strong("bbox");
+                    ui.strong("points");
+                    ui.end_row();
+                    ui.label("mass (kg)");
+                    ui.label(fmt(exact.mass));
+                    ui.label("same");
+                    ui.label("same");
+                    ui.end_row();
+                    for i in 0..3 {
+                        ui.label(format!("I{} (kg·m²)", i + 1));
+                        ui.label(fmt(exact.principal.moments[i]));
+                        ui.label(fmt(bbox.principal.moments[i]));
+                        ui.label(fmt(points.principal.moments[i]));
+                        ui.end_row();
+                    }
+                    for i in 0..3 {
+                        ui.label(format!("error I{}", i + 1));
+                        ui.label("—");
+                        for c in [&cb, &cp] {
+                            let e = c.moment_error[i] * 100.0;
+                            ui.label(error_text(format!("{e:+.1} %"), e.abs() > 5.0));
+                        }
+                        ui.end_row();
+                    }
+                    for i in 0..3 {
+                        ui.label(format!("axis {} angle", i + 1));
+                        ui.label("—");
+                        for c in [&cb, &cp] {
+                            match c.axis_angle[i] {
+                                Some(a) => {
+                                    let deg = a.to_degrees();
+                                    ui.label(error_text(format!("{deg:.1}°"), deg > 5.0))
+                                }
+                                None => ui.label("n/a"),
+                            };
+                        }
+                        ui.end_row();
+                    }
+                    ui.label("CoM offset (m)");
+                    ui.label("—");
+                    ui.label(fmt(cb.com_offset));
+                    ui.label(fmt(cp.com_offset));
+                    ui.end_row();
+                });
+            let c = exact.center_of_mass;
+            ui.small(format!(
+                "exact centre of mass ({:.4e}, {:.4e}, {:.4e}) m",
+                c.x, c.y, c.z
+            ));
+            ui.label(RichText::new("Simulation uses").strong());
+            ui.horizontal(|ui| {
+                for src in InertiaSource::ALL {
+                    ui.radio_value(&mut s.body.source, src, src.label());
+                }
+            });
+        });
+}
+
+fn error_text(text: String, large: bool) -> RichText {
+    if large {
+        RichText::new(text).color(Color32::from_rgb(255, 140, 90))
+    } else {
+        RichText::new(text)
+    }
+}
+
+fn motion_section(
+    ui: &mut egui::Ui,
+    lab: &Lab,
+    commands: &mut Vec<Command>,
+    s: &mut crate::settings::AppSettings,
+) {
+    egui::CollapsingHeader::new("Motion")
+        .default_open(true)
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                let label = if lab.sim().is_paused() {
+                    "▶ Run"
+                } else {
+                    "⏸ Pause"
+                };
+                if ui.button(label).clicked() {
+                    commands.push(Command::TogglePause);
+                }
+                if ui.button("Step").clicked() {
+                    commands.push(Command::Step);
+                }
+                if ui.button("Reset").clicked() {
+                    commands.push(Command::Reset);
+                }
+                ui.label(format!("t = {:.2} s", lab.sim().time()));
+            });
+            ui.horizontal(|ui| {
+                for axis in 0..3 {
+                    if ui
+                        .button(format!("Spin axis {}", axis + 1))
+                        .on_hover_text("about this principal axis, plus a 2 % perturbation")
+                        .clicked()
+                    {
+                        commands.push(Command::Preset(axis));
+                    }
+                }
+            });
+            number(
+                ui,
+                "Spin rate",
+                &mut s.body.spin_rate,
+                0.0..=1000.0,
+                0.1,
+                " rad/s",
+            );
+            egui::ComboBox::from_label("Integrator")
+                .selected_text(s.physics.integrator.name())
+                .show_ui(ui, |ui| {
+                    for i in Integrator::ALL {
+                        ui.selectable_value(&mut s.physics.integrator, i, i.name());
+                    }
+                });
+            egui::ComboBox::from_label("Rotation model")
+                .selected_text(s.physics.model.name())
+                .show_ui(ui, |ui| {
+                    for m in [RotationModel::Full, RotationModel::Textbook] {
+                        ui.selectable_value(&mut s.physics.model, m, m.name());
+                    }
+                });
+            number(
+                ui,
+                "Gravity (−y)",
+                &mut s.physics.gravity,
+                -100.0..=100.0,
+                0.1,
+                " m/s²",
+            );
+            number(
+                ui,
+                "Linear damping",
+                &mut s.physics.linear_damping,
+                0.0..=100.0,
+                0.01,
+                " 1/s",
+            );
+            number(
+                ui,
+                "Angular damping",
+                &mut s.physics.angular_damping,
+                0.0..=100.0,
+                0.01,
+                " 1/s",
+            );
+            number(
+                ui,
+                "Time scale",
+                &mut s.physics.time_scale,
+                0.0..=10.0,
+                0.01,
+                "×",
+            );
+            number(ui, "Time step", &mut s.physics.dt, 1e-5..=0.1, 1e-4, " s");
+        });
+}
+
+fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::AppSettings) {
+    egui::CollapsingHeader::new("Poke and string")
+        .default_open(false)
+        .show(ui, |ui| {
+            let i = &mut s.interaction;
+            number(
+                ui,
+                "Poke Δv = J/m",
+                &mut i.poke_delta_v,
+                0.0..=100.0,
+                0.01,
+                " m/s",
+            );
+            ui.small(format!("J = {:.4e} N·s", lab.poke_impulse()));
+            number(
+                ui,
+                "String frequency",
+                &mut i.string_frequency,
+                0.05..=60.0,
+                0.05,
+                " Hz",
+            );
+            number(
+                ui,
+                "String damping ratio",
+                &mut i.string_damping,
+                0.0..=10.0,
+                0.01,
+                "",
+            );
+            number(
+                ui,
+                "Force cap F/m",
+                &mut i.string_max_accel,
+                0.0..=1e4,
+                1.0,
+                " m/s²",
+            );
+            ui.small(format!("F max = {:.4e} N", lab.string_max_force()));
+        });
+}
+
+fn view_section(ui: &mut egui::Ui, s: &mut crate::settings::AppSettings) {
+    egui::CollapsingHeader::new("View")
+        .default_open(false)
+        .show(ui, |ui| {
+            let v = &mut s.view;
+            ui.checkbox(&mut v.wireframe, "Wireframe");
+            ui.checkbox(&mut v.bounding_box, "Bounding box");
+            ui.checkbox(&mut v.center_of_mass, "Centre of mass");
+            ui.checkbox(&mut v.principal_axes, "Principal axes");
+            ui.checkbox(&mut v.omega_arrow, "ω arrow (world)");
+            ui.checkbox(&mut v.l_arrow, "L arrow (world)");
+            ui.horizontal(|ui| {
+                ui.label("Equivalent inertia:");
+                ui.radio_value(&mut v.equivalent, Equivalent::None, "none");
+                ui.radio_value(&mut v.equivalent, Equivalent::Box, "box");
+                ui.radio_value(&mut v.equivalent, Equivalent::Ellipsoid, "ellipsoid");
+            });
+        });
+}
+
+fn diagnostics_section(ui: &mut egui::Ui, lab: &Lab) {
+    let a = &lab.body().analysis;
+    egui::CollapsingHeader::new(if a.warnings.is_empty() {
+        "Mesh diagnostics".to_owned()
+    } else {
+        format!("Mesh diagnostics ⚠ {}", a.warnings.len())
+    })
+    .default_open(!a.warnings.is_empty())
+    .show(ui, |ui| {
+        let d = &a.diagnostics;
+        ui.label(format!(
+            "{} vertices, {} faces ({} triangles), {} edges",
+            d.vertices, d.faces, d.triangles, d.edges
+        ));
+        ui.label(format!(
+            "open edges {}, non-manifold {}, inconsistent {}, degenerate faces {}, non-planar {}",
+            d.open_edges,
+            d.nonmanifold_edges,
+            d.inconsistent_edges,
+            d.degenerate_faces,
+            d.nonplanar_faces
+        ));
+        if let Some(v) = a.volume {
+            ui.label(format!(
+                "volume {v:.5e} m³ (unscaled), area {:.5e} m²",
+                d.surface_area
+            ));
+        }
+        if a.flipped {
+            ui.colored_label(
+                Color32::YELLOW,
+                "faces wound inwards: results are for the flipped mesh",
+            );
+        }
+        for w in &a.warnings {
+            ui.colored_label(Color32::YELLOW, format!("⚠ {w}"));
+        }
+    });
+}

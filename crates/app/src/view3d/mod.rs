@@ -1,0 +1,275 @@
+//! The 3D view: camera control, the poke and string gestures (recorded as commands), the three-d
+//! paint callback for the shaded body, and the overlay drawn with egui on top.
+
+pub mod convert;
+pub mod overlay;
+pub mod scene;
+
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use egui::{Color32, PointerButton, Sense, Stroke};
+use nalgebra::{Matrix4, Point3, Vector3};
+
+use crate::camera::OrbitCamera;
+use crate::model::{Command, Lab};
+use convert::FrameParams;
+use overlay::{Overlay, WIREFRAME_MAX_EDGES};
+use scene::Scene;
+
+/// What a primary-button drag is doing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Gesture {
+    /// Turning the camera (the drag started off the body).
+    Orbit,
+    /// Pulling the string, moving its end in the plane through `point` with normal `normal`.
+    String {
+        point: Point3<f64>,
+        normal: Vector3<f64>,
+    },
+}
+
+/// View state of the 3D panel: camera and the gesture in progress (not persisted, not model).
+#[derive(Debug, Clone)]
+pub struct View3d {
+    /// The camera.
+    pub camera: OrbitCamera,
+    gesture: Option<Gesture>,
+    /// Mesh generation last framed, to frame each new body once.
+    framed: Option<u64>,
+}
+
+impl Default for View3d {
+    fn default() -> Self {
+        Self {
+            camera: OrbitCamera::default(),
+            gesture: None,
+            framed: None,
+        }
+    }
+}
+
+/// The one-line hint under the view (also in the F1 help).
+pub const HINT: &str = "Click body: poke · Drag body: string · Drag background: orbit · \
+                        Right/middle drag: pan · Wheel: zoom · F: frame · Space: pause · S: step · \
+                        R: reset · F1: help";
+
+impl View3d {
+    /// Whether a gesture is in progress (the app keeps repainting).
+    pub fn is_dragging(&self) -> bool {
+        self.gesture.is_some()
+    }
+
+    /// Centres the camera on the body.
+    pub fn frame_body(&mut self, lab: &Lab) {
+        let (c, r) = lab.bounding_sphere();
+        self.camera.frame(c, r);
+    }
+
+    /// Shows the view in the remaining space of `ui`.
+    pub fn show(
+        &mut self,
+        ui: &mut egui::Ui,
+        lab: &Lab,
+        scene: Option<&Arc<Mutex<Scene>>>,
+        commands: &mut Vec<Command>,
+    ) {
+        if self.framed != Some(lab.generation()) {
+            self.framed = Some(lab.generation());
+            self.frame_body(lab);
+        }
+        let hint_height = ui.text_style_height(&egui::TextStyle::Small) + 6.0;
+        let mut rect = ui.available_rect_before_wrap();
+        rect.max.y -= hint_height;
+        let response = ui
+            .allocate_rect(rect, Sense::click_and_drag())
+            .on_hover_cursor(egui::CursorIcon::Crosshair);
+        self.handle_input(ui, &response, lab, commands);
+
+        let (origin, params) = self.frame_params(lab);
+        match scene {
+            Some(scene) => {
+                if let Ok(mut s) = scene.lock()
+                    && s.generation() != Some(lab.generation())
+                {
+                    s.set_mesh(
+                        lab.generation(),
+                        &convert::cpu_mesh(&lab.body().mesh, &origin),
+                    );
+                }
+                let scene = Arc::clone(scene);
+                let callback = egui_glow::CallbackFn::new(move |info, _painter| {
+                    if let Ok(mut s) = scene.lock() {
+                        s.paint(&info, &params);
+                    }
+                });
+                ui.painter().add(egui::PaintCallback {
+                    rect,
+                    callback: Arc::new(callback),
+                });
+            }
+            None => {
+                let [r, g, b] = scene::BACKGROUND.map(|c| (c * 255.0) as u8);
+                ui.painter()
+                    .rect_filled(rect, 0.0, Color32::from_rgb(r, g, b));
+                ui.painter().text(
+                    rect.center(),
+                    egui::Align2::CENTER_CENTER,
+                    "3D view unavailable (no OpenGL context)",
+                    egui::FontId::proportional(14.0),
+                    Color32::GRAY,
+                );
+            }
+        }
+        self.paint_overlay(ui, rect, lab);
+        let mut hint = HINT.to_owned();
+        if lab.settings.view.wireframe && lab.body().mesh.edges.len() > WIREFRAME_MAX_EDGES {
+            hint = format!("Wireframe off above {WIREFRAME_MAX_EDGES} edges · {hint}");
+        }
+        ui.allocate_ui(egui::vec2(rect.width(), hint_height), |ui| {
+            ui.small(hint);
+        });
+    }
+
+    /// Camera values and the mesh → world matrix for the renderer, with the upload origin (the
+    /// mesh's bounding-sphere centre).
+    fn frame_params(&self, lab: &Lab) -> (Point3<f64>, FrameParams) {
+        let origin = lab.body().sphere.0;
+        let body = lab.sim().body();
+        let s = lab.scale();
+        let c = lab.used_properties().center_of_mass;
+        // x ↦ R (s·x − c) + r
+        let model = Matrix4::new_translation(&body.position().coords)
+            * body.body_orientation().to_homogeneous()
+            * Matrix4::new_translation(&(-c.coords))
+            * Matrix4::new_scaling(s);
+        (origin, FrameParams::new(&self.camera, &model, &origin))
+    }
+
+    fn handle_input(
+        &mut self,
+        ui: &egui::Ui,
+        response: &egui::Response,
+        lab: &Lab,
+        commands: &mut Vec<Command>,
+    ) {
+        let rect = response.rect;
+        let size = convert::size(rect.size());
+        let ray_at =
+            |cam: &OrbitCamera, pos: egui::Pos2| cam.ray(convert::view_pixel(pos, rect.min), size);
+        if response.drag_started_by(PointerButton::Primary) {
+            let origin = ui
+                .input(|i| i.pointer.press_origin())
+                .or(response.interact_pointer_pos());
+            let hit = origin.and_then(|p| lab.pick(&ray_at(&self.camera, p)));
+            self.gesture = Some(match hit {
+                Some(hit) => {
+                    commands.push(Command::Grab(hit.point));
+                    Gesture::String {
+                        point: hit.point,
+                        normal: self.camera.forward(),
+                    }
+                }
+                None => Gesture::Orbit,
+            });
+        }
+        if response.dragged_by(PointerButton::Primary) {
+            match self.gesture {
+                Some(Gesture::Orbit) => {
+                    let d = response.drag_delta();
+                    self.camera.orbit(f64::from(d.x), f64::from(d.y));
+                }
+                Some(Gesture::String { point, normal }) => {
+                    if let Some(pos) = response.interact_pointer_pos()
+                        && let Some(target) = ray_at(&self.camera, pos).hit_plane(&point, &normal)
+                    {
+                        commands.push(Command::Drag(target));
+                    }
+                }
+                None => {}
+            }
+        }
+        if response.drag_stopped() {
+            if matches!(self.gesture, Some(Gesture::String { .. })) {
+                commands.push(Command::Release);
+            }
+            self.gesture = None;
+        }
+        if response.dragged_by(PointerButton::Secondary)
+            || response.dragged_by(PointerButton::Middle)
+        {
+            let d = response.drag_delta();
+            self.camera
+                .pan(f64::from(d.x), f64::from(d.y), f64::from(rect.height()));
+        }
+        if response.clicked_by(PointerButton::Primary)
+            && let Some(pos) = response.interact_pointer_pos()
+        {
+            let ray = ray_at(&self.camera, pos);
+            if let Some(hit) = lab.pick(&ray) {
+                commands.push(Command::Poke {
+                    point: hit.point,
+                    direction: ray.dir,
+                });
+            }
+        }
+        if response.double_clicked() {
+            self.frame_body(lab);
+        }
+        if response.hovered() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+            if scroll != 0.0 {
+                self.camera.zoom((-f64::from(scroll) * 0.002).exp());
+            }
+        }
+    }
+
+    fn paint_overlay(&self, ui: &egui::Ui, rect: egui::Rect, lab: &Lab) {
+        let overlay = Overlay::build(lab, &lab.settings.view, Instant::now());
+        let painter = ui.painter_at(rect);
+        let size = convert::size(rect.size());
+        let project = |p: &Point3<f64>| {
+            self.camera
+                .project(p, size)
+                .map(|q| convert::screen(&q, rect.min))
+        };
+        for s in &overlay.segments {
+            let (Some(a), Some(b)) = (project(&s.a), project(&s.b)) else {
+                continue;
+            };
+            painter.line_segment([a, b], Stroke::new(s.width, s.color));
+            if s.arrow {
+                let d = b - a;
+                let len = d.length();
+                if len > 1.0 {
+                    let u = d / len;
+                    let n = egui::vec2(-u.y, u.x);
+                    let head = 10.0_f32.min(len * 0.5);
+                    for side in [-1.0, 1.0] {
+                        painter.line_segment(
+                            [b, b - u * head + n * (side * head * 0.5)],
+                            Stroke::new(s.width, s.color),
+                        );
+                    }
+                }
+            }
+        }
+        for (p, color) in &overlay.markers {
+            if let Some(q) = project(p) {
+                painter.circle_filled(q, 4.0, *color);
+                painter.circle_stroke(q, 4.0, Stroke::new(1.0, Color32::BLACK));
+            }
+        }
+        for l in &overlay.labels {
+            if let Some(q) = project(&l.at) {
+                painter.text(
+                    q,
+                    egui::Align2::LEFT_BOTTOM,
+                    &l.text,
+                    egui::FontId::proportional(13.0),
+                    l.color,
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,310 @@
+//! What the 3D view draws over the shaded mesh, as world-space segments, markers and labels:
+//! wireframe, bounding box, centre of mass, principal axes, the equivalent box or ellipsoid, the
+//! ω and L arrows, the poke's ΔL and the string with its force. Plain f64 geometry (tested
+//! without a GPU); `view3d` projects it with the camera and paints it with egui.
+
+use std::time::Instant;
+
+use egui::Color32;
+use nalgebra::{Point3, Vector3};
+
+use crate::model::Lab;
+use crate::settings::{Equivalent, ViewSettings};
+
+/// Above this many polygon edges the wireframe is skipped: egui would spend more time on it than
+/// the whole frame budget.
+pub const WIREFRAME_MAX_EDGES: usize = 60_000;
+
+/// A straight line in world space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// Start.
+    pub a: Point3<f64>,
+    /// End.
+    pub b: Point3<f64>,
+    /// Colour.
+    pub color: Color32,
+    /// Width in points.
+    pub width: f32,
+    /// Draw an arrow head at `b`.
+    pub arrow: bool,
+}
+
+/// Text at a world point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    /// Anchor.
+    pub at: Point3<f64>,
+    /// Text.
+    pub text: String,
+    /// Colour.
+    pub color: Color32,
+}
+
+/// Everything to draw.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Overlay {
+    /// Lines and arrows.
+    pub segments: Vec<Segment>,
+    /// Dots (world point, colour).
+    pub markers: Vec<(Point3<f64>, Color32)>,
+    /// Labels.
+    pub labels: Vec<Label>,
+}
+
+/// Axis colours 1, 2, 3 (moments ascending).
+pub const AXIS_COLORS: [Color32; 3] = [
+    Color32::from_rgb(235, 80, 80),
+    Color32::from_rgb(90, 200, 90),
+    Color32::from_rgb(90, 140, 255),
+];
+const OMEGA_COLOR: Color32 = Color32::from_rgb(255, 160, 40);
+const L_COLOR: Color32 = Color32::from_rgb(220, 90, 255);
+const STRING_COLOR: Color32 = Color32::from_rgb(250, 230, 120);
+const FORCE_COLOR: Color32 = Color32::from_rgb(255, 110, 110);
+const GUIDE_COLOR: Color32 = Color32::from_rgb(150, 170, 190);
+
+impl Overlay {
+    fn line(&mut self, a: Point3<f64>, b: Point3<f64>, color: Color32, width: f32) {
+        self.segments.push(Segment {
+            a,
+            b,
+            color,
+            width,
+            arrow: false,
+        });
+    }
+
+    fn arrow(&mut self, from: Point3<f64>, v: Vector3<f64>, color: Color32, label: &str) {
+        if !(v.iter().all(|x| x.is_finite()) && v.norm() > 0.0) {
+            return;
+        }
+        self.segments.push(Segment {
+            a: from,
+            b: from + v,
+            color,
+            width: 3.0,
+            arrow: true,
+        });
+        self.labels.push(Label {
+            at: from + v * 1.08,
+            text: label.to_owned(),
+            color,
+        });
+    }
+
+    /// The overlay for the lab's current state.
+    pub fn build(lab: &Lab, view: &ViewSettings, now: Instant) -> Self {
+        let mut o = Overlay::default();
+        let body = lab.sim().body();
+        let (_, radius) = lab.bounding_sphere();
+        let com = body.position();
+        let mesh = &lab.body().mesh;
+        if view.wireframe && mesh.edges.len() <= WIREFRAME_MAX_EDGES {
+            let color = Color32::from_rgba_unmultiplied(20, 20, 20, 200);
+            for [a, b] in &mesh.edges {
+                o.line(
+                    lab.mesh_to_world(&mesh.positions[*a as usize]),
+                    lab.mesh_to_world(&mesh.positions[*b as usize]),
+                    color,
+                    1.0,
+                );
+            }
+        }
+        if view.bounding_box {
+            let (lo, hi) = lab.body().analysis.diagnostics.bounding_box;
+            let corner = |i: usize| {
+                Point3::new(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                )
+            };
+            for (a, b) in cube_edges() {
+                o.line(
+                    lab.mesh_to_world(&corner(a)),
+                    lab.mesh_to_world(&corner(b)),
+                    GUIDE_COLOR,
+                    1.5,
+                );
+            }
+        }
+        let principal = body.orientation();
+        if view.principal_axes {
+            for (i, color) in AXIS_COLORS.iter().enumerate() {
+                let axis = principal * Vector3::ith(i, 0.8 * radius);
+                o.line(com - axis, com + axis, *color, 2.0);
+                o.labels.push(Label {
+                    at: com + axis * 1.05,
+                    text: format!("{}", i + 1),
+                    color: *color,
+                });
+            }
+        }
+        if view.equivalent != Equivalent::None {
+            let m = body.mass();
+            let i = body.moments();
+            // Half-extents of the uniform box and semi-axes of the uniform ellipsoid with the same
+            // mass and principal moments: I₁ = m(b² + c²)/3 for a box of half-extents a, b, c,
+            // I₁ = m(b² + c²)/5 for an ellipsoid.
+            let k = if view.equivalent == Equivalent::Box {
+                1.5
+            } else {
+                2.5
+            };
+            let half = Vector3::from_fn(|a, _| {
+                let (j, l) = ((a + 1) % 3, (a + 2) % 3);
+                (k * (i[j] + i[l] - i[a]) / m).max(0.0).sqrt()
+            });
+            let to_world = |p: Vector3<f64>| com + principal * p;
+            if view.equivalent == Equivalent::Box {
+                let corner = |c: usize| {
+                    Vector3::from_fn(|a, _| if c >> a & 1 == 0 { -half[a] } else { half[a] })
+                };
+                for (a, b) in cube_edges() {
+                    o.line(
+                        to_world(corner(a)),
+                        to_world(corner(b)),
+                        Color32::LIGHT_BLUE,
+                        1.5,
+                    );
+                }
+            } else {
+                let n = 48;
+                for plane in 0..3 {
+                    let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
+                    let point = |s: usize| {
+                        let t = std::f64::consts::TAU * s as f64 / n as f64;
+                        let mut p = Vector3::zeros();
+                        p[u] = half[u] * t.cos();
+                        p[v] = half[v] * t.sin();
+                        to_world(p)
+                    };
+                    for s in 0..n {
+                        o.line(point(s), point(s + 1), Color32::LIGHT_BLUE, 1.5);
+                    }
+                }
+            }
+        }
+        if view.center_of_mass {
+            o.markers.push((com, Color32::WHITE));
+            let exact = lab.properties(crate::settings::InertiaSource::Exact);
+            let used = lab.used_properties();
+            if (exact.center_of_mass - used.center_of_mass).norm() > 1e-9 * radius {
+                let c = lab.mesh_to_world(&Point3::from(exact.center_of_mass.coords / lab.scale()));
+                o.markers.push((c, Color32::from_rgb(120, 220, 255)));
+                o.labels.push(Label {
+                    at: c,
+                    text: "exact CoM".to_owned(),
+                    color: Color32::from_rgb(120, 220, 255),
+                });
+            }
+        }
+        // Arrow lengths relative to the preset spin (ω) and the angular momentum it gives about
+        // the intermediate axis (L), so the arrows keep their size across bodies and units.
+        let rate = lab.settings.body.spin_rate.abs().max(1e-9);
+        let arrow_len = 1.6 * radius;
+        let l_ref = body.moments()[1] * rate;
+        let scaled = |v: Vector3<f64>, reference: f64| {
+            let n = v.norm() / reference;
+            let len = arrow_len * n.min(2.5);
+            v.try_normalize(0.0).map(|u| u * len).unwrap_or_default()
+        };
+        if view.omega_arrow {
+            o.arrow(com, scaled(body.omega_world(), rate), OMEGA_COLOR, "ω");
+        }
+        if view.l_arrow {
+            o.arrow(com, scaled(body.angular_momentum(), l_ref), L_COLOR, "L");
+        }
+        if let Some(p) = lab.poke_flash().filter(|p| p.until > now) {
+            let j_len = 0.6 * radius;
+            let dir = p.impulse.try_normalize(0.0).unwrap_or_default();
+            o.segments.push(Segment {
+                a: p.point - dir * j_len,
+                b: p.point,
+                color: FORCE_COLOR,
+                width: 3.0,
+                arrow: true,
+            });
+            o.labels.push(Label {
+                at: p.point - dir * j_len,
+                text: format!("J = {:.3e} N·s", p.impulse.norm()),
+                color: FORCE_COLOR,
+            });
+            o.arrow(
+                com,
+                scaled(p.delta_l, l_ref),
+                Color32::from_rgb(255, 255, 255),
+                &format!("ΔL = r × J ({:.3e})", p.delta_l.norm()),
+            );
+        }
+        if let Some(s) = lab.string_view() {
+            o.line(s.attachment, s.target, STRING_COLOR, 2.0);
+            o.markers.push((s.target, STRING_COLOR));
+            let cap = lab.string_max_force().max(f64::MIN_POSITIVE);
+            let f = s.force * (arrow_len / cap).min(1e12);
+            o.arrow(
+                s.attachment,
+                f,
+                FORCE_COLOR,
+                &format!("|F| = {:.3} N", s.force.norm()),
+            );
+        }
+        o
+    }
+}
+
+/// The 12 edges of a cube whose corners are numbered by bits (x = 1, y = 2, z = 4).
+fn cube_edges() -> impl Iterator<Item = (usize, usize)> {
+    (0..8usize).flat_map(|c| {
+        [1usize, 2, 4]
+            .into_iter()
+            .filter(move |bit| c & bit == 0)
+            .map(move |bit| (c, c | bit))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Command;
+    use crate::settings::AppSettings;
+
+    #[test]
+    fn cube_has_twelve_unit_edges() {
+        let edges: Vec<_> = cube_edges().collect();
+        assert_eq!(edges.len(), 12);
+        assert!(edges.iter().all(|(a, b)| (a ^ b).count_ones() == 1));
+    }
+
+    #[test]
+    fn equivalent_box_of_a_box_is_the_box_and_everything_is_finite() {
+        let mut lab = Lab::new(AppSettings::default()).expect("lab");
+        lab.apply(Command::LoadSample("Book".to_owned()));
+        let view = ViewSettings {
+            wireframe: true,
+            bounding_box: true,
+            equivalent: Equivalent::Box,
+            ..ViewSettings::default()
+        };
+        let o = Overlay::build(&lab, &view, Instant::now());
+        let com = lab.sim().body().position();
+        // The book is a 1 × 4 × 7 box: its equivalent box has half-diagonal √(0.25+4+12.25).
+        let box_edges = o
+            .segments
+            .iter()
+            .filter(|s| s.color == Color32::LIGHT_BLUE)
+            .collect::<Vec<_>>();
+        assert_eq!(box_edges.len(), 12);
+        for s in box_edges {
+            assert!(((s.a - com).norm() - 16.5f64.sqrt()).abs() < 1e-9);
+        }
+        let all_finite = |p: &Point3<f64>| p.iter().all(|x| x.is_finite());
+        assert!(
+            o.segments
+                .iter()
+                .all(|s| all_finite(&s.a) && all_finite(&s.b))
+        );
+        assert!(o.labels.iter().any(|l| l.text == "L"));
+    }
+}
