@@ -292,7 +292,12 @@ pub fn quaternion_wxyz(rotation: &Rotation3<f64>) -> [f64; 4] {
     let c = q.coords; // nalgebra stores [x, y, z, w]
     let sign = if c.w < 0.0 { -1.0 } else { 1.0 };
     // Adding 0.0 turns a -0.0 into 0.0.
-    [c.w * sign + 0.0, c.x * sign + 0.0, c.y * sign + 0.0, c.z * sign + 0.0]
+    [
+        c.w * sign + 0.0,
+        c.x * sign + 0.0,
+        c.y * sign + 0.0,
+        c.z * sign + 0.0,
+    ]
 }
 
 /// Fixed-axis roll, pitch, yaw (URDF, SDFormat): `R = Rz(yaw) · Ry(pitch) · Rx(roll)`.
