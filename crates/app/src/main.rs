@@ -21,6 +21,8 @@ mod props;
 mod report;
 mod settings;
 mod simulate;
+#[cfg(test)]
+mod ui_tests;
 mod view3d;
 
 use std::process::ExitCode;
