@@ -134,7 +134,7 @@ impl LabApp {
                         ui.visuals().text_color()
                     };
                     ui.colored_label(color, &m.text);
-                    if ui.small_button("✖").on_hover_text("dismiss").clicked() {
+                    if ui.small_button("x").on_hover_text("dismiss").clicked() {
                         commands.push(Command::DismissMessage);
                     }
                 }
@@ -155,7 +155,8 @@ impl LabApp {
         if !hide_plots {
             egui::Panel::bottom("plots")
                 .resizable(true)
-                .default_size(250.0)
+                .default_size(260.0)
+                .min_size(200.0)
                 .show(ui, |ui| {
                     panels::plots::show(ui, &self.lab, &mut self.panels, &mut commands);
                 });

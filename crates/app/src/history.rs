@@ -175,9 +175,9 @@ impl History {
     ) -> Vec<[f64; 2]> {
         let start = self.samples.partition_point(|s| s.t < since);
         let n = self.samples.len() - start;
-        let buckets = (max_points / 2).max(1);
+        let buckets = (max_points / 2).clamp(1, n.max(1));
         let per_bucket = n.div_ceil(buckets).max(1);
-        let mut out = Vec::with_capacity(2 * buckets + 2);
+        let mut out = Vec::with_capacity(2 * buckets);
         let mut i = start;
         while i < self.samples.len() {
             let end = (i + per_bucket).min(self.samples.len());

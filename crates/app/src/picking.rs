@@ -176,13 +176,19 @@ fn empty_node() -> Node {
     }
 }
 
-/// Slab test of the ray against a box, limited to `t ≤ limit` (Kay & Kajiya 1986).
+/// Slab test of the ray against a box, limited to `t ≤ limit` (Kay & Kajiya 1986). An axis the
+/// ray is parallel to is decided by the origin alone: `0·∞` would give NaN there.
 fn slab(lo: &Vector3<f64>, hi: &Vector3<f64>, ray: &Ray, inv: &Vector3<f64>, limit: f64) -> bool {
     let (mut t0, mut t1) = (0.0f64, limit);
     for a in 0..3 {
+        if ray.dir[a] == 0.0 {
+            if ray.origin[a] < lo[a] || ray.origin[a] > hi[a] {
+                return false;
+            }
+            continue;
+        }
         let ta = (lo[a] - ray.origin[a]) * inv[a];
         let tb = (hi[a] - ray.origin[a]) * inv[a];
-        // NaN (0·∞ on a box face) is ignored by min/max, which keeps the test conservative.
         t0 = t0.max(ta.min(tb));
         t1 = t1.min(ta.max(tb));
     }

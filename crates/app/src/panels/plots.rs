@@ -36,9 +36,9 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
     let mut settings = lab.settings.clone();
     ui.horizontal(|ui| {
         let label = if lab.sim().is_paused() {
-            "▶ Run"
+            "Run"
         } else {
-            "⏸ Pause"
+            "Pause"
         };
         if ui.button(label).clicked() {
             commands.push(Command::TogglePause);
@@ -82,7 +82,10 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
     }
     let t_end = history.last().map_or(0.0, |s| s.t);
     let window = lab.settings.plots.window;
-    let bounds = state.follow.then_some((t_end - window, t_end));
+    // Until a full window has elapsed the axis shows [0, window] rather than negative time.
+    let bounds = state
+        .follow
+        .then_some(((t_end - window).max(0.0), t_end.max(window)));
     let since = bounds.map_or(f64::NEG_INFINITY, |b| b.0);
     let width = (ui.available_width() / 3.0 - 8.0).max(50.0);
     let height = (ui.available_height() - 20.0).max(60.0);

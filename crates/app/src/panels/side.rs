@@ -194,9 +194,9 @@ fn motion_section(
         .show(ui, |ui| {
             ui.horizontal(|ui| {
                 let label = if lab.sim().is_paused() {
-                    "▶ Run"
+                    "Run"
                 } else {
-                    "⏸ Pause"
+                    "Pause"
                 };
                 if ui.button(label).clicked() {
                     commands.push(Command::TogglePause);
