@@ -100,7 +100,8 @@ impl LabApp {
         })
     }
 
-    /// The model (for tests).
+    /// The model (for the UI tests).
+    #[cfg(test)]
     pub fn lab(&self) -> &Lab {
         &self.lab
     }
