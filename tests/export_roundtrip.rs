@@ -5,54 +5,17 @@
 //! `massprops` on the mesh scaled to metres, to 1e-9 relative. Bodies are rotated, off-centre
 //! and asymmetric. MuJoCo and yourdfpy (Python) load the MJCF and URDF outputs themselves.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
+mod common;
 
+use std::process::Command;
+
+use common::{TempFile, root, run};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{MassProperties, mass_properties};
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
 use serde_json::Value;
 
 const TOLERANCE: f64 = 1e-9;
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_inertia-lab"))
-        .args(args)
-        .current_dir(root())
-        .output()
-        .expect("the binary runs")
-}
-
-/// A temporary file, removed on drop.
-struct TempFile(PathBuf);
-
-static NEXT_FILE: AtomicUsize = AtomicUsize::new(0);
-
-impl TempFile {
-    fn new(name: &str, contents: &[u8]) -> Self {
-        let n = NEXT_FILE.fetch_add(1, Ordering::Relaxed);
-        let path = std::env::temp_dir().join(format!(
-            "inertia-lab-export-{}-{n}-{name}",
-            std::process::id()
-        ));
-        std::fs::write(&path, contents).expect("temp file written");
-        Self(path)
-    }
-    fn path(&self) -> &str {
-        self.0.to_str().expect("utf-8 temp path")
-    }
-}
-
-impl Drop for TempFile {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
-}
 
 /// A body: its mesh (in its own units), the unit it is meant in, and the OBJ file holding it.
 struct Body {
@@ -605,7 +568,7 @@ fn output_file_frames_and_unphysical_bodies() {
         out_file.path(),
     ]);
     assert!(out.status.success() && out.stdout.is_empty());
-    let written = std::fs::read_to_string(&out_file.0).expect("written");
+    let written = std::fs::read_to_string(out_file.path()).expect("written");
     assert!(roxmltree::Document::parse(&written).is_ok());
 
     // A format without a frame choice refuses --frame origin as a usage error.

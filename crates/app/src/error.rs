@@ -26,3 +26,14 @@ impl CliError {
         }
     }
 }
+
+/// A command-line number that must be finite and greater than zero (a usage error otherwise).
+pub fn positive(name: &str, v: f64) -> Result<f64, CliError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(CliError::Usage(format!(
+            "{name} must be a finite number greater than zero, got {v}"
+        )))
+    }
+}

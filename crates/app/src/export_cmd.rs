@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 use massprops::{MassSpec, Method};
 
-use crate::error::CliError;
+use crate::error::{CliError, positive};
 use crate::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, Material, UpAxis,
     density_per_cubic_unit, export,
@@ -98,15 +98,5 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
             print!("{}", out.text);
             Ok(())
         }
-    }
-}
-
-fn positive(name: &str, v: f64) -> Result<f64, CliError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(CliError::Usage(format!(
-            "{name} must be a finite number greater than zero, got {v}"
-        )))
     }
 }

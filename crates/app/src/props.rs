@@ -6,7 +6,7 @@ use std::time::Instant;
 use clap::{Args, ValueEnum};
 use massprops::{MassSpec, Method};
 
-use crate::error::CliError;
+use crate::error::{CliError, positive};
 use crate::report;
 
 /// Mass-distribution method, as named on the command line.
@@ -60,24 +60,12 @@ pub struct PropsArgs {
 
 /// Runs `props`.
 pub fn run(args: &PropsArgs) -> Result<(), CliError> {
-    if !(args.scale.is_finite() && args.scale > 0.0) {
-        return Err(CliError::Usage(format!(
-            "--scale must be a finite number greater than zero, got {}",
-            args.scale
-        )));
-    }
+    positive("--scale", args.scale)?;
     let spec = match (args.density, args.mass) {
-        (_, Some(m)) => MassSpec::Mass(m),
-        (Some(d), None) => MassSpec::Density(d),
+        (_, Some(m)) => MassSpec::Mass(positive("--mass", m)?),
+        (Some(d), None) => MassSpec::Density(positive("--density", d)?),
         (None, None) => MassSpec::Density(1.0),
     };
-    for (name, v) in [("--density", args.density), ("--mass", args.mass)] {
-        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(CliError::Usage(format!(
-                "{name} must be a finite number greater than zero, got {v}"
-            )));
-        }
-    }
     let start = Instant::now();
     let mut mesh = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
     let parsed = Instant::now();

@@ -12,7 +12,7 @@ use rbcore::{
     Body, Diagnostics, DriftTracker, FlipCounter, Integrator, RotationModel, Settings, Simulation,
 };
 
-use crate::error::CliError;
+use crate::error::{CliError, positive};
 
 /// The CSV header, one column per field documented in README.
 pub const CSV_HEADER: &str = "t,w1,w2,w3,wx,wy,wz,Lx,Ly,Lz,qw,qx,qy,qz,T,U,E";
@@ -84,16 +84,6 @@ fn triple(name: &str, s: &str) -> Result<Vector3<f64>, CliError> {
         }
     }
     Ok(v)
-}
-
-fn positive(name: &str, v: f64) -> Result<f64, CliError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(CliError::Usage(format!(
-            "{name} must be a finite number greater than zero, got {v}"
-        )))
-    }
 }
 
 /// The body at rest, from `--mesh` or `--inertia`.
