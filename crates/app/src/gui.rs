@@ -163,6 +163,9 @@ impl LabApp {
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
+            if panels::toolbar::show(ui, &self.lab, &mut commands) {
+                self.view.frame_body(&self.lab);
+            }
             self.view
                 .show(ui, &self.lab, self.scene.as_ref(), &mut commands);
         });
@@ -214,6 +217,10 @@ impl LabApp {
     /// Counts a benchmark frame; prints the table and closes the window after the last one.
     fn bench_frame(&mut self, ctx: &egui::Context) {
         let Some(b) = &mut self.bench else { return };
+        if b.times.len() >= b.frames {
+            // Already reported; the window is closing.
+            return;
+        }
         let now = Instant::now();
         if let Some(last) = b.last {
             if b.warmup > 0 {

@@ -1,10 +1,11 @@
-//! The 2D panels: the side panel (body, mass properties, motion, interaction, view), the plot
-//! panel and the F1 help. Each reads the model and records [`crate::model::Command`]s; none
+//! The 2D panels: the side panel (body, mass properties, motion, interaction), the toolbar of
+//! view toggles, the plot panel and the F1 help. Each reads the model and records [`crate::model::Command`]s; none
 //! changes the model itself.
 
 pub mod help;
 pub mod plots;
 pub mod side;
+pub mod toolbar;
 
 /// UI-only state of the panels (text being typed, plot following), not persisted.
 #[derive(Debug, Clone)]

@@ -103,7 +103,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
     });
 }
 
-/// One plot: decimated to about two points per horizontal pixel (min and max per bucket), so
+/// One plot: decimated to about one point per horizontal pixel (min and max per two-pixel bucket), so
 /// its cost does not grow with the history length.
 fn draw(
     ui: &mut egui::Ui,
@@ -114,7 +114,7 @@ fn draw(
     bounds: Option<(f64, f64)>,
     [width, height]: [f32; 2],
 ) {
-    let max_points = (width as usize).max(64) * 2;
+    let max_points = (width as usize).max(64);
     Plot::new(id)
         .legend(Legend::default())
         .link_axis(egui::Id::unique("plots-time"), [true, false])
@@ -132,7 +132,7 @@ fn draw(
                 p.line(
                     Line::new(*name, PlotPoints::new(points))
                         .color(*color)
-                        .width(1.5),
+                        .width(1.0),
                 );
             }
         });

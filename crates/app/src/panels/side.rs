@@ -9,7 +9,7 @@ use rbcore::{Integrator, RotationModel};
 use super::{PanelState, number};
 use crate::loader::SAMPLES;
 use crate::model::{Command, Lab};
-use crate::settings::{Equivalent, InertiaSource, MassSpec};
+use crate::settings::{InertiaSource, MassSpec};
 
 /// Shows the panel contents.
 pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut Vec<Command>) {
@@ -20,7 +20,6 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
         table_section(ui, lab, &mut s);
         motion_section(ui, lab, commands, &mut s);
         interaction_section(ui, lab, &mut s);
-        view_section(ui, &mut s);
         diagnostics_section(ui, lab);
         ui.separator();
         if ui.button("Reset settings").clicked() {
@@ -317,26 +316,6 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::Ap
                 " m/s²",
             );
             ui.small(format!("F max = {:.4e} N", lab.string_max_force()));
-        });
-}
-
-fn view_section(ui: &mut egui::Ui, s: &mut crate::settings::AppSettings) {
-    egui::CollapsingHeader::new("View")
-        .default_open(false)
-        .show(ui, |ui| {
-            let v = &mut s.view;
-            ui.checkbox(&mut v.wireframe, "Wireframe");
-            ui.checkbox(&mut v.bounding_box, "Bounding box");
-            ui.checkbox(&mut v.center_of_mass, "Centre of mass");
-            ui.checkbox(&mut v.principal_axes, "Principal axes");
-            ui.checkbox(&mut v.omega_arrow, "ω arrow (world)");
-            ui.checkbox(&mut v.l_arrow, "L arrow (world)");
-            ui.horizontal(|ui| {
-                ui.label("Equivalent inertia:");
-                ui.radio_value(&mut v.equivalent, Equivalent::None, "none");
-                ui.radio_value(&mut v.equivalent, Equivalent::Box, "box");
-                ui.radio_value(&mut v.equivalent, Equivalent::Ellipsoid, "ellipsoid");
-            });
         });
 }
 

@@ -30,23 +30,13 @@ enum Gesture {
 }
 
 /// View state of the 3D panel: camera and the gesture in progress (not persisted, not model).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct View3d {
     /// The camera.
     pub camera: OrbitCamera,
     gesture: Option<Gesture>,
     /// Mesh generation last framed, to frame each new body once.
     framed: Option<u64>,
-}
-
-impl Default for View3d {
-    fn default() -> Self {
-        Self {
-            camera: OrbitCamera::default(),
-            gesture: None,
-            framed: None,
-        }
-    }
 }
 
 /// The one-line hint under the view (also in the F1 help).

@@ -203,7 +203,7 @@ impl Overlay {
         // Arrow lengths relative to the preset spin (ω) and the angular momentum it gives about
         // the intermediate axis (L), so the arrows keep their size across bodies and units.
         let rate = lab.settings.body.spin_rate.abs().max(1e-9);
-        let arrow_len = 1.6 * radius;
+        let arrow_len = 1.3 * radius;
         let l_ref = body.moments()[1] * rate;
         let scaled = |v: Vector3<f64>, reference: f64| {
             let n = v.norm() / reference;
@@ -214,7 +214,16 @@ impl Overlay {
             o.arrow(com, scaled(body.omega_world(), rate), OMEGA_COLOR, "ω");
         }
         if view.l_arrow {
-            o.arrow(com, scaled(body.angular_momentum(), l_ref), L_COLOR, "L");
+            // Without torque about the centre of mass (gravity acts at it) L is conserved: say so
+            // where the user sees the arrow stand still.
+            let torque_free =
+                lab.settings.physics.angular_damping == 0.0 && lab.string_view().is_none();
+            let label = if torque_free {
+                "L (fixed: no torque)"
+            } else {
+                "L"
+            };
+            o.arrow(com, scaled(body.angular_momentum(), l_ref), L_COLOR, label);
         }
         if let Some(p) = lab.poke_flash().filter(|p| p.until > now) {
             let j_len = 0.6 * radius;
@@ -305,6 +314,6 @@ mod tests {
                 .iter()
                 .all(|s| all_finite(&s.a) && all_finite(&s.b))
         );
-        assert!(o.labels.iter().any(|l| l.text == "L"));
+        assert!(o.labels.iter().any(|l| l.text.starts_with("L")));
     }
 }
