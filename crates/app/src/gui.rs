@@ -149,6 +149,7 @@ impl LabApp {
         egui::Panel::left("side")
             .resizable(true)
             .default_size(360.0)
+            .max_size(520.0)
             .show(ui, |ui| {
                 panels::side::show(ui, &self.lab, &mut self.panels, &mut commands);
             });

@@ -38,6 +38,8 @@ pub struct ViewSettings {
     pub omega_arrow: bool,
     /// World arrow of L (fixed in space while no torque acts).
     pub l_arrow: bool,
+    /// The camera moves with the centre of mass (a poked body stays in view).
+    pub follow_body: bool,
 }
 
 impl Default for ViewSettings {
@@ -50,6 +52,7 @@ impl Default for ViewSettings {
             equivalent: Equivalent::None,
             omega_arrow: true,
             l_arrow: true,
+            follow_body: true,
         }
     }
 }

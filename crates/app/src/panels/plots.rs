@@ -87,7 +87,8 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
         .follow
         .then_some(((t_end - window).max(0.0), t_end.max(window)));
     let since = bounds.map_or(f64::NEG_INFINITY, |b| b.0);
-    let width = (ui.available_width() / 3.0 - 8.0).max(50.0);
+    let gap = ui.spacing().item_spacing.x;
+    let width = ((ui.available_width() - 2.0 * gap) / 3.0).max(50.0);
     let height = (ui.available_height() - 20.0).max(60.0);
     ui.horizontal(|ui| {
         for (id, title, series) in [

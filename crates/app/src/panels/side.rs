@@ -161,10 +161,16 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::AppSetti
                     ui.end_row();
                 });
             let c = exact.center_of_mass;
-            ui.small(format!(
-                "exact centre of mass ({:.4e}, {:.4e}, {:.4e}) m",
-                c.x, c.y, c.z
-            ));
+            ui.add(
+                egui::Label::new(
+                    RichText::new(format!(
+                        "exact centre of mass ({:.3e}, {:.3e}, {:.3e}) m",
+                        c.x, c.y, c.z
+                    ))
+                    .small(),
+                )
+                .wrap(),
+            );
             ui.label(RichText::new("Simulation uses").strong());
             ui.horizontal(|ui| {
                 for src in InertiaSource::ALL {

@@ -13,6 +13,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) -> bool {
             .on_hover_text("centre the camera on the body (F)")
             .clicked();
         let v = &mut s.view;
+        ui.checkbox(&mut v.follow_body, "Follow body");
         ui.checkbox(&mut v.wireframe, "Wireframe");
         ui.checkbox(&mut v.bounding_box, "Bounding box");
         ui.checkbox(&mut v.center_of_mass, "CoM");

@@ -37,6 +37,8 @@ pub struct View3d {
     gesture: Option<Gesture>,
     /// Mesh generation last framed, to frame each new body once.
     framed: Option<u64>,
+    /// Centre of mass the camera last followed: the target moves with the body by the change.
+    followed: Option<Point3<f64>>,
 }
 
 /// The one-line hint under the view (also in the F1 help).
@@ -50,10 +52,23 @@ impl View3d {
         self.gesture.is_some()
     }
 
-    /// Centres the camera on the body.
+    /// Centres the camera on the body, with room for the ω and L arrows (up to 1.3 radii from
+    /// the centre of mass at the preset spin).
     pub fn frame_body(&mut self, lab: &Lab) {
         let (c, r) = lab.bounding_sphere();
-        self.camera.frame(c, r);
+        self.camera.frame(c, 1.8 * r);
+    }
+
+    /// Moves the target with the centre of mass (keeping any pan offset), so a poked or pulled
+    /// body that drifts stays in view.
+    fn follow(&mut self, lab: &Lab) {
+        let com = lab.sim().body().position();
+        if lab.settings.view.follow_body
+            && let Some(last) = self.followed
+        {
+            self.camera.target += com - last;
+        }
+        self.followed = Some(com);
     }
 
     /// Shows the view in the remaining space of `ui`.
@@ -68,6 +83,7 @@ impl View3d {
             self.framed = Some(lab.generation());
             self.frame_body(lab);
         }
+        self.follow(lab);
         let hint_height = ui.text_style_height(&egui::TextStyle::Small) + 6.0;
         let mut rect = ui.available_rect_before_wrap();
         rect.max.y -= hint_height;
@@ -254,7 +270,7 @@ impl View3d {
             if let Some(q) = project(&l.at) {
                 painter.text(
                     q,
-                    egui::Align2::LEFT_BOTTOM,
+                    l.align,
                     &l.text,
                     egui::FontId::proportional(13.0),
                     l.color,

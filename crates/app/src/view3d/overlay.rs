@@ -5,7 +5,7 @@
 
 use std::time::Instant;
 
-use egui::Color32;
+use egui::{Align2, Color32};
 use nalgebra::{Point3, Vector3};
 
 use crate::model::Lab;
@@ -39,6 +39,8 @@ pub struct Label {
     pub text: String,
     /// Colour.
     pub color: Color32,
+    /// Which corner of the text sits at the anchor.
+    pub align: Align2,
 }
 
 /// Everything to draw.
@@ -62,7 +64,8 @@ const OMEGA_COLOR: Color32 = Color32::from_rgb(255, 160, 40);
 const L_COLOR: Color32 = Color32::from_rgb(220, 90, 255);
 const STRING_COLOR: Color32 = Color32::from_rgb(250, 230, 120);
 const FORCE_COLOR: Color32 = Color32::from_rgb(255, 110, 110);
-const GUIDE_COLOR: Color32 = Color32::from_rgb(150, 170, 190);
+const GUIDE_COLOR: Color32 = Color32::from_rgb(200, 200, 200);
+const EQUIVALENT_COLOR: Color32 = Color32::from_rgb(80, 220, 230);
 
 impl Overlay {
     fn line(&mut self, a: Point3<f64>, b: Point3<f64>, color: Color32, width: f32) {
@@ -75,7 +78,14 @@ impl Overlay {
         });
     }
 
-    fn arrow(&mut self, from: Point3<f64>, v: Vector3<f64>, color: Color32, label: &str) {
+    fn arrow(
+        &mut self,
+        from: Point3<f64>,
+        v: Vector3<f64>,
+        color: Color32,
+        label: &str,
+        align: Align2,
+    ) {
         if !(v.iter().all(|x| x.is_finite()) && v.norm() > 0.0) {
             return;
         }
@@ -87,9 +97,10 @@ impl Overlay {
             arrow: true,
         });
         self.labels.push(Label {
-            at: from + v * 1.08,
+            at: from + v,
             text: label.to_owned(),
             color,
+            align,
         });
     }
 
@@ -128,6 +139,12 @@ impl Overlay {
                     1.5,
                 );
             }
+            o.labels.push(Label {
+                at: lab.mesh_to_world(&corner(7)),
+                text: "bounding box".to_owned(),
+                color: GUIDE_COLOR,
+                align: Align2::LEFT_BOTTOM,
+            });
         }
         let principal = body.orientation();
         if view.principal_axes {
@@ -138,6 +155,7 @@ impl Overlay {
                     at: com + axis * 1.05,
                     text: format!("{}", i + 1),
                     color: *color,
+                    align: Align2::LEFT_BOTTOM,
                 });
             }
         }
@@ -165,7 +183,7 @@ impl Overlay {
                     o.line(
                         to_world(corner(a)),
                         to_world(corner(b)),
-                        Color32::LIGHT_BLUE,
+                        EQUIVALENT_COLOR,
                         1.5,
                     );
                 }
@@ -181,9 +199,15 @@ impl Overlay {
                         to_world(p)
                     };
                     for s in 0..n {
-                        o.line(point(s), point(s + 1), Color32::LIGHT_BLUE, 1.5);
+                        o.line(point(s), point(s + 1), EQUIVALENT_COLOR, 1.5);
                     }
                 }
+                o.labels.push(Label {
+                    at: to_world(Vector3::new(half[0], 0.0, 0.0)),
+                    text: "equivalent ellipsoid".to_owned(),
+                    color: EQUIVALENT_COLOR,
+                    align: Align2::LEFT_BOTTOM,
+                });
             }
         }
         if view.center_of_mass {
@@ -197,6 +221,7 @@ impl Overlay {
                     at: c,
                     text: "exact CoM".to_owned(),
                     color: Color32::from_rgb(120, 220, 255),
+                    align: Align2::LEFT_BOTTOM,
                 });
             }
         }
@@ -211,7 +236,13 @@ impl Overlay {
             v.try_normalize(0.0).map(|u| u * len).unwrap_or_default()
         };
         if view.omega_arrow {
-            o.arrow(com, scaled(body.omega_world(), rate), OMEGA_COLOR, "ω");
+            o.arrow(
+                com,
+                scaled(body.omega_world(), rate),
+                OMEGA_COLOR,
+                "ω",
+                Align2::LEFT_TOP,
+            );
         }
         if view.l_arrow {
             // Without torque about the centre of mass (gravity acts at it) L is conserved: say so
@@ -223,7 +254,13 @@ impl Overlay {
             } else {
                 "L"
             };
-            o.arrow(com, scaled(body.angular_momentum(), l_ref), L_COLOR, label);
+            o.arrow(
+                com,
+                scaled(body.angular_momentum(), l_ref),
+                L_COLOR,
+                label,
+                Align2::RIGHT_BOTTOM,
+            );
         }
         if let Some(p) = lab.poke_flash().filter(|p| p.until > now) {
             let j_len = 0.6 * radius;
@@ -239,24 +276,32 @@ impl Overlay {
                 at: p.point - dir * j_len,
                 text: format!("J = {:.3e} N·s", p.impulse.norm()),
                 color: FORCE_COLOR,
+                align: Align2::LEFT_BOTTOM,
             });
             o.arrow(
                 com,
                 scaled(p.delta_l, l_ref),
                 Color32::from_rgb(255, 255, 255),
                 &format!("ΔL = r × J ({:.3e})", p.delta_l.norm()),
+                Align2::LEFT_BOTTOM,
             );
         }
         if let Some(s) = lab.string_view() {
             o.line(s.attachment, s.target, STRING_COLOR, 2.0);
             o.markers.push((s.target, STRING_COLOR));
             let cap = lab.string_max_force().max(f64::MIN_POSITIVE);
-            let f = s.force * (arrow_len / cap).min(1e12);
+            // Square-root scale: a weak pull stays visible next to one at the cap.
+            let f = s
+                .force
+                .try_normalize(0.0)
+                .map(|u| u * arrow_len * (s.force.norm() / cap).min(1.0).sqrt())
+                .unwrap_or_default();
             o.arrow(
                 s.attachment,
                 f,
                 FORCE_COLOR,
                 &format!("|F| = {:.3} N", s.force.norm()),
+                Align2::LEFT_TOP,
             );
         }
         o
@@ -302,7 +347,7 @@ mod tests {
         let box_edges = o
             .segments
             .iter()
-            .filter(|s| s.color == Color32::LIGHT_BLUE)
+            .filter(|s| s.color == EQUIVALENT_COLOR)
             .collect::<Vec<_>>();
         assert_eq!(box_edges.len(), 12);
         for s in box_edges {
