@@ -152,7 +152,14 @@ fn window_shows_the_body_and_the_plots_and_survives_a_bad_file() {
         }
         // 8 bits per channel: ImageMagick's default PPM depth follows its 16-bit quantum.
         let shot = Command::new("import")
-            .args(["-display", display.as_str(), "-window", "root", "-depth", "8"])
+            .args([
+                "-display",
+                display.as_str(),
+                "-window",
+                "root",
+                "-depth",
+                "8",
+            ])
             .arg(&ppm)
             .status()
             .expect("run import");
