@@ -48,6 +48,10 @@ struct Bench {
     hide_plots: bool,
     last: Option<Instant>,
     times: Vec<f64>,
+    /// Milliseconds spent building the UI (CPU, excluding tessellation and painting) per frame.
+    ui_times: Vec<f64>,
+    /// eframe's measure of the previous frame's work (UI, tessellation, painting; not waiting).
+    cpu_times: Vec<f64>,
     /// Frames skipped before measuring (window mapping, first uploads, shader compilation).
     warmup: usize,
 }
@@ -236,9 +240,12 @@ impl LabApp {
             t.sort_by(f64::total_cmp);
             let pct = |p: f64| t[((p / 100.0) * (t.len() - 1) as f64).round() as usize];
             let mean = t.iter().sum::<f64>() / t.len() as f64;
+            let mean_of = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64;
+            let (ui_mean, cpu_mean) = (mean_of(&b.ui_times), mean_of(&b.cpu_times));
             println!(
                 "frames {} ({} triangles, {} samples of history, plots {}): mean {:.1} ms \
-                 ({:.1} fps), p50 {:.1} ms, p90 {:.1} ms, p99 {:.1} ms, max {:.1} ms",
+                 ({:.1} fps), p50 {:.1} ms, p90 {:.1} ms, p99 {:.1} ms, max {:.1} ms; \
+                 building the UI {:.2} ms, whole frame's work {:.2} ms",
                 t.len(),
                 self.lab.body().mesh.triangles.len(),
                 self.lab.history().samples().len(),
@@ -248,16 +255,53 @@ impl LabApp {
                 pct(50.0),
                 pct(90.0),
                 pct(99.0),
-                pct(100.0)
+                pct(100.0),
+                ui_mean,
+                cpu_mean
             );
+            self.bench_picking();
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
+    }
+
+    /// Times picking the body through a grid of pixels over the framed view (800 × 600).
+    fn bench_picking(&mut self) {
+        self.view.frame_body(&self.lab);
+        let size = nalgebra::Vector2::new(800.0, 600.0);
+        let rays: Vec<_> = (0..400)
+            .map(|k| {
+                let pixel = nalgebra::Point2::new(
+                    250.0 + f64::from(k % 20) * 15.0,
+                    150.0 + f64::from(k / 20) * 15.0,
+                );
+                self.view.camera.ray(pixel, size)
+            })
+            .collect();
+        let start = Instant::now();
+        let hits = rays.iter().filter(|r| self.lab.pick(r).is_some()).count();
+        let per_ray = start.elapsed().as_secs_f64() / rays.len() as f64;
+        println!(
+            "picking ({} triangles): {:.1} µs per ray ({} of {} rays hit)",
+            self.lab.body().mesh.triangles.len(),
+            per_ray * 1e6,
+            hits,
+            rays.len()
+        );
     }
 }
 
 impl eframe::App for LabApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let start = Instant::now();
         self.show(ui);
+        if let Some(b) = &mut self.bench
+            && b.warmup == 0
+        {
+            b.ui_times.push(start.elapsed().as_secs_f64() * 1e3);
+            if let Some(cpu) = frame.info().cpu_usage {
+                b.cpu_times.push(f64::from(cpu) * 1e3);
+            }
+        }
         let ctx = ui.ctx().clone();
         self.bench_frame(&ctx);
     }
@@ -279,6 +323,8 @@ pub fn run(args: &GuiArgs) -> Result<(), CliError> {
         hide_plots: args.bench_no_plots,
         last: None,
         times: Vec::with_capacity(frames),
+        ui_times: Vec::with_capacity(frames),
+        cpu_times: Vec::with_capacity(frames),
         warmup: 10,
     });
     let options = eframe::NativeOptions {

@@ -23,6 +23,10 @@ const POKE_FLASH: Duration = Duration::from_millis(1500);
 /// T-handle to flip within about three seconds at the default 8 rad/s.
 const PERTURBATION: f64 = 0.02;
 
+/// Most samples kept (about 58 MB): 600 s at the default step; a tiny step shortens the history
+/// rather than exhausting memory.
+const MAX_HISTORY: usize = 400_000;
+
 /// An intent recorded by the UI, applied by [`Lab::apply`].
 #[derive(Debug, Clone, PartialEq)]
 pub enum Command {
@@ -618,7 +622,7 @@ impl Lab {
 fn capacity(settings: &AppSettings) -> usize {
     let n = settings.plots.history / settings.physics.dt;
     if n.is_finite() && n > 0.0 {
-        (n.ceil() as usize).clamp(2, 2_000_000)
+        (n.ceil() as usize).clamp(2, MAX_HISTORY)
     } else {
         2
     }
@@ -658,4 +662,101 @@ fn scaled_properties(
         fit(&a.bounding_box)?,
         fit(&a.point_masses)?,
     ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lab() -> Lab {
+        Lab::new(AppSettings::default()).expect("lab")
+    }
+
+    #[test]
+    fn switching_the_source_keeps_the_mesh_in_place_and_momenta() {
+        let mut lab = lab();
+        lab.advance(0.5);
+        let corner = lab.body().mesh.positions[3];
+        let before = lab.mesh_to_world(&corner);
+        let (p, l) = (
+            lab.sim().body().momentum(),
+            lab.sim().body().angular_momentum(),
+        );
+        let mut s = lab.settings.clone();
+        s.body.source = InertiaSource::BoundingBox;
+        lab.apply(Command::Settings(Box::new(s)));
+        assert!(lab.message().is_none(), "{:?}", lab.message());
+        assert!((lab.mesh_to_world(&corner) - before).norm() < 1e-12);
+        assert_eq!(lab.sim().body().momentum(), p);
+        assert!((lab.sim().body().angular_momentum() - l).norm() < 1e-15);
+        // The body now turns about the box centre.
+        let bbox = lab.properties(InertiaSource::BoundingBox).center_of_mass;
+        assert!((lab.mesh_to_world(&bbox) - lab.sim().body().position()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn rejected_settings_change_nothing_and_say_why() {
+        let mut lab = lab();
+        let before = lab.settings.clone();
+        let mut s = before.clone();
+        s.physics.dt = -1.0;
+        lab.apply(Command::Settings(Box::new(s)));
+        assert!(lab.message().is_some_and(|m| m.error));
+        assert_eq!(lab.settings, before);
+        let mut s = before.clone();
+        s.body.mass = MassSpec::Mass(f64::NAN);
+        lab.apply(Command::Settings(Box::new(s)));
+        assert_eq!(lab.settings, before);
+        lab.advance(0.1);
+        assert!(
+            lab.history()
+                .samples()
+                .iter()
+                .all(|s| s.values().iter().all(|v| v.is_finite()))
+        );
+    }
+
+    #[test]
+    fn poke_string_and_csv_export() {
+        let mut lab = lab();
+        lab.apply(Command::TogglePause);
+        let l0 = lab.sim().body().angular_momentum();
+        let com = lab.sim().body().position();
+        let point = com + Vector3::new(0.03, 0.0, 0.0);
+        lab.apply(Command::Poke {
+            point,
+            direction: Vector3::new(0.0, 0.0, -2.0),
+        });
+        let j = Vector3::new(0.0, 0.0, -lab.poke_impulse());
+        let dl = lab.sim().body().angular_momentum() - l0;
+        assert!((dl - (point - com).cross(&j)).norm() < 1e-15);
+        assert!(lab.poke_flash().is_some());
+        lab.apply(Command::Poke {
+            point,
+            direction: Vector3::zeros(),
+        });
+        assert!(lab.message().is_some_and(|m| m.error));
+
+        lab.apply(Command::TogglePause);
+        lab.apply(Command::Grab(point));
+        let target = point + Vector3::new(0.0, 0.05, 0.0);
+        lab.apply(Command::Drag(target));
+        let s = lab.string_view().expect("attached");
+        assert_eq!(s.target, target);
+        assert!(s.force.norm() <= lab.string_max_force() * (1.0 + 1e-12));
+        lab.advance(0.2);
+        lab.apply(Command::Release);
+        assert!(lab.string_view().is_none());
+
+        let path = std::env::temp_dir().join(format!("inertia-lab-{}.csv", std::process::id()));
+        lab.apply(Command::ExportCsv(path.clone()));
+        let text = std::fs::read_to_string(&path).expect("written");
+        assert_eq!(text.lines().count(), lab.history().samples().len() + 1);
+        std::fs::remove_file(&path).ok();
+        lab.apply(Command::ExportCsv(PathBuf::from("/no/such/dir/x.csv")));
+        assert!(
+            lab.message()
+                .is_some_and(|m| m.error && m.text.contains("/no/such/dir"))
+        );
+    }
 }
