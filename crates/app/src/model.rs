@@ -427,7 +427,12 @@ impl Lab {
             match (purpose, answer) {
                 (Some(DialogPurpose::OpenMesh), Some(path)) => self.apply(Command::LoadFile(path)),
                 (Some(DialogPurpose::SaveCsv), Some(path)) => self.apply(Command::ExportCsv(path)),
-                _ => {}
+                // rfd reports a cancel and a missing XDG desktop portal alike.
+                _ => self.info(
+                    "no file chosen (if no dialog appeared, this desktop has no file-dialog \
+                     portal: type a path or drop the file on the window)"
+                        .to_owned(),
+                ),
             }
         }
         if self.poke.is_some_and(|p| now >= p.until) {
