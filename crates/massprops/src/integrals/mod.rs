@@ -130,10 +130,35 @@ pub(crate) fn compensated_total<const N: usize>(
 
 /// The reference point the integrals are taken about: the centre of the vertices' bounding box.
 pub(crate) fn reference_point(positions: &[Point3<f64>]) -> Point3<f64> {
+    center(bounds(positions))
+}
+
+/// The same point, scanning the positions on the rayon pool (the scan is the serial part of the
+/// parallel path otherwise).
+fn reference_point_parallel(positions: &[Point3<f64>]) -> Point3<f64> {
+    use rayon::prelude::*;
+    let (lo, hi) =
+        positions
+            .par_chunks(1 << 14)
+            .map(bounds)
+            .reduce(empty_bounds, |(lo1, hi1), (lo2, hi2)| {
+                (
+                    std::array::from_fn(|k| lo1[k].min(lo2[k])),
+                    std::array::from_fn(|k| hi1[k].max(hi2[k])),
+                )
+            });
+    center((lo, hi))
+}
+
+fn empty_bounds() -> ([f64; 3], [f64; 3]) {
+    ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3])
+}
+
+/// Per-axis (min, max) of the positions.
+fn bounds(positions: &[Point3<f64>]) -> ([f64; 3], [f64; 3]) {
     // Plain comparisons (not f64::min, whose NaN rules block vectorisation); coordinates are
     // finite by the mesh's invariant.
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
+    let (mut lo, mut hi) = empty_bounds();
     for p in positions {
         for k in 0..3 {
             let c = p[k];
@@ -141,6 +166,10 @@ pub(crate) fn reference_point(positions: &[Point3<f64>]) -> Point3<f64> {
             hi[k] = if c > hi[k] { c } else { hi[k] };
         }
     }
+    (lo, hi)
+}
+
+fn center((lo, hi): ([f64; 3], [f64; 3])) -> Point3<f64> {
     // Halving each bound first cannot overflow, whatever the coordinates.
     Point3::from(std::array::from_fn(|k| lo[k] * 0.5 + hi[k] * 0.5))
 }
@@ -148,16 +177,22 @@ pub(crate) fn reference_point(positions: &[Point3<f64>]) -> Point3<f64> {
 /// Computes the ten volume integrals of `mesh` about its bounding-box centre.
 pub fn volume_integrals(mesh: &crate::PolyMesh, path: IntegrationPath) -> VolumeIntegrals {
     const PARALLEL_ABOVE: usize = 1 << 16;
-    let reference = reference_point(mesh.positions());
+    let positions = mesh.positions();
+    let parallel = match (path, mesh.as_triangles()) {
+        (IntegrationPath::TriangleParallel, Some(_)) => true,
+        (IntegrationPath::Auto, Some(t)) => t.len() > PARALLEL_ABOVE,
+        _ => false,
+    };
+    let reference = if parallel {
+        reference_point_parallel(positions)
+    } else {
+        reference_point(positions)
+    };
     let values = match (path, mesh.as_triangles()) {
-        (IntegrationPath::Triangle, Some(t)) => triangle::integrate(mesh.positions(), t, reference),
-        (IntegrationPath::TriangleParallel, Some(t)) => {
-            triangle::integrate_parallel(mesh.positions(), t, reference)
+        (_, Some(t)) if parallel => triangle::integrate_parallel(positions, t, reference),
+        (IntegrationPath::Triangle | IntegrationPath::Auto, Some(t)) => {
+            triangle::integrate(positions, t, reference)
         }
-        (IntegrationPath::Auto, Some(t)) if t.len() > PARALLEL_ABOVE => {
-            triangle::integrate_parallel(mesh.positions(), t, reference)
-        }
-        (IntegrationPath::Auto, Some(t)) => triangle::integrate(mesh.positions(), t, reference),
         _ => mirtich::integrate(mesh, reference),
     };
     VolumeIntegrals { reference, values }

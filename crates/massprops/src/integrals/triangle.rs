@@ -100,7 +100,7 @@ fn add_triangle<const FMA: bool>(p: [[f64; 3]; 3], s: &mut [f64; 10]) {
 }
 
 /// Triangles handled side by side, so the compiler can put one triangle in each SIMD lane.
-const LANES: usize = 4;
+const LANES: usize = 8;
 
 /// Sum of one block of triangles: `LANES` independent partial sums, added lane by lane at the end.
 #[inline(always)]
@@ -124,7 +124,7 @@ fn block_kernel<const FMA: bool>(
     for (lane, triangle) in lanes.iter_mut().zip(tail) {
         add_triangle::<FMA>(triangle.map(corner), lane);
     }
-    std::array::from_fn(|k| (lanes[0][k] + lanes[1][k]) + (lanes[2][k] + lanes[3][k]))
+    std::array::from_fn(|k| lanes.iter().map(|lane| lane[k]).sum())
 }
 
 /// The block kernel for this CPU: AVX2 with fused multiply-add where available.
