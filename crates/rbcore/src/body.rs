@@ -11,7 +11,7 @@
 //! (like a skater pulling in her arms), which is the physically right choice for an instantaneous
 //! change of mass distribution.
 
-use nalgebra::{Matrix3, Point3, Rotation3, SymmetricEigen, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 
 use crate::error::BodyError;
 
@@ -289,9 +289,10 @@ fn principal_of_tensor(inertia: &Matrix3<f64>) -> Result<(Vector3<f64>, Matrix3<
     if (inertia - inertia.transpose()).amax() > SYMMETRY_SLACK * scale {
         return Err(BodyError::AsymmetricInertia);
     }
-    let sym = (inertia + inertia.transpose()) * 0.5;
-    let eig = SymmetricEigen::new(sym);
-    Ok(sorted_principal(eig.eigenvalues, eig.eigenvectors))
+    // massprops' Jacobi solver: relative accuracy at any scale, where nalgebra's QR iteration
+    // lost the 1e-12 round trip on nearly equal moments.
+    let (values, vectors) = massprops::symmetric_eigen(inertia);
+    Ok(sorted_principal(values, vectors))
 }
 
 fn validate_mass_properties(
@@ -315,7 +316,9 @@ fn validate_mass_properties(
         return Err(BodyError::TriangleInequality(arr));
     }
     // Re-orthonormalise so a slightly sloppy caller rotation cannot leak scale into the state.
-    let rot = Rotation3::from_matrix_eps(&a, 1e-12, 100, Rotation3::identity());
+    // Starting from the matrix itself, an already orthonormal one is kept to round-off.
+    let rot =
+        Rotation3::from_matrix_eps(&a, f64::EPSILON, 100, Rotation3::from_matrix_unchecked(a));
     Ok((m, rot))
 }
 
