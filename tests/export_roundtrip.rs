@@ -3,7 +3,8 @@
 //! in the mesh's own frame from what the target would read (its quaternion or roll-pitch-yaw
 //! convention, handedness and units, written out independently here), and compared with
 //! `massprops` on the mesh scaled to metres, to 1e-9 relative. Bodies are rotated, off-centre
-//! and asymmetric. MuJoCo and yourdfpy (Python) load the MJCF and URDF outputs themselves.
+//! and asymmetric. MuJoCo and yourdfpy (Python) load the MJCF and URDF outputs themselves;
+//! rapier3d-f64 (a dev-dependency) builds the rapier snippet's `MassProperties` itself.
 
 mod common;
 
@@ -255,6 +256,42 @@ fn numbers_after(text: &str, marker: &str) -> Vec<f64> {
         .collect()
 }
 
+/// The four arguments of the rapier3d snippet's `with_principal_inertia_frame(..)` call.
+struct RapierArgs {
+    com: [f64; 3],
+    mass: f64,
+    inertia: [f64; 3],
+    /// glam's `Rotation::from_xyzw` order: scalar last.
+    xyzw: [f64; 4],
+}
+
+fn rapier_args(text: &str) -> RapierArgs {
+    let call = "rapier3d::dynamics::MassProperties::with_principal_inertia_frame(\n";
+    let start = text
+        .find(call)
+        .unwrap_or_else(|| panic!("{call} in\n{text}"))
+        + call.len();
+    let args: Vec<&str> = text[start..]
+        .lines()
+        .take_while(|l| l.trim() != ");")
+        .collect();
+    assert_eq!(args.len(), 4, "four arguments in\n{text}");
+    let three = |line: &str, marker: &str| -> [f64; 3] {
+        numbers_after(line, marker)
+            .try_into()
+            .expect("three numbers")
+    };
+    let mass = args[1].trim().trim_end_matches(',');
+    RapierArgs {
+        com: three(args[0], "rapier3d::math::Vector::new("),
+        mass: mass.parse().unwrap_or_else(|_| panic!("mass {mass:?}")),
+        inertia: three(args[2], "rapier3d::math::AngVector::new("),
+        xyzw: numbers_after(args[3], "rapier3d::math::Rotation::from_xyzw(")
+            .try_into()
+            .expect("four numbers"),
+    }
+}
+
 fn parse(format: &str, text: &str) -> Read {
     match format {
         "json" => {
@@ -391,23 +428,20 @@ fn parse(format: &str, text: &str) -> Read {
             )
         }
         "rapier" => {
-            let c = numbers_after(text, "point![");
-            let m = line_number(text, "mass: ");
-            let d = numbers_after(text, "vector![");
-            let q = numbers_after(text, "Quaternion::new(");
+            let r = rapier_args(text);
             // The bevy_rapier3d literal carries the same values.
+            assert_eq!(numbers_after(text, "Quat::from_xyzw("), r.xyzw.to_vec());
             assert_eq!(
-                numbers_after(text, "Quat::from_xyzw("),
-                vec![q[1], q[2], q[3], q[0]]
+                numbers_after(text, "local_center_of_mass: Vec3::new("),
+                r.com.to_vec()
             );
-            assert_eq!(numbers_after(text, "local_center_of_mass: Vec3::new("), c);
-            assert_eq!(numbers_after(text, "principal_inertia: Vec3::new("), d);
-            Read::principal(
-                m,
-                Vector3::new(c[0], c[1], c[2]),
-                quat(q[0], q[1], q[2], q[3]),
-                [d[0], d[1], d[2]],
-            )
+            assert_eq!(line_number(text, "mass: "), r.mass);
+            assert_eq!(
+                numbers_after(text, "principal_inertia: Vec3::new("),
+                r.inertia.to_vec()
+            );
+            let [x, y, z, w] = r.xyzw;
+            Read::principal(r.mass, Vector3::from(r.com), quat(w, x, y, z), r.inertia)
         }
         "gltf" => {
             let v: Value = serde_json::from_str(text).expect("JSON");
@@ -479,6 +513,59 @@ fn every_format_rebuilds_the_tensor_in_the_mesh_frame() {
         }
     }
     eprintln!("worst tensor error over all formats: {worst:.2e}");
+}
+
+/// rapier itself (rapier3d-f64 from crates.io) builds the exported `MassProperties` through the
+/// very constructor the snippet calls; its own mass, `local_com` and reconstructed body-axes
+/// tensor are the mesh's, so it reads the quaternion order and frames as intended.
+#[test]
+fn rapier3d_builds_the_exported_mass_properties_as_the_same_body() {
+    use rapier3d_f64::dynamics::MassProperties as RapierMassProperties;
+    use rapier3d_f64::math::{AngVector, Rotation, Vector};
+
+    let mut worst: f64 = 0.0;
+    for b in bodies() {
+        for (units, metres) in [("mm", 0.001), ("in", 0.0254), ("m", 1.0)] {
+            for up in ["y", "z"] {
+                let exact = reference(&b.mesh, metres, 2700.0);
+                let text = export(
+                    b.file.path(),
+                    &[
+                        "--format",
+                        "rapier",
+                        "--units",
+                        units,
+                        "--up",
+                        up,
+                        "--material",
+                        "aluminium",
+                        "--frame",
+                        "com-principal",
+                    ],
+                );
+                let a = rapier_args(&text);
+                let [x, y, z, w] = a.xyzw;
+                let props = RapierMassProperties::with_principal_inertia_frame(
+                    Vector::new(a.com[0], a.com[1], a.com[2]),
+                    a.mass,
+                    AngVector::new(a.inertia[0], a.inertia[1], a.inertia[2]),
+                    Rotation::from_xyzw(x, y, z, w),
+                );
+                let com = props.local_com;
+                let inertia = props.reconstruct_inertia_matrix();
+                let read = Read {
+                    mass: props.mass(),
+                    com: Vector3::new(com.x, com.y, com.z),
+                    // glam matrices are column-major: col(c)[r] is row r, column c.
+                    inertia: Matrix3::from_fn(|r, c| inertia.col(c)[r]),
+                };
+                let e = errors(&read, "rh-y", up, 1.0, &exact);
+                check(&format!("{} rapier3d-f64 units {units} up {up}", b.name), e);
+                worst = worst.max(e[0]).max(e[1]).max(e[2]);
+            }
+        }
+    }
+    eprintln!("rapier3d-f64: worst relative error (mass, com, tensor): {worst:.2e}");
 }
 
 #[test]

@@ -13,7 +13,7 @@
 //! | `unity` | left-handed Y-up (x mirrored) | m, kg, kg·m² | `inertiaTensorRotation = new Quaternion(x, y, z, w)` | Unity `Rigidbody` scripting API |
 //! | `godot` | right-handed Y-up | m, kg, kg·m² | none: `inertia` is a body-axes diagonal | Godot `RigidBody3D` class reference |
 //! | `unreal` | left-handed Z-up (y mirrored) | cm, kg, kg·cm² | `FQuat(X, Y, Z, W)` in the COM local pose | Unreal `FPhysicsInterface` (Chaos) |
-//! | `rapier` | right-handed Y-up (Bevy) | m, kg, kg·m² | `Quaternion::new(w, i, j, k)` / `Quat::from_xyzw` | rapier `MassProperties` docs |
+//! | `rapier` | right-handed Y-up (Bevy) | m, kg, kg·m² | `Rotation::from_xyzw(x, y, z, w)` / `Quat::from_xyzw` (glam) | rapier3d 0.36 `MassProperties` docs |
 //! | `gltf` | right-handed Y-up node space | m, kg, kg·m² | `inertiaOrientation: [x, y, z, w]` | Khronos `KHR_physics_rigid_bodies` |
 //!
 //! Every target takes the inertia about the centre of mass; "frame" only chooses its axes:
