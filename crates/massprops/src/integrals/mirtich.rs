@@ -241,15 +241,15 @@ fn add_faces_side_by_side<const N: usize>(
     reference: Point3<f64>,
     acc: &mut [f64; 10],
 ) {
-    let coordinate = |k: usize, axis: usize| {
-        Lanes(std::array::from_fn(|l| {
-            positions[faces[l][k] as usize][axis] - reference[axis]
-        }))
-    };
-    let x: [Lanes; N] = std::array::from_fn(|k| coordinate(k, 0));
-    let y: [Lanes; N] = std::array::from_fn(|k| coordinate(k, 1));
-    let z: [Lanes; N] = std::array::from_fn(|k| coordinate(k, 2));
+    // Plain loops throughout (see `lanewise!` on closures).
     let zero = Lanes::constant(0.0);
+    let (mut x, mut y, mut z) = ([zero; N], [zero; N], [zero; N]);
+    for (l, face) in faces.iter().enumerate() {
+        for (k, &i) in face.iter().enumerate() {
+            let p = positions[i as usize] - reference;
+            (x[k].0[l], y[k].0[l], z[k].0[l]) = (p.x, p.y, p.z);
+        }
+    }
     let (mut nx, mut ny, mut nz) = (zero, zero, zero);
     let (mut sx, mut sy, mut sz) = (zero, zero, zero);
     let mut prev = N - 1;
@@ -260,47 +260,45 @@ fn add_faces_side_by_side<const N: usize>(
         (sx, sy, sz) = (sx + x[k], sy + y[k], sz + z[k]);
         prev = k;
     }
-    // γ per lane: the largest normal component (the first on ties, as `Vector3::iamax`).
-    let gamma: [usize; LANES] = std::array::from_fn(|l| {
-        let (ax, ay, az) = (nx.0[l].abs(), ny.0[l].abs(), nz.0[l].abs());
-        if ax >= ay && ax >= az {
+    // Per lane, as [`plane`] does for one face: γ, the exact power-of-two rescaling, and the
+    // corners permuted into (α, β). A zero-area lane keeps harmless values (n_γ = 1, the rest 0)
+    // and is skipped at the end.
+    let mut gamma = [0usize; LANES];
+    let mut valid = [false; LANES];
+    let (mut na, mut nb, mut nc, mut scale) = (zero, zero, Lanes::constant(1.0), zero);
+    let (mut alpha, mut beta) = ([zero; N], [zero; N]);
+    for l in 0..LANES {
+        let n = [nx.0[l], ny.0[l], nz.0[l]];
+        // The largest component, the first on ties (as `Vector3::iamax`).
+        let g = if n[0].abs() >= n[1].abs() && n[0].abs() >= n[2].abs() {
             0
-        } else if ay >= az {
+        } else if n[1].abs() >= n[2].abs() {
             1
         } else {
             2
+        };
+        if n[g] == 0.0 || !n[g].is_finite() {
+            continue;
         }
-    });
-    let pick = |l: usize, g: usize, v: [Lanes; 3]| v[(gamma[l] + g) % 3].0[l];
-    let n = [nx, ny, nz];
-    let nc = Lanes(std::array::from_fn(|l| pick(l, 0, n)));
-    // Zero-area faces are skipped at the end; give them a harmless n_γ meanwhile.
-    let valid: [bool; LANES] = std::array::from_fn(|l| nc.0[l] != 0.0 && nc.0[l].is_finite());
-    // The exact power-of-two rescaling of [`plane`], per lane.
-    let scale = Lanes(std::array::from_fn(|l| {
-        let exponent = (nc.0[l].abs().to_bits() >> 52) as i64;
-        if valid[l] {
-            f64::from_bits(((2046 - exponent) as u64) << 52)
-        } else {
-            0.0
+        let exponent = (n[g].abs().to_bits() >> 52) as i64;
+        let s = f64::from_bits(((2046 - exponent) as u64) << 52);
+        let (a, b) = ((g + 1) % 3, (g + 2) % 3);
+        (valid[l], gamma[l], scale.0[l]) = (true, g, s);
+        (na.0[l], nb.0[l], nc.0[l]) = (n[a] * s, n[b] * s, n[g] * s);
+        for k in 0..N {
+            let v = [x[k].0[l], y[k].0[l], z[k].0[l]];
+            (alpha[k].0[l], beta[k].0[l]) = (v[a], v[b]);
         }
-    }));
-    let (nx, ny, nz) = (nx * scale, ny * scale, nz * scale);
-    let n = [nx, ny, nz];
-    let nc = Lanes(std::array::from_fn(|l| {
-        if valid[l] { pick(l, 0, n) } else { 1.0 }
-    }));
-    let na = Lanes(std::array::from_fn(|l| pick(l, 1, n)));
-    let nb = Lanes(std::array::from_fn(|l| pick(l, 2, n)));
-    let w = -(nx * sx + ny * sy + nz * sz) * Lanes::constant(1.0 / N as f64);
-    let alpha: [Lanes; N] =
-        std::array::from_fn(|k| Lanes(std::array::from_fn(|l| pick(l, 1, [x[k], y[k], z[k]]))));
-    let beta: [Lanes; N] =
-        std::array::from_fn(|k| Lanes(std::array::from_fn(|l| pick(l, 2, [x[k], y[k], z[k]]))));
+    }
+    let w = -((nx * sx + ny * sy + nz * sz) * scale) * Lanes::constant(1.0 / N as f64);
     let terms = face_terms(&projection(&alpha, &beta), na, nb, nc, w);
     for l in 0..LANES {
         if valid[l] {
-            scatter(&terms.map(|t| t.0[l]), gamma[l], acc);
+            let mut t = [0.0; 12];
+            for (tj, term) in t.iter_mut().zip(&terms) {
+                *tj = term.0[l];
+            }
+            scatter(&t, gamma[l], acc);
         }
     }
 }
@@ -352,13 +350,18 @@ impl Real for f64 {
 #[derive(Clone, Copy)]
 struct Lanes([f64; LANES]);
 
+// Loops, not `array::from_fn`: closures are not inlined into the AVX2 kernel's target-feature
+// context, and an out-of-line SSE2 call per operation costs several times the arithmetic.
 macro_rules! lanewise {
     ($trait:ident, $method:ident, $op:tt) => {
         impl $trait for Lanes {
             type Output = Lanes;
             #[inline(always)]
-            fn $method(self, rhs: Lanes) -> Lanes {
-                Lanes(std::array::from_fn(|l| self.0[l] $op rhs.0[l]))
+            fn $method(mut self, rhs: Lanes) -> Lanes {
+                for l in 0..LANES {
+                    self.0[l] = self.0[l] $op rhs.0[l];
+                }
+                self
             }
         }
     };
@@ -371,8 +374,11 @@ lanewise!(Div, div, /);
 impl Neg for Lanes {
     type Output = Lanes;
     #[inline(always)]
-    fn neg(self) -> Lanes {
-        Lanes(self.0.map(|v| -v))
+    fn neg(mut self) -> Lanes {
+        for v in &mut self.0 {
+            *v = -*v;
+        }
+        self
     }
 }
 
