@@ -359,17 +359,17 @@ macro_rules! lanewise {
             #[inline(always)]
             fn $method(mut self, rhs: Lanes) -> Lanes {
                 for l in 0..LANES {
-                    self.0[l] = self.0[l] $op rhs.0[l];
+                    self.0[l] $op rhs.0[l];
                 }
                 self
             }
         }
     };
 }
-lanewise!(Add, add, +);
-lanewise!(Sub, sub, -);
-lanewise!(Mul, mul, *);
-lanewise!(Div, div, /);
+lanewise!(Add, add, +=);
+lanewise!(Sub, sub, -=);
+lanewise!(Mul, mul, *=);
+lanewise!(Div, div, /=);
 
 impl Neg for Lanes {
     type Output = Lanes;
