@@ -31,6 +31,22 @@ impl Default for PanelState {
     }
 }
 
+/// The Run / Pause button (in the side panel and over the plots).
+pub(crate) fn pause_button(
+    ui: &mut egui::Ui,
+    lab: &crate::model::Lab,
+    commands: &mut Vec<crate::model::Command>,
+) {
+    let label = if lab.sim().is_paused() {
+        "Run"
+    } else {
+        "Pause"
+    };
+    if ui.button(label).clicked() {
+        commands.push(crate::model::Command::TogglePause);
+    }
+}
+
 /// A label and a number field tied to it (screen readers and the UI tests find it by the label).
 pub(crate) fn number(
     ui: &mut egui::Ui,

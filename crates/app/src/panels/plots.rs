@@ -35,14 +35,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
     let history = lab.history();
     let mut settings = lab.settings.clone();
     ui.horizontal(|ui| {
-        let label = if lab.sim().is_paused() {
-            "Run"
-        } else {
-            "Pause"
-        };
-        if ui.button(label).clicked() {
-            commands.push(Command::TogglePause);
-        }
+        super::pause_button(ui, lab, commands);
         ui.checkbox(&mut state.follow, "Follow");
         number(
             ui,

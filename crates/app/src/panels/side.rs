@@ -198,14 +198,7 @@ fn motion_section(
         .default_open(true)
         .show(ui, |ui| {
             ui.horizontal(|ui| {
-                let label = if lab.sim().is_paused() {
-                    "Run"
-                } else {
-                    "Pause"
-                };
-                if ui.button(label).clicked() {
-                    commands.push(Command::TogglePause);
-                }
+                super::pause_button(ui, lab, commands);
                 if ui.button("Step").clicked() {
                     commands.push(Command::Step);
                 }
