@@ -3,8 +3,9 @@
 //! Volume, mass, centre of mass and inertia tensor of the solid a closed mesh bounds, by
 //! B. Mirtich, "Fast and Accurate Computation of Polyhedral Mass Properties", J. Graphics Tools
 //! 1(2), 1996 (divergence theorem → projection → Green's theorem, Newell normals), for planar
-//! polygons of any shape, with an algebraically reduced triangle fast path (D. Eberly,
-//! "Polyhedral Mass Properties (Revisited)", 2002) that agrees with it to round-off. Also the thin
+//! polygons of any shape, with a triangle fast path of signed tetrahedra (F. Tonon, "Explicit
+//! Exact Formulas for the 3-D Tetrahedron Inertia Tensor", J. Math. Stat. 1(1), 2004) that
+//! agrees with it to round-off. Also the thin
 //! shell, the vertex point-mass sum and the bounding-box cuboid, principal moments and axes by a
 //! scale-invariant Jacobi eigensolver, mesh diagnostics, and OBJ/STL loading.
 //!

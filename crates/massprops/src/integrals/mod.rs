@@ -5,8 +5,8 @@
 //! - [`mirtich`]: Mirtich (1996), "Fast and Accurate Computation of Polyhedral Mass Properties",
 //!   J. Graphics Tools 1(2): divergence theorem → projection onto a coordinate plane → Green's
 //!   theorem, for planar polygons of any shape;
-//! - [`triangle`]: the same integrals reduced algebraically for triangles (Eberly, "Polyhedral
-//!   Mass Properties (Revisited)", Geometric Tools 2002), sequential or parallel.
+//! - [`triangle`]: for triangle meshes, a sum of signed tetrahedra with the reference point as
+//!   apex (Tonon 2004), sequential or parallel.
 //!
 //! Numerics: coordinates are taken relative to the bounding-box centre, so a body far from the
 //! origin loses no digits to cancellation, and face contributions are added in fixed blocks whose

@@ -1,24 +1,23 @@
-//! The triangle fast path: Mirtich's integrals reduced algebraically for a triangle
-//! (D. Eberly, "Polyhedral Mass Properties (Revisited)", Geometric Tools, 2002, which expands the
-//! divergence-theorem surface integrals over a triangle parametrised by its edges).
-//!
-//! With d = (p₁ − p₀) × (p₂ − p₀) and per-axis symmetric polynomials f₁, f₂, f₃, g₀, g₁, g₂ of the
-//! three corner coordinates, each integral is one product per triangle, e.g. ∫1 += dₓ·f₁(x)/6.
+//! The triangle fast path: the solid as a sum of signed tetrahedra, one per triangle, with the
+//! reference point as their common apex (F. Tonon, "Explicit Exact Formulas for the 3-D
+//! Tetrahedron Inertia Tensor in Terms of its Vertex Coordinates", J. Math. Stat. 1(1), 2004).
+//! Algebraically the same as Mirtich's integrals specialised to triangles, in fewer operations
+//! (about 50 per triangle, against about 80 for Eberly's reduction of Mirtich's).
 
 use nalgebra::Point3;
 use rayon::prelude::*;
 
 use super::{BLOCK, compensated_total, madd};
 
-/// Final factors of Eberly's sums: 1/6, 1/24, 1/60, 1/120.
+/// Final factors of the tetrahedron sums: 1/6, 1/24, 1/120.
 const SCALE: [f64; 10] = [
     1.0 / 6.0,
     1.0 / 24.0,
     1.0 / 24.0,
     1.0 / 24.0,
-    1.0 / 60.0,
-    1.0 / 60.0,
-    1.0 / 60.0,
+    1.0 / 120.0,
+    1.0 / 120.0,
+    1.0 / 120.0,
     1.0 / 120.0,
     1.0 / 120.0,
     1.0 / 120.0,
@@ -56,47 +55,37 @@ fn scaled(mut total: [f64; 10]) -> [f64; 10] {
     total
 }
 
-/// Eberly's per-axis subexpressions f₁, f₂, f₃, g₀, g₁, g₂ of the corner coordinates w₀, w₁, w₂.
-#[inline(always)]
-fn subexpressions<const FMA: bool>(w0: f64, w1: f64, w2: f64) -> [f64; 6] {
-    let t0 = w0 + w1;
-    let f1 = t0 + w2;
-    let t1 = w0 * w0;
-    let t2 = madd::<FMA>(w1, t0, t1);
-    let f2 = madd::<FMA>(w2, f1, t2);
-    let f3 = madd::<FMA>(w2, f2, madd::<FMA>(w1, t2, w0 * t1));
-    let g0 = madd::<FMA>(w0, f1 + w0, f2);
-    let g1 = madd::<FMA>(w1, f1 + w1, f2);
-    let g2 = madd::<FMA>(w2, f1 + w2, f2);
-    [f1, f2, f3, g0, g1, g2]
-}
-
-/// Adds one triangle (corners relative to the reference point, as `[x, y, z]` of each corner)
-/// to the ten sums.
+/// Adds the signed tetrahedron (reference point, p₀, p₁, p₂) to the ten sums; corners are
+/// relative to the reference point, as `[x, y, z]` of each corner.
+///
+/// With det = p₀·(p₁×p₂) and S = p₀+p₁+p₂ (Tonon 2004, eqs. 2–3 with one vertex at the origin):
+/// ∫1 = det/6, ∫xᵢ = det·Sᵢ/24, ∫xᵢxⱼ = det·(Σₖ pₖᵢpₖⱼ + SᵢSⱼ)/120.
 #[inline(always)]
 fn add_triangle<const FMA: bool>(p: [[f64; 3]; 3], s: &mut [f64; 10]) {
     let [[x0, y0, z0], [x1, y1, z1], [x2, y2, z2]] = p;
-    let (ax, ay, az) = (x1 - x0, y1 - y0, z1 - z0);
-    let (bx, by, bz) = (x2 - x0, y2 - y0, z2 - z0);
-    let dx = madd::<FMA>(ay, bz, -(az * by));
-    let dy = madd::<FMA>(az, bx, -(ax * bz));
-    let dz = madd::<FMA>(ax, by, -(ay * bx));
-    let [f1x, f2x, f3x, g0x, g1x, g2x] = subexpressions::<FMA>(x0, x1, x2);
-    let [_, f2y, f3y, g0y, g1y, g2y] = subexpressions::<FMA>(y0, y1, y2);
-    let [_, f2z, f3z, g0z, g1z, g2z] = subexpressions::<FMA>(z0, z1, z2);
-    s[0] = madd::<FMA>(dx, f1x, s[0]);
-    s[1] = madd::<FMA>(dx, f2x, s[1]);
-    s[2] = madd::<FMA>(dy, f2y, s[2]);
-    s[3] = madd::<FMA>(dz, f2z, s[3]);
-    s[4] = madd::<FMA>(dx, f3x, s[4]);
-    s[5] = madd::<FMA>(dy, f3y, s[5]);
-    s[6] = madd::<FMA>(dz, f3z, s[6]);
-    let pxy = madd::<FMA>(y2, g2x, madd::<FMA>(y1, g1x, y0 * g0x));
-    let pyz = madd::<FMA>(z2, g2y, madd::<FMA>(z1, g1y, z0 * g0y));
-    let pzx = madd::<FMA>(x2, g2z, madd::<FMA>(x1, g1z, x0 * g0z));
-    s[7] = madd::<FMA>(dx, pxy, s[7]);
-    s[8] = madd::<FMA>(dy, pyz, s[8]);
-    s[9] = madd::<FMA>(dz, pzx, s[9]);
+    let cx = madd::<FMA>(y1, z2, -(z1 * y2));
+    let cy = madd::<FMA>(z1, x2, -(x1 * z2));
+    let cz = madd::<FMA>(x1, y2, -(y1 * x2));
+    let det = madd::<FMA>(x0, cx, madd::<FMA>(y0, cy, z0 * cz));
+    let (sx, sy, sz) = (x0 + x1 + x2, y0 + y1 + y2, z0 + z1 + z2);
+    let sum_products = |a: [f64; 3], b: [f64; 3], sa: f64, sb: f64| {
+        madd::<FMA>(
+            a[0],
+            b[0],
+            madd::<FMA>(a[1], b[1], madd::<FMA>(a[2], b[2], sa * sb)),
+        )
+    };
+    let (xs, ys, zs) = ([x0, x1, x2], [y0, y1, y2], [z0, z1, z2]);
+    s[0] += det;
+    s[1] = madd::<FMA>(det, sx, s[1]);
+    s[2] = madd::<FMA>(det, sy, s[2]);
+    s[3] = madd::<FMA>(det, sz, s[3]);
+    s[4] = madd::<FMA>(det, sum_products(xs, xs, sx, sx), s[4]);
+    s[5] = madd::<FMA>(det, sum_products(ys, ys, sy, sy), s[5]);
+    s[6] = madd::<FMA>(det, sum_products(zs, zs, sz, sz), s[6]);
+    s[7] = madd::<FMA>(det, sum_products(xs, ys, sx, sy), s[7]);
+    s[8] = madd::<FMA>(det, sum_products(ys, zs, sy, sz), s[8]);
+    s[9] = madd::<FMA>(det, sum_products(zs, xs, sz, sx), s[9]);
 }
 
 /// Triangles handled side by side, so the compiler can put one triangle in each SIMD lane.
