@@ -22,6 +22,9 @@ pub struct PolyMesh {
     /// `face_starts[f]..face_starts[f + 1]` is face `f`'s range in `indices`.
     face_starts: Vec<u32>,
     all_triangles: bool,
+    /// Centre of the bounding box of all positions: the point the volume integrals are taken
+    /// about, found in the validation pass that reads every coordinate anyway.
+    reference: Point3<f64>,
 }
 
 impl PolyMesh {
@@ -77,6 +80,7 @@ impl PolyMesh {
                 return Err(MeshError::NonFiniteVertex { vertex, value });
             }
         }
+        let reference = crate::integrals::reference_point(&positions);
         let mut face_starts = Vec::with_capacity(arities.len() + 1);
         let mut start = 0usize;
         for (face, &corners) in arities.iter().enumerate() {
@@ -110,12 +114,19 @@ impl PolyMesh {
             indices,
             face_starts,
             all_triangles,
+            reference,
         })
     }
 
     /// Vertex positions.
     pub fn positions(&self) -> &[Point3<f64>] {
         &self.positions
+    }
+
+    /// The centre of the bounding box of all positions (used or not), which the volume integrals
+    /// are taken about.
+    pub(crate) fn reference_point(&self) -> Point3<f64> {
+        self.reference
     }
 
     /// Number of faces.

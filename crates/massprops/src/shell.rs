@@ -8,7 +8,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::integrals::{CompensatedSum, mirtich::newell_normal, reference_point};
+use crate::integrals::{CompensatedSum, mirtich::newell_normal};
 use crate::properties::{MassProperties, parallel_axis_term, positive};
 use crate::{MeshError, PolyMesh};
 
@@ -19,7 +19,7 @@ pub fn shell_properties(
     surface_density: f64,
 ) -> Result<(MassProperties, f64), MeshError> {
     let sigma = positive("surface density", surface_density)?;
-    let reference = reference_point(mesh.positions());
+    let reference = mesh.reference_point();
     let mut sums = CompensatedSum::<10>::new();
     let mut corners = Vec::new();
     for f in 0..mesh.face_count() {

@@ -14,6 +14,7 @@
 //! parallel path returns bit-for-bit the sequential result.
 
 pub mod mirtich;
+mod simd;
 pub mod triangle;
 
 use nalgebra::{Matrix3, Point3, Vector3};
@@ -78,13 +79,6 @@ pub(crate) fn has_avx2_fma() -> bool {
     std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
 }
 
-/// `a·b + c`, fused (one rounding) in kernels compiled for FMA hardware. Without the hardware
-/// `mul_add` is a slow library call, so the plain form is used there.
-#[inline(always)]
-pub(crate) fn madd<const FMA: bool>(a: f64, b: f64, c: f64) -> f64 {
-    if FMA { a.mul_add(b, c) } else { a * b + c }
-}
-
 /// Neumaier's improved Kahan summation of N values at once.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct CompensatedSum<const N: usize> {
@@ -133,23 +127,6 @@ pub(crate) fn reference_point(positions: &[Point3<f64>]) -> Point3<f64> {
     center(bounds(positions))
 }
 
-/// The same point, scanning the positions on the rayon pool (the scan is the serial part of the
-/// parallel path otherwise).
-fn reference_point_parallel(positions: &[Point3<f64>]) -> Point3<f64> {
-    use rayon::prelude::*;
-    let (lo, hi) =
-        positions
-            .par_chunks(1 << 14)
-            .map(bounds)
-            .reduce(empty_bounds, |(lo1, hi1), (lo2, hi2)| {
-                (
-                    std::array::from_fn(|k| lo1[k].min(lo2[k])),
-                    std::array::from_fn(|k| hi1[k].max(hi2[k])),
-                )
-            });
-    center((lo, hi))
-}
-
 fn empty_bounds() -> ([f64; 3], [f64; 3]) {
     ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3])
 }
@@ -174,7 +151,8 @@ fn center((lo, hi): ([f64; 3], [f64; 3])) -> Point3<f64> {
     Point3::from(std::array::from_fn(|k| lo[k] * 0.5 + hi[k] * 0.5))
 }
 
-/// Computes the ten volume integrals of `mesh` about its bounding-box centre.
+/// Computes the ten volume integrals of `mesh` about its bounding-box centre (found when the mesh
+/// was built).
 pub fn volume_integrals(mesh: &crate::PolyMesh, path: IntegrationPath) -> VolumeIntegrals {
     const PARALLEL_ABOVE: usize = 1 << 16;
     let positions = mesh.positions();
@@ -183,11 +161,7 @@ pub fn volume_integrals(mesh: &crate::PolyMesh, path: IntegrationPath) -> Volume
         (IntegrationPath::Auto, Some(t)) => t.len() > PARALLEL_ABOVE,
         _ => false,
     };
-    let reference = if parallel {
-        reference_point_parallel(positions)
-    } else {
-        reference_point(positions)
-    };
+    let reference = mesh.reference_point();
     let values = match (path, mesh.as_triangles()) {
         (_, Some(t)) if parallel => triangle::integrate_parallel(positions, t, reference),
         (IntegrationPath::Triangle | IntegrationPath::Auto, Some(t)) => {

@@ -7,7 +7,8 @@
 use nalgebra::Point3;
 use rayon::prelude::*;
 
-use super::{BLOCK, compensated_total, madd};
+use super::simd::{Kernel, Level, Real, prefetch};
+use super::{BLOCK, compensated_total};
 
 /// Final factors of the tetrahedron sums: 1/6, 1/24, 1/120.
 const SCALE: [f64; 10] = [
@@ -29,9 +30,9 @@ pub fn integrate(
     triangles: &[[u32; 3]],
     reference: Point3<f64>,
 ) -> [f64; 10] {
-    let blocks = triangles
-        .chunks(BLOCK)
-        .map(|chunk| block_sum(positions, chunk, reference));
+    let level = Level::detect();
+    let blocks = (0..triangles.len().div_ceil(BLOCK))
+        .map(|b| block_sum(positions, triangles, b, reference, level));
     scaled(compensated_total(blocks))
 }
 
@@ -41,10 +42,19 @@ pub fn integrate_parallel(
     triangles: &[[u32; 3]],
     reference: Point3<f64>,
 ) -> [f64; 10] {
-    let blocks: Vec<[f64; 10]> = triangles
-        .par_chunks(BLOCK)
-        .map(|chunk| block_sum(positions, chunk, reference))
-        .collect();
+    let level = Level::detect();
+    let mut blocks = vec![[0.0; 10]; triangles.len().div_ceil(BLOCK)];
+    // One contiguous run of blocks per thread: a task per block costs more than the block itself
+    // on small meshes.
+    let per_task = blocks.len().div_ceil(rayon::current_num_threads()).max(1);
+    blocks
+        .par_chunks_mut(per_task)
+        .enumerate()
+        .for_each(|(task, sums)| {
+            for (b, sum) in (task * per_task..).zip(sums) {
+                *sum = block_sum(positions, triangles, b, reference, level);
+            }
+        });
     scaled(compensated_total(blocks))
 }
 
@@ -55,85 +65,105 @@ fn scaled(mut total: [f64; 10]) -> [f64; 10] {
     total
 }
 
-/// Adds the signed tetrahedron (reference point, p₀, p₁, p₂) to the ten sums; corners are
-/// relative to the reference point, as `[x, y, z]` of each corner.
+/// Adds the signed tetrahedron (reference point, p₀, p₁, p₂) to the ten sums, one triangle per
+/// lane; corners are relative to the reference point, as `[x, y, z]` of each corner.
 ///
 /// With det = p₀·(p₁×p₂) and S = p₀+p₁+p₂ (Tonon 2004, eqs. 2–3 with one vertex at the origin):
 /// ∫1 = det/6, ∫xᵢ = det·Sᵢ/24, ∫xᵢxⱼ = det·(Σₖ pₖᵢpₖⱼ + SᵢSⱼ)/120.
 #[inline(always)]
-fn add_triangle<const FMA: bool>(p: [[f64; 3]; 3], s: &mut [f64; 10]) {
+fn add_tetrahedron<T: Real>(p: [[T; 3]; 3], s: &mut [T; 10]) {
     let [[x0, y0, z0], [x1, y1, z1], [x2, y2, z2]] = p;
-    let cx = madd::<FMA>(y1, z2, -(z1 * y2));
-    let cy = madd::<FMA>(z1, x2, -(x1 * z2));
-    let cz = madd::<FMA>(x1, y2, -(y1 * x2));
-    let det = madd::<FMA>(x0, cx, madd::<FMA>(y0, cy, z0 * cz));
+    let cx = y1.mul_add(z2, -(z1 * y2));
+    let cy = z1.mul_add(x2, -(x1 * z2));
+    let cz = x1.mul_add(y2, -(y1 * x2));
+    let det = x0.mul_add(cx, y0.mul_add(cy, z0 * cz));
     let (sx, sy, sz) = (x0 + x1 + x2, y0 + y1 + y2, z0 + z1 + z2);
-    let sum_products = |a: [f64; 3], b: [f64; 3], sa: f64, sb: f64| {
-        madd::<FMA>(
-            a[0],
-            b[0],
-            madd::<FMA>(a[1], b[1], madd::<FMA>(a[2], b[2], sa * sb)),
-        )
-    };
     let (xs, ys, zs) = ([x0, x1, x2], [y0, y1, y2], [z0, z1, z2]);
     s[0] += det;
-    s[1] = madd::<FMA>(det, sx, s[1]);
-    s[2] = madd::<FMA>(det, sy, s[2]);
-    s[3] = madd::<FMA>(det, sz, s[3]);
-    s[4] = madd::<FMA>(det, sum_products(xs, xs, sx, sx), s[4]);
-    s[5] = madd::<FMA>(det, sum_products(ys, ys, sy, sy), s[5]);
-    s[6] = madd::<FMA>(det, sum_products(zs, zs, sz, sz), s[6]);
-    s[7] = madd::<FMA>(det, sum_products(xs, ys, sx, sy), s[7]);
-    s[8] = madd::<FMA>(det, sum_products(ys, zs, sy, sz), s[8]);
-    s[9] = madd::<FMA>(det, sum_products(zs, xs, sz, sx), s[9]);
+    s[1] = det.mul_add(sx, s[1]);
+    s[2] = det.mul_add(sy, s[2]);
+    s[3] = det.mul_add(sz, s[3]);
+    s[4] = det.mul_add(sum_of_products(xs, xs, sx, sx), s[4]);
+    s[5] = det.mul_add(sum_of_products(ys, ys, sy, sy), s[5]);
+    s[6] = det.mul_add(sum_of_products(zs, zs, sz, sz), s[6]);
+    s[7] = det.mul_add(sum_of_products(xs, ys, sx, sy), s[7]);
+    s[8] = det.mul_add(sum_of_products(ys, zs, sy, sz), s[8]);
+    s[9] = det.mul_add(sum_of_products(zs, xs, sz, sx), s[9]);
 }
 
-/// Triangles handled side by side, so the compiler can put one triangle in each SIMD lane.
-const LANES: usize = 8;
-
-/// Sum of one block of triangles: `LANES` independent partial sums, added lane by lane at the end.
+/// Σₖ aₖbₖ + sₐs_b.
 #[inline(always)]
-fn block_kernel<const FMA: bool>(
-    positions: &[Point3<f64>],
-    chunk: &[[u32; 3]],
+fn sum_of_products<T: Real>(a: [T; 3], b: [T; 3], sa: T, sb: T) -> T {
+    a[0].mul_add(b[0], a[1].mul_add(b[1], a[2].mul_add(b[2], sa * sb)))
+}
+
+/// How far ahead (in triangles) corners are prefetched: about a memory latency's worth of work.
+const AHEAD: usize = 128;
+
+/// The sum of block `block` of the triangles, [`Real::LANES`] at a time; the lanes' partial sums
+/// are added at the end of the block, then the triangles left over one at a time.
+struct BlockSum<'a> {
+    positions: &'a [Point3<f64>],
+    triangles: &'a [[u32; 3]],
+    block: usize,
     reference: Point3<f64>,
-) -> [f64; 10] {
-    let corner = |i: u32| {
-        let p = positions[i as usize];
-        [p.x - reference.x, p.y - reference.y, p.z - reference.z]
-    };
-    let mut lanes = [[0.0; 10]; LANES];
-    let (groups, tail) = chunk.as_chunks::<LANES>();
-    for group in groups {
-        let corners: [[[f64; 3]; 3]; LANES] = std::array::from_fn(|l| group[l].map(corner));
-        for (lane, triangle) in lanes.iter_mut().zip(corners) {
-            add_triangle::<FMA>(triangle, lane);
+}
+
+impl Kernel for BlockSum<'_> {
+    type Output = [f64; 10];
+
+    #[inline(always)]
+    fn run<T: Real>(self) -> [f64; 10] {
+        let Self {
+            positions,
+            triangles,
+            block,
+            reference,
+        } = self;
+        let start = block * BLOCK;
+        let block = &triangles[start..triangles.len().min(start + BLOCK)];
+        // The vertices of triangles far ahead, which are not in cache when the mesh is not: the
+        // hardware prefetcher does not follow loads through an index array. One triangle per
+        // group covers its cache lines, as neighbouring triangles share vertices.
+        let mut lanes = [T::splat(0.0); 10];
+        let mut groups = block.chunks_exact(T::LANES);
+        for (g, group) in (&mut groups).enumerate() {
+            if let Some(t) = triangles.get(start + AHEAD + g * T::LANES) {
+                prefetch(&positions[t[0] as usize]);
+                prefetch(&positions[t[1] as usize]);
+                prefetch(&positions[t[2] as usize]);
+            }
+            let p0 = T::gather(positions, reference, group, 0);
+            let p1 = T::gather(positions, reference, group, 1);
+            let p2 = T::gather(positions, reference, group, 2);
+            add_tetrahedron([p0, p1, p2], &mut lanes);
         }
+        let mut sums = [0.0; 10];
+        for (s, l) in sums.iter_mut().zip(lanes) {
+            *s = l.sum_lanes();
+        }
+        for triangle in groups.remainder() {
+            let t = std::slice::from_ref(triangle);
+            let p0 = f64::gather(positions, reference, t, 0);
+            let p1 = f64::gather(positions, reference, t, 1);
+            let p2 = f64::gather(positions, reference, t, 2);
+            add_tetrahedron([p0, p1, p2], &mut sums);
+        }
+        sums
     }
-    for (lane, triangle) in lanes.iter_mut().zip(tail) {
-        add_triangle::<FMA>(triangle.map(corner), lane);
-    }
-    std::array::from_fn(|k| lanes.iter().map(|lane| lane[k]).sum())
 }
 
-/// The block kernel for this CPU: AVX2 with fused multiply-add where available.
-fn block_sum(positions: &[Point3<f64>], chunk: &[[u32; 3]], reference: Point3<f64>) -> [f64; 10] {
-    #[cfg(target_arch = "x86_64")]
-    if super::has_avx2_fma() {
-        // SAFETY: the CPU supports AVX2 and FMA (checked at run time just above), which is all
-        // `block_sum_avx2` requires beyond safe Rust.
-        #[allow(unsafe_code)]
-        return unsafe { block_sum_avx2(positions, chunk, reference) };
-    }
-    block_kernel::<false>(positions, chunk, reference)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn block_sum_avx2(
+fn block_sum(
     positions: &[Point3<f64>],
-    chunk: &[[u32; 3]],
+    triangles: &[[u32; 3]],
+    block: usize,
     reference: Point3<f64>,
+    level: Level,
 ) -> [f64; 10] {
-    block_kernel::<true>(positions, chunk, reference)
+    level.run(BlockSum {
+        positions,
+        triangles,
+        block,
+        reference,
+    })
 }
