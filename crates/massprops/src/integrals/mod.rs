@@ -73,12 +73,6 @@ impl VolumeIntegrals {
     }
 }
 
-/// Whether this CPU runs the AVX2 + FMA kernels (checked once, then cached by std).
-#[cfg(target_arch = "x86_64")]
-pub(crate) fn has_avx2_fma() -> bool {
-    std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
-}
-
 /// Neumaier's improved Kahan summation of N values at once.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct CompensatedSum<const N: usize> {
