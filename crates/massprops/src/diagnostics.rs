@@ -36,17 +36,17 @@ pub struct MeshDiagnostics {
     pub inconsistent_edges: usize,
     /// Faces of (numerically) zero area, which contribute nothing.
     pub degenerate_faces: usize,
-    /// Polygons whose corners leave their plane by more than [`PLANARITY_TOLERANCE`].
+    /// Polygons whose corners leave their plane by more than `PLANARITY_TOLERANCE`.
     pub nonplanar_faces: usize,
     /// Total surface area.
     pub surface_area: f64,
     /// Axis-aligned bounding box (min, max) of the used vertices.
     pub bounding_box: (Point3<f64>, Point3<f64>),
-    /// Up to [`EXAMPLES`] open edges as zero-based vertex pairs.
+    /// Up to `EXAMPLES` open edges as zero-based vertex pairs.
     pub open_edge_examples: Vec<(u32, u32)>,
-    /// Up to [`EXAMPLES`] zero-based indices of degenerate faces.
+    /// Up to `EXAMPLES` zero-based indices of degenerate faces.
     pub degenerate_face_examples: Vec<usize>,
-    /// Up to [`EXAMPLES`] zero-based indices of non-planar faces.
+    /// Up to `EXAMPLES` zero-based indices of non-planar faces.
     pub nonplanar_face_examples: Vec<usize>,
 }
 

@@ -7,7 +7,7 @@
 //! follow from the plane equation (eq. 18–24); the divergence theorem (eq. 6–17) sums them into the
 //! volume integrals. Faces of zero area have a zero Newell normal and contribute exactly zero.
 //!
-//! Speed: the formulas are written once, generic over [`Real`], and run on one face (`f64`) or
+//! Speed: the formulas are written once, generic over `Real`, and run on one face (`f64`) or
 //! on several faces of the same corner count side by side (one SIMD lane each). Each lane's
 //! choice of γ is a mask; corners are permuted into (α, β) and the results back into (x, y, z)
 //! by selects, so every lane does the same arithmetic whatever its projection plane.

@@ -8,6 +8,9 @@
 //! - [`triangle`]: for triangle meshes, a sum of signed tetrahedra with the reference point as
 //!   apex (Tonon 2004), sequential or parallel.
 //!
+//! Both run one face per SIMD lane, on the vector types of `simd` (AVX-512, AVX2 + FMA, or
+//! portable scalar code, chosen at run time).
+//!
 //! Numerics: coordinates are taken relative to the bounding-box centre, so a body far from the
 //! origin loses no digits to cancellation, and face contributions are added in fixed blocks whose
 //! sums are combined with Neumaier's compensated summation. The block order is fixed, so the
