@@ -23,7 +23,7 @@ pub struct PolyMesh {
     face_starts: Vec<u32>,
     all_triangles: bool,
     /// Centre of the bounding box of all positions: the point the volume integrals are taken
-    /// about, found in the validation pass that reads every coordinate anyway.
+    /// about, found once when the mesh is built, so integration reads vertices only through faces.
     reference: Point3<f64>,
 }
 

@@ -62,7 +62,7 @@ const MAX_LANES: usize = 8;
 /// Sum of the (unscaled) contributions of a block of faces. Triangles and quads are queued and
 /// integrated [`Real::LANES`] at a time; other polygons, and what is left in the queues at the
 /// end of the block, one at a time. The order is fixed by the face order, so results are
-/// reproducible.
+/// reproducible (bit for bit on CPUs with the same instruction set).
 struct BlockSum<'a> {
     mesh: &'a PolyMesh,
     faces: Range<usize>,
@@ -79,6 +79,7 @@ impl Kernel for BlockSum<'_> {
             faces,
             reference,
         } = self;
+        const { assert!(T::LANES <= MAX_LANES) };
         let positions = mesh.positions();
         let mut lanes = [T::splat(0.0); 10];
         let mut single = [0.0; 10];
@@ -401,9 +402,9 @@ mod tests {
     use crate::shapes;
 
     /// Faces of 3, 4 and 23 corners, each kind in a count that leaves a partial group of lanes,
-    /// plus a zero-area triangle and a zero-area quad, scaled by `scale`.
+    /// over two blocks, plus a zero-area triangle and a zero-area quad, scaled by `scale`.
     fn mixed_mesh(scale: f64) -> PolyMesh {
-        let mut parts = shapes::torus(1.0, 0.3, 13, 7);
+        let mut parts = shapes::torus(1.0, 0.3, 31, 19);
         parts
             .append(&shapes::torus(0.5, 0.2, 11, 5).triangulated())
             .append(
@@ -420,6 +421,7 @@ mod tests {
             .collect();
         faces.push(vec![0, 0, 1]);
         faces.push(vec![0, 1, 1, 0]);
+        assert_eq!(faces.len(), 31 * 19 + 2 * 11 * 5 + 25 + 2);
         PolyMesh::new(positions, &faces).expect("valid")
     }
 

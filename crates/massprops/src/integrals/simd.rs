@@ -1,17 +1,18 @@
 //! Vectors of `f64` for the integration kernels, so each formula is written once (generic over
 //! [`Real`]) and runs on one face or triangle per lane:
 //! - `f64`: one lane, any CPU;
-//! - [`F64x4`]: four lanes, x86-64 with AVX2 and FMA;
-//! - [`F64x8`]: eight lanes, x86-64 with AVX-512 (F, VL, DQ).
+//! - `F64x4`: four lanes, x86-64 with AVX2 and FMA;
+//! - `F64x8`: eight lanes, x86-64 with AVX-512 (F, VL, DQ).
 //!
 //! Corners are loaded by [`Real::gather`], one vertex per lane, and transposed into x, y, z
 //! vectors in registers. Per-lane choices (Mirtich's projection plane) are masks and selects, so
 //! every lane runs the same instructions.
 //!
-//! Soundness: the x86 types wrap the intrinsics of their instruction set. A value of one can only
-//! be made by [`Real::splat`] or [`Real::gather`], and both (like every operation) are called only
-//! from kernels compiled with that instruction set (`#[target_feature]`), which [`Level::run`]
-//! enters only after detecting the features at run time.
+//! Soundness: the x86 types wrap the intrinsics of their instruction set, which must not run on
+//! a CPU without it. The types are private to this module, so the only code that ever handles
+//! them is a [`Kernel`] instantiated here, inside a function compiled for that instruction set
+//! (`#[target_feature]`), which [`Level::run`] enters only after detecting the features at run
+//! time.
 #![allow(unsafe_code)]
 
 use std::ops::{Add, AddAssign, BitAnd, Div, Mul, Neg, Sub};
@@ -23,9 +24,9 @@ use nalgebra::Point3;
 pub(crate) enum Level {
     /// One lane of plain `f64` arithmetic.
     Portable,
-    /// [`F64x4`].
+    /// `F64x4`.
     Avx2,
-    /// [`F64x8`].
+    /// `F64x8`.
     Avx512,
 }
 
@@ -142,10 +143,11 @@ pub(crate) trait Real:
     fn is_finite_nonzero(self) -> Self::Mask;
     /// `yes` where the mask is set, else `no`.
     fn select(mask: Self::Mask, yes: Self, no: Self) -> Self;
-    /// The power of two s that brings |self| into [1, 2) (for a normal, finite, non-zero self;
-    /// other lanes get some other power of two or zero).
+    /// The power of two s that brings |self| into [1, 2), for finite non-zero |self| < 2¹⁰²³
+    /// (subnormals get 2¹⁰²³; |self| ≥ 2¹⁰²³ gets 0, and infinities and NaN get −∞: callers mask
+    /// those lanes, or would overflow anyway at such sizes).
     fn scale_to_unit_exponent(self) -> Self;
-    /// Sum of the lanes, in a fixed order.
+    /// Sum of the lanes, in a fixed order (so results are reproducible).
     fn sum_lanes(self) -> f64;
     /// The x, y and z coordinates, relative to `reference`, of corner `corner` of faces
     /// `faces[0..LANES]` (one face per lane).
@@ -211,7 +213,7 @@ impl Real for f64 {
 }
 
 #[cfg(target_arch = "x86_64")]
-pub(crate) use x86::{F64x4, F64x8};
+use x86::{F64x4, F64x8};
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
@@ -276,11 +278,11 @@ mod x86 {
 
     /// Four lanes in an AVX2 register.
     #[derive(Clone, Copy)]
-    pub(crate) struct F64x4(__m256d);
+    pub(super) struct F64x4(__m256d);
 
     /// Lane mask of [`F64x4`]: all bits set in a true lane.
     #[derive(Clone, Copy)]
-    pub(crate) struct Mask4(__m256d);
+    pub(super) struct Mask4(__m256d);
 
     impl BitAnd for Mask4 {
         type Output = Self;
@@ -401,7 +403,7 @@ mod x86 {
 
     /// Eight lanes in an AVX-512 register.
     #[derive(Clone, Copy)]
-    pub(crate) struct F64x8(__m512d);
+    pub(super) struct F64x8(__m512d);
 
     arithmetic!(
         F64x8,
@@ -466,7 +468,13 @@ mod x86 {
         #[inline(always)]
         fn sum_lanes(self) -> f64 {
             // SAFETY: see the module doc.
-            unsafe { _mm512_reduce_add_pd(self.0) }
+            let halves = unsafe {
+                _mm256_add_pd(
+                    _mm512_castpd512_pd256(self.0),
+                    _mm512_extractf64x4_pd::<1>(self.0),
+                )
+            };
+            F64x4(halves).sum_lanes()
         }
         #[inline(always)]
         fn gather<const N: usize>(

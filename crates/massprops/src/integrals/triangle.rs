@@ -1,8 +1,8 @@
 //! The triangle fast path: the solid as a sum of signed tetrahedra, one per triangle, with the
 //! reference point as their common apex (F. Tonon, "Explicit Exact Formulas for the 3-D
 //! Tetrahedron Inertia Tensor in Terms of its Vertex Coordinates", J. Math. Stat. 1(1), 2004).
-//! Algebraically the same as Mirtich's integrals specialised to triangles, in fewer operations
-//! (about 50 per triangle, against about 80 for Eberly's reduction of Mirtich's).
+//! Algebraically the same as Mirtich's integrals specialised to triangles, in about 50 flops per
+//! triangle.
 //!
 //! Speed: one triangle per SIMD lane (`simd`), and the corners of triangles far ahead
 //! prefetched, as the hardware prefetcher cannot follow loads through the index array. The
@@ -135,12 +135,10 @@ impl Kernel for BlockSum<'_> {
         } = self;
         let start = block * BLOCK;
         let block = &triangles[start..triangles.len().min(start + BLOCK)];
-        // The vertices of triangles far ahead, which are not in cache when the mesh is not: the
-        // hardware prefetcher does not follow loads through an index array. One triangle per
-        // group covers its cache lines, as neighbouring triangles share vertices.
         let mut lanes = [T::splat(0.0); 10];
         let mut groups = block.chunks_exact(T::LANES);
         for (g, group) in (&mut groups).enumerate() {
+            // One triangle per group: neighbouring triangles share vertices and cache lines.
             if let Some(t) = triangles.get(start + AHEAD + g * T::LANES) {
                 prefetch(&positions[t[0] as usize]);
                 prefetch(&positions[t[1] as usize]);
