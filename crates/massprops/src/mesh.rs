@@ -22,7 +22,7 @@ pub struct PolyMesh {
     /// `face_starts[f]..face_starts[f + 1]` is face `f`'s range in `indices`.
     face_starts: Vec<u32>,
     all_triangles: bool,
-    /// Centre of the bounding box of all positions: the point the volume integrals are taken
+    /// Centre of the bounding box of the used positions: the point the volume integrals are taken
     /// about, found once when the mesh is built, so integration reads vertices only through faces.
     reference: Point3<f64>,
 }
@@ -80,7 +80,6 @@ impl PolyMesh {
                 return Err(MeshError::NonFiniteVertex { vertex, value });
             }
         }
-        let reference = crate::integrals::reference_point(&positions);
         let mut face_starts = Vec::with_capacity(arities.len() + 1);
         let mut start = 0usize;
         for (face, &corners) in arities.iter().enumerate() {
@@ -108,6 +107,7 @@ impl PolyMesh {
             start = end;
         }
         face_starts.push(start as u32);
+        let reference = crate::integrals::reference_point(&positions, &indices[..start]);
         let all_triangles = arities.iter().all(|&a| a == 3);
         Ok(Self {
             positions,
@@ -123,7 +123,7 @@ impl PolyMesh {
         &self.positions
     }
 
-    /// The centre of the bounding box of all positions (used or not), which the volume integrals
+    /// The centre of the bounding box of the positions that faces use, which the volume integrals
     /// are taken about.
     pub(crate) fn reference_point(&self) -> Point3<f64> {
         self.reference

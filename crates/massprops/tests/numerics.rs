@@ -84,6 +84,30 @@ fn the_ten_integrals_of_a_far_body_are_those_of_the_near_one() {
 }
 
 #[test]
+fn a_stray_unused_vertex_far_away_costs_no_digits() {
+    // OBJ files may carry vertices no face uses; the reference point ignores them.
+    let mesh = dyadic_body().build();
+    let mut positions = mesh.positions().to_vec();
+    positions.push(Point3::new(1e12, -1e12, 1e12));
+    let faces: Vec<Vec<usize>> = mesh
+        .faces()
+        .map(|f| f.iter().map(|&i| i as usize).collect())
+        .collect();
+    let stray = PolyMesh::new(positions, &faces).expect("valid");
+    for path in [IntegrationPath::Polygon, IntegrationPath::Triangle] {
+        let clean = props(&mesh, path);
+        let with_stray = props(&stray, path);
+        let what = format!("{path:?}");
+        assert_rel(with_stray.mass, clean.mass, 1e-14, &what);
+        assert_mat(&with_stray.inertia_com, &clean.inertia_com, 1e-14, &what);
+        assert!(
+            (with_stray.center_of_mass - clean.center_of_mass).amax() < 1e-14,
+            "{what}"
+        );
+    }
+}
+
+#[test]
 fn tiny_and_huge_bodies_have_correct_principal_axes() {
     let rot = UnitQuaternion::from_euler_angles(0.3, -0.8, 1.9);
     let r = *rot.to_rotation_matrix().matrix();

@@ -119,28 +119,28 @@ pub(crate) fn compensated_total<const N: usize>(
     acc.total()
 }
 
-/// The reference point the integrals are taken about: the centre of the vertices' bounding box.
-pub(crate) fn reference_point(positions: &[Point3<f64>]) -> Point3<f64> {
-    center(bounds(positions))
+/// The reference point the integrals are taken about: the centre of the bounding box of the
+/// vertices that `indices` use (a stray unused vertex far away would cost digits otherwise).
+pub(crate) fn reference_point(positions: &[Point3<f64>], indices: &[u32]) -> Point3<f64> {
+    let mut used = vec![false; positions.len()];
+    for &i in indices {
+        used[i as usize] = true;
+    }
+    // Plain comparisons (not f64::min, whose NaN rules block vectorisation); coordinates are
+    // finite by the mesh's invariant.
+    let (mut lo, mut hi) = empty_bounds();
+    for (p, &u) in positions.iter().zip(&used) {
+        for k in 0..3 {
+            let c = p[k];
+            lo[k] = if u && c < lo[k] { c } else { lo[k] };
+            hi[k] = if u && c > hi[k] { c } else { hi[k] };
+        }
+    }
+    center((lo, hi))
 }
 
 fn empty_bounds() -> ([f64; 3], [f64; 3]) {
     ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3])
-}
-
-/// Per-axis (min, max) of the positions.
-fn bounds(positions: &[Point3<f64>]) -> ([f64; 3], [f64; 3]) {
-    // Plain comparisons (not f64::min, whose NaN rules block vectorisation); coordinates are
-    // finite by the mesh's invariant.
-    let (mut lo, mut hi) = empty_bounds();
-    for p in positions {
-        for k in 0..3 {
-            let c = p[k];
-            lo[k] = if c < lo[k] { c } else { lo[k] };
-            hi[k] = if c > hi[k] { c } else { hi[k] };
-        }
-    }
-    (lo, hi)
 }
 
 fn center((lo, hi): ([f64; 3], [f64; 3])) -> Point3<f64> {
