@@ -11,9 +11,9 @@
 //! Both run one face per SIMD lane, on the vector types of `simd` (AVX-512, AVX2 + FMA, or
 //! portable scalar code, chosen at run time).
 //!
-//! Numerics: coordinates are taken relative to the bounding-box centre, so a body far from the
-//! origin loses no digits to cancellation, and face contributions are added in fixed blocks whose
-//! sums are combined with Neumaier's compensated summation. The block order is fixed, so the
+//! Numerics: coordinates are taken relative to the bounding-box centre of the vertices faces use,
+//! so a body far from the origin loses no digits to cancellation, and face contributions are
+//! added in fixed blocks whose sums are combined with Neumaier's compensated summation. The block order is fixed, so the
 //! parallel path returns bit-for-bit the sequential result.
 
 pub mod mirtich;
