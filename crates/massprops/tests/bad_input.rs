@@ -238,6 +238,12 @@ fn non_finite_coordinates_name_the_line() {
         assert!(msg.contains("line 4"), "{bad}: {msg}");
         assert!(msg.contains("non-finite"), "{bad}: {msg}");
     }
+    // Welding merges the repeated vertices before the check; the error still names the file's
+    // vertex (zero-based, in file order), not the welded one.
+    let repeated = "v 0 0 0\nv 0 0 0\nv 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 4 5\n";
+    let msg = obj_error(repeated);
+    assert!(msg.contains("line 5"), "{msg}");
+    assert!(msg.contains("vertex 4 "), "{msg}");
 }
 
 #[test]

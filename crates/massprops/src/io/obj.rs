@@ -88,20 +88,27 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
     let (welded, remap) = weld_exact(&positions);
     let indices = indices.into_iter().map(|i| remap[i as usize]).collect();
     PolyMesh::from_flat(welded, indices, &arities).map_err(|e| {
-        let line = match &e {
-            MeshError::NonFiniteVertex { .. } => first_line(text, |kw, rest| {
-                kw == "v"
-                    && rest
-                        .split_whitespace()
-                        .take(3)
-                        .any(|t| t.parse::<f64>().is_ok_and(|v| !v.is_finite()))
-            }),
-            _ => None,
+        let (line, source) = match e {
+            // The welded index means nothing to the user: name the file's vertex and its line.
+            MeshError::NonFiniteVertex { value, .. } => {
+                let mut vertex = 0;
+                let line = first_line(text, |kw, rest| {
+                    let bad = kw == "v"
+                        && rest
+                            .split_whitespace()
+                            .take(3)
+                            .any(|t| t.parse::<f64>().is_ok_and(|v| !v.is_finite()));
+                    vertex += usize::from(kw == "v" && !bad);
+                    bad
+                });
+                (line, MeshError::NonFiniteVertex { vertex, value })
+            }
+            e => (None, e),
         };
         MeshError::InFile {
             path: path.to_path_buf(),
             line,
-            source: Box::new(e),
+            source: Box::new(source),
         }
     })
 }
