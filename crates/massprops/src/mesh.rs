@@ -5,7 +5,7 @@
 
 use std::collections::HashMap;
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::Point3;
 
 use crate::MeshError;
 
@@ -22,9 +22,8 @@ pub struct PolyMesh {
     /// `face_starts[f]..face_starts[f + 1]` is face `f`'s range in `indices`.
     face_starts: Vec<u32>,
     all_triangles: bool,
-    /// Centre of the bounding box of the used positions: the point the volume integrals are taken
-    /// about, found once when the mesh is built, so integration reads vertices only through faces.
-    reference: Point3<f64>,
+    /// Bounding box `(min, max)` of the used positions, found once when the mesh is built.
+    bounds: (Point3<f64>, Point3<f64>),
 }
 
 impl PolyMesh {
@@ -107,14 +106,14 @@ impl PolyMesh {
             start = end;
         }
         face_starts.push(start as u32);
-        let reference = crate::integrals::reference_point(&positions, &indices[..start]);
+        let bounds = used_bounds(&positions, &indices[..start]);
         let all_triangles = arities.iter().all(|&a| a == 3);
         Ok(Self {
             positions,
             indices,
             face_starts,
             all_triangles,
-            reference,
+            bounds,
         })
     }
 
@@ -124,9 +123,11 @@ impl PolyMesh {
     }
 
     /// The centre of the bounding box of the positions that faces use, which the volume integrals
-    /// are taken about.
+    /// are taken about (a stray unused vertex far away would cost digits otherwise).
     pub(crate) fn reference_point(&self) -> Point3<f64> {
-        self.reference
+        let (lo, hi) = self.bounds;
+        // Halving each bound first cannot overflow, whatever the coordinates.
+        Point3::from(lo.coords * 0.5 + hi.coords * 0.5)
     }
 
     /// Number of faces.
@@ -171,13 +172,7 @@ impl PolyMesh {
 
     /// Axis-aligned bounding box `(min, max)` of the vertices that faces use.
     pub fn bounding_box(&self) -> (Point3<f64>, Point3<f64>) {
-        let mut lo = Vector3::repeat(f64::INFINITY);
-        let mut hi = Vector3::repeat(f64::NEG_INFINITY);
-        for p in self.used_positions() {
-            lo = lo.inf(&p.coords);
-            hi = hi.sup(&p.coords);
-        }
-        (Point3::from(lo), Point3::from(hi))
+        self.bounds
     }
 
     /// The positions some face refers to, each once, in index order.
@@ -207,6 +202,25 @@ impl PolyMesh {
         let arities: Vec<usize> = self.faces().map(<[u32]>::len).collect();
         Self::from_flat(positions, self.indices.clone(), &arities)
     }
+}
+
+/// Per-axis (min, max) of the positions that `indices` use (all in range).
+fn used_bounds(positions: &[Point3<f64>], indices: &[u32]) -> (Point3<f64>, Point3<f64>) {
+    let mut used = vec![false; positions.len()];
+    for &i in indices {
+        used[i as usize] = true;
+    }
+    // Plain comparisons (not f64::min, whose NaN rules block vectorisation); coordinates are
+    // finite by the mesh's invariant.
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for (p, &u) in positions.iter().zip(&used) {
+        for k in 0..3 {
+            let c = p[k];
+            lo[k] = if u && c < lo[k] { c } else { lo[k] };
+            hi[k] = if u && c > hi[k] { c } else { hi[k] };
+        }
+    }
+    (Point3::from(lo), Point3::from(hi))
 }
 
 /// Merges vertices with bit-identical coordinates, so a file that repeats a position per corner

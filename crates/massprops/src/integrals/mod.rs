@@ -119,35 +119,6 @@ pub(crate) fn compensated_total<const N: usize>(
     acc.total()
 }
 
-/// The reference point the integrals are taken about: the centre of the bounding box of the
-/// vertices that `indices` use (a stray unused vertex far away would cost digits otherwise).
-pub(crate) fn reference_point(positions: &[Point3<f64>], indices: &[u32]) -> Point3<f64> {
-    let mut used = vec![false; positions.len()];
-    for &i in indices {
-        used[i as usize] = true;
-    }
-    // Plain comparisons (not f64::min, whose NaN rules block vectorisation); coordinates are
-    // finite by the mesh's invariant.
-    let (mut lo, mut hi) = empty_bounds();
-    for (p, &u) in positions.iter().zip(&used) {
-        for k in 0..3 {
-            let c = p[k];
-            lo[k] = if u && c < lo[k] { c } else { lo[k] };
-            hi[k] = if u && c > hi[k] { c } else { hi[k] };
-        }
-    }
-    center((lo, hi))
-}
-
-fn empty_bounds() -> ([f64; 3], [f64; 3]) {
-    ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3])
-}
-
-fn center((lo, hi): ([f64; 3], [f64; 3])) -> Point3<f64> {
-    // Halving each bound first cannot overflow, whatever the coordinates.
-    Point3::from(std::array::from_fn(|k| lo[k] * 0.5 + hi[k] * 0.5))
-}
-
 /// Computes the ten volume integrals of `mesh` about its bounding-box centre (found when the mesh
 /// was built).
 pub fn volume_integrals(mesh: &crate::PolyMesh, path: IntegrationPath) -> VolumeIntegrals {
@@ -170,8 +141,24 @@ pub fn volume_integrals(mesh: &crate::PolyMesh, path: IntegrationPath) -> Volume
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// Asserts that two sets of the ten integrals of a body of size ~`scale` agree to 1e-13
+    /// relative, each integral against the size of its degree (L³, L⁴, L⁵).
+    pub(crate) fn assert_agree(fast: &[f64; 10], portable: &[f64; 10], scale: f64, what: &str) {
+        for (degree, range) in [(3, 0..1), (4, 1..4), (5, 4..10)] {
+            let tolerance = 1e-13 * scale.powi(degree);
+            for i in range {
+                assert!(
+                    (fast[i] - portable[i]).abs() <= tolerance,
+                    "{what}, integral {i}: {} vs {}",
+                    fast[i],
+                    portable[i]
+                );
+            }
+        }
+    }
 
     #[test]
     fn compensated_sum_recovers_what_plain_sum_loses() {

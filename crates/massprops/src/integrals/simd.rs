@@ -33,16 +33,20 @@ pub(crate) enum Level {
 impl Level {
     /// The best level this CPU supports.
     pub(crate) fn detect() -> Level {
-        *Self::available().last().unwrap_or(&Level::Portable)
+        Self::ALL
+            .into_iter()
+            .rev()
+            .find(|l| l.is_supported())
+            .unwrap_or(Level::Portable)
     }
 
     /// Every level this CPU supports, `Portable` first.
+    #[cfg(test)]
     pub(crate) fn available() -> Vec<Level> {
-        [Level::Portable, Level::Avx2, Level::Avx512]
-            .into_iter()
-            .filter(|l| l.is_supported())
-            .collect()
+        Self::ALL.into_iter().filter(|l| l.is_supported()).collect()
     }
+
+    const ALL: [Level; 3] = [Level::Portable, Level::Avx2, Level::Avx512];
 
     fn is_supported(self) -> bool {
         match self {

@@ -184,6 +184,7 @@ mod tests {
     use nalgebra::{Isometry3, Vector3};
 
     use super::*;
+    use crate::integrals::tests::assert_agree;
     use crate::shapes;
 
     #[test]
@@ -207,17 +208,12 @@ mod tests {
             let portable = integrate_with(Level::Portable, mesh.positions(), triangles, reference);
             for level in Level::available() {
                 let fast = integrate_with(level, mesh.positions(), triangles, reference);
-                for (degree, range) in [(3, 0..1), (4, 1..4), (5, 4..10)] {
-                    let tolerance = 1e-13 * scale.powi(degree);
-                    for i in range {
-                        assert!(
-                            (fast[i] - portable[i]).abs() <= tolerance,
-                            "{level:?}, scale {scale}, integral {i}: {} vs {}",
-                            fast[i],
-                            portable[i]
-                        );
-                    }
-                }
+                assert_agree(
+                    &fast,
+                    &portable,
+                    scale,
+                    &format!("{level:?}, scale {scale}"),
+                );
             }
             // Two tori of volume close to 2π²Rr²: 1.78 and 0.55, less the polygons' deficit.
             let volume = portable[0] / scale.powi(3);
