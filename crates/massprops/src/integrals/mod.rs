@@ -17,6 +17,7 @@
 //! parallel path returns bit-for-bit the sequential result.
 
 pub mod mirtich;
+mod parallel;
 mod simd;
 pub mod triangle;
 

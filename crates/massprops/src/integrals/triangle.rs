@@ -6,13 +6,12 @@
 //!
 //! Speed: one triangle per SIMD lane (`simd`), and the corners of triangles far ahead
 //! prefetched, as the hardware prefetcher cannot follow loads through the index array. The
-//! parallel path gives each thread one contiguous run of blocks.
+//! parallel path shares the blocks out with `parallel`.
 
 use nalgebra::Point3;
-use rayon::prelude::*;
 
 use super::simd::{Kernel, Level, Real, prefetch};
-use super::{BLOCK, compensated_total};
+use super::{BLOCK, compensated_total, parallel};
 
 /// Final factors of the tetrahedron sums: 1/6, 1/24, 1/120.
 const SCALE: [f64; 10] = [
@@ -49,25 +48,17 @@ fn integrate_with(
     scaled(compensated_total(blocks))
 }
 
-/// The ten volume integrals on the rayon pool; equal bit for bit to [`integrate`].
+/// The ten volume integrals on the caller and the rayon pool; equal bit for bit to
+/// [`integrate`].
 pub fn integrate_parallel(
     positions: &[Point3<f64>],
     triangles: &[[u32; 3]],
     reference: Point3<f64>,
 ) -> [f64; 10] {
     let level = Level::detect();
-    let mut blocks = vec![[0.0; 10]; triangles.len().div_ceil(BLOCK)];
-    // One contiguous run of blocks per thread: a task per block costs more than the block itself
-    // on small meshes.
-    let per_task = blocks.len().div_ceil(rayon::current_num_threads()).max(1);
-    blocks
-        .par_chunks_mut(per_task)
-        .enumerate()
-        .for_each(|(task, sums)| {
-            for (b, sum) in (task * per_task..).zip(sums) {
-                *sum = block_sum(positions, triangles, b, reference, level);
-            }
-        });
+    let blocks = parallel::map_blocks(triangles.len().div_ceil(BLOCK), |b| {
+        block_sum(positions, triangles, b, reference, level)
+    });
     scaled(compensated_total(blocks))
 }
 
