@@ -4,10 +4,17 @@
 //! "Guided Self-Scheduling: A Practical Scheduling Scheme for Parallel Supercomputers", IEEE
 //! Trans. Computers 36(12), 1987): each claim takes a share of the blocks still unclaimed, so
 //! early claims are large, the last ones a single block, and a thread that starts late or is
-//! preempted only leaves less work for itself. Measured on a 2-core VM, handing a job to a rayon
-//! worker takes 10–20 µs when the worker is awake and 50–70 µs when it sleeps: with a fixed split,
-//! that latency stalls the whole call; here the caller starts at once and the worker joins when it
-//! can.
+//! preempted only leaves less work for itself.
+//!
+//! Why the caller works rather than waits, measured on a 2-core KVM guest: a fixed split run
+//! from outside the pool puts the caller to sleep and wakes it at the end, about 16 µs per call,
+//! as long as the whole job on one thread for 10k triangles. A task spawned while the pool's
+//! threads are awake starts 0.4–1.6 µs later, so the caller starts at once, a block at a time,
+//! and the helper joins.
+//! When the pool sleeps, the guest scheduler wakes the helper on the caller's own core (it avoids
+//! the halted vCPU) and the two share it until the load balancer moves one, milliseconds later;
+//! so when no helper has started within [`HELPER_START_WAIT`], the caller hands its share to the
+//! pool too and sleeps, which frees its core.
 //!
 //! Every block is still computed by the same function and stored in its own slot, so the result
 //! does not depend on which thread took which block.
@@ -16,56 +23,103 @@ use std::ops::Range;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
+/// How long the caller waits for a helper to start before it steps aside (see the module doc).
+const HELPER_START_WAIT: Duration = Duration::from_micros(10);
+
 /// How long the caller spins, once every block is claimed, for a helper still finishing one,
 /// before it falls back to rayon's blocking wait (which costs a thread wake-up).
 const SPIN_LIMIT: Duration = Duration::from_micros(200);
 
-/// `[block(0), block(1), …, block(count − 1)]`, computed on the caller and the rayon pool.
+/// `block(0), block(1), …, block(count − 1)`, computed on the caller and the rayon pool.
 pub(crate) fn map_blocks<const N: usize>(
     count: usize,
     block: impl Fn(usize) -> [f64; N] + Sync,
-) -> Vec<[f64; N]> {
-    let helpers = rayon::current_num_threads().saturating_sub(1);
-    let schedule = match Schedule::new(count, helpers + 1) {
-        Some(schedule) if helpers > 0 && count > 1 => schedule,
-        _ => return (0..count).map(block).collect(),
-    };
+) -> impl Iterator<Item = [f64; N]> {
     // f64 bits in relaxed atomics: each slot is written once by whichever thread claims it, and
-    // the end of the rayon scope orders those writes before the reads below.
-    let slots: Vec<[AtomicU64; N]> = (0..count)
-        .map(|_| std::array::from_fn(|_| AtomicU64::new(0)))
-        .collect();
-    let active_helpers = AtomicUsize::new(0);
-    let work = |end| {
-        while let Some(claimed) = schedule.claim(end) {
-            for b in claimed {
-                for (slot, value) in slots[b].iter().zip(block(b)) {
-                    slot.store(value.to_bits(), Ordering::Relaxed);
-                }
+    // the end of the rayon scope orders those writes before the reads.
+    let slots: Vec<[AtomicU64; N]> = match Schedule::new(count, rayon::current_num_threads()) {
+        Some(schedule) if schedule.threads > 1 && count > 1 => {
+            let slots: Vec<_> = (0..count)
+                .map(|_| std::array::from_fn(|_| AtomicU64::new(0)))
+                .collect();
+            run(&schedule, &slots, block, HELPER_START_WAIT);
+            slots
+        }
+        _ => (0..count)
+            .map(|b| block(b).map(|value| AtomicU64::new(value.to_bits())))
+            .collect(),
+    };
+    slots
+        .into_iter()
+        .map(|slot| slot.map(|bits| f64::from_bits(bits.into_inner())))
+}
+
+/// Fills `slots` with the blocks: one rayon task per other thread claims from the back of
+/// `schedule`; the caller takes single blocks from the front until a helper starts, then
+/// claims like the helpers, or steps aside if none has started within `helper_start_wait`.
+fn run<const N: usize>(
+    schedule: &Schedule,
+    slots: &[[AtomicU64; N]],
+    block: impl Fn(usize) -> [f64; N] + Sync,
+    helper_start_wait: Duration,
+) {
+    let (started, finished) = (AtomicUsize::new(0), AtomicUsize::new(0));
+    let fill = |run: Range<usize>| {
+        for b in run {
+            for (slot, value) in slots[b].iter().zip(block(b)) {
+                slot.store(value.to_bits(), Ordering::Relaxed);
             }
         }
     };
+    let work = |end| {
+        while let Some(run) = schedule.claim(end) {
+            fill(run);
+        }
+    };
     rayon::in_place_scope(|scope| {
-        for _ in 0..helpers {
+        for _ in 1..schedule.threads {
             scope.spawn(|_| {
-                active_helpers.fetch_add(1, Ordering::AcqRel);
+                started.fetch_add(1, Ordering::AcqRel);
                 work(End::Back);
-                active_helpers.fetch_sub(1, Ordering::AcqRel);
+                finished.fetch_add(1, Ordering::AcqRel);
             });
         }
-        work(End::Front);
-        // A helper that has started holds at most one claim, soon done: spinning for it is
-        // cheaper than being woken. A helper that never started finds nothing left, and the
-        // scope waits for it either way.
-        let start = Instant::now();
-        while active_helpers.load(Ordering::Acquire) > 0 && start.elapsed() < SPIN_LIMIT {
-            std::hint::spin_loop();
+        let deadline = Instant::now() + helper_start_wait;
+        loop {
+            if started.load(Ordering::Acquire) > 0 {
+                work(End::Front);
+                break;
+            }
+            if Instant::now() >= deadline {
+                scope.spawn(|_| work(End::Front));
+                return;
+            }
+            match schedule.claim_at_most(End::Front, 1) {
+                Some(run) => fill(run),
+                None => break,
+            }
         }
+        // A helper that has started holds at most one claim, soon done: spinning for it is
+        // cheaper than being woken. One that never started finds nothing left, and the scope
+        // waits for it either way.
+        spin_until(SPIN_LIMIT, || {
+            finished.load(Ordering::Acquire) == started.load(Ordering::Acquire)
+        });
     });
-    slots
-        .iter()
-        .map(|slot| slot.each_ref().map(|bits| f64::from_bits(bits.load(Ordering::Relaxed))))
-        .collect()
+}
+
+/// Spins until `done()` or `limit` has passed; whether `done()`.
+fn spin_until(limit: Duration, done: impl Fn() -> bool) -> bool {
+    let start = Instant::now();
+    loop {
+        if done() {
+            return true;
+        }
+        if start.elapsed() >= limit {
+            return false;
+        }
+        std::hint::spin_loop();
+    }
 }
 
 /// Which end of the unclaimed blocks a thread takes from.
@@ -98,11 +152,17 @@ impl Schedule {
     /// The next run of unclaimed blocks at `end`: a `1/(2·threads)` share of those left, at
     /// least one.
     fn claim(&self, end: End) -> Option<Range<usize>> {
+        self.claim_at_most(end, usize::MAX)
+    }
+
+    /// [`Self::claim`], of at most `most` (≥ 1) blocks.
+    fn claim_at_most(&self, end: End, most: usize) -> Option<Range<usize>> {
+        let most = u64::try_from(most).unwrap_or(u64::MAX);
         let mut unclaimed = self.unclaimed.load(Ordering::Relaxed);
         loop {
             let (front, back) = (unclaimed & u64::from(u32::MAX), unclaimed >> 32);
             let left = back.checked_sub(front).filter(|&left| left > 0)?;
-            let size = left.div_ceil(2 * self.threads);
+            let size = left.div_ceil(2 * self.threads).min(most);
             let (run, rest) = match end {
                 End::Front => (front..front + size, (back << 32) | (front + size)),
                 End::Back => (back - size..back, ((back - size) << 32) | front),
@@ -152,6 +212,10 @@ mod tests {
             }
         }
         assert!(Schedule::new(1 << 32, 2).is_none());
+        let schedule = Schedule::new(100, 2).expect("small count");
+        assert_eq!(schedule.claim_at_most(End::Front, 1), Some(0..1));
+        assert_eq!(schedule.claim_at_most(End::Back, 3), Some(97..100));
+        assert_eq!(schedule.claim(End::Front), Some(1..25));
     }
 
     #[test]
@@ -164,8 +228,33 @@ mod tests {
             let block = |b: usize| [b as f64, (b * b) as f64 + 0.5];
             let expected: Vec<[f64; 2]> = (0..count).map(block).collect();
             // From inside the pool (the caller is a rayon worker) and from outside it.
-            assert_eq!(pool.install(|| map_blocks(count, block)), expected);
-            assert_eq!(map_blocks(count, block), expected, "{count} blocks");
+            let inside: Vec<_> = pool.install(|| map_blocks(count, block).collect());
+            assert_eq!(inside, expected, "{count} blocks");
+            let outside: Vec<_> = map_blocks(count, block).collect();
+            assert_eq!(outside, expected, "{count} blocks");
+        }
+    }
+
+    #[test]
+    fn the_caller_working_or_stepping_aside_fills_the_same_slots() {
+        let count = 300;
+        let block = |b: usize| [(b as f64).sqrt(), -(b as f64)];
+        let expected: Vec<[f64; 2]> = (0..count).map(block).collect();
+        // No wait: the caller almost always steps aside; a long one: it always works.
+        for wait in [Duration::ZERO, Duration::from_secs(5)] {
+            let schedule = Schedule::new(count, 2).expect("small count");
+            let slots: Vec<[AtomicU64; 2]> = (0..count)
+                .map(|_| std::array::from_fn(|_| AtomicU64::new(0)))
+                .collect();
+            run(&schedule, &slots, block, wait);
+            let filled: Vec<[f64; 2]> = slots
+                .iter()
+                .map(|slot| {
+                    slot.each_ref()
+                        .map(|b| f64::from_bits(b.load(Ordering::Relaxed)))
+                })
+                .collect();
+            assert_eq!(filled, expected, "wait {wait:?}");
         }
     }
 }
