@@ -2,10 +2,11 @@
 //! `MassProperties::from_trimesh` on the same data, for 10k to 4M-triangle tori.
 //!
 //! Run with `cargo bench -p massprops --bench throughput`; criterion prints the throughput of
-//! each (path, size) in Melem/s (= million triangles per second).
+//! each (path, size) in Melem/s (= million triangles per second). The `cold_call` group times
+//! single calls made after a pause, the way a program that loads one mesh makes them.
 
 use std::hint::black_box;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use massprops::{IntegrationPath, PolyMesh, shapes, volume_integrals};
@@ -58,5 +59,39 @@ fn throughput(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, throughput);
+/// One call after the pool has gone idle, as `props` and the app make it: each timed call
+/// follows a 3 ms pause, long enough for rayon's threads to fall asleep.
+fn cold_call(c: &mut Criterion) {
+    let mut group = c.benchmark_group("cold_call");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    for size in [100_000, 1_000_000] {
+        let mesh = torus_mesh(size);
+        let triangles = mesh.as_triangles().expect("triangulated").len();
+        group.throughput(Throughput::Elements(triangles as u64));
+        let label = format!("{}k", triangles / 1000);
+        for (name, path) in [
+            ("triangle", IntegrationPath::Triangle),
+            ("triangle_parallel", IntegrationPath::TriangleParallel),
+        ] {
+            group.bench_with_input(BenchmarkId::new(name, &label), &mesh, |b, m| {
+                b.iter_custom(|iterations| {
+                    (0..iterations)
+                        .map(|_| {
+                            std::thread::sleep(Duration::from_millis(3));
+                            let start = Instant::now();
+                            black_box(volume_integrals(black_box(m), path));
+                            start.elapsed()
+                        })
+                        .sum()
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, throughput, cold_call);
 criterion_main!(benches);

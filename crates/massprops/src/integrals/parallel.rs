@@ -13,8 +13,8 @@
 //! and the helper joins.
 //! When the pool sleeps, the guest scheduler wakes the helper on the caller's own core (it avoids
 //! the halted vCPU) and the two share it until the load balancer moves one, milliseconds later;
-//! so when no helper has started within [`HELPER_START_WAIT`], the caller hands its share to the
-//! pool too and sleeps, which frees its core.
+//! so when no helper has started within [`HELPER_START_WAIT`] and much work is left, the caller
+//! hands its share to the pool too and sleeps, which frees its core.
 //!
 //! Every block is still computed by the same function and stored in its own slot, so the result
 //! does not depend on which thread took which block.
@@ -25,6 +25,10 @@ use std::time::{Duration, Instant};
 
 /// How long the caller waits for a helper to start before it steps aside (see the module doc).
 const HELPER_START_WAIT: Duration = Duration::from_micros(10);
+
+/// The least work left, timed at the caller's pace, for which the caller steps aside: that costs
+/// it a sleep and a wake-up, 50–70 µs here.
+const STEP_ASIDE_MIN_WORK: Duration = Duration::from_micros(100);
 
 /// How long the caller spins, once every block is claimed, for a helper still finishing one,
 /// before it falls back to rayon's blocking wait (which costs a thread wake-up).
@@ -56,7 +60,8 @@ pub(crate) fn map_blocks<const N: usize>(
 
 /// Fills `slots` with the blocks: one rayon task per other thread claims from the back of
 /// `schedule`; the caller takes single blocks from the front until a helper starts, then
-/// claims like the helpers, or steps aside if none has started within `helper_start_wait`.
+/// claims like the helpers, or steps aside if none has started within `helper_start_wait` and
+/// enough work is left.
 fn run<const N: usize>(
     schedule: &Schedule,
     slots: &[[AtomicU64; N]],
@@ -84,13 +89,18 @@ fn run<const N: usize>(
                 finished.fetch_add(1, Ordering::AcqRel);
             });
         }
-        let deadline = Instant::now() + helper_start_wait;
+        let start = Instant::now();
+        let mut done = 0;
         loop {
             if started.load(Ordering::Acquire) > 0 {
                 work(End::Front);
                 break;
             }
-            if Instant::now() >= deadline {
+            let waited = start.elapsed();
+            if waited >= helper_start_wait
+                && waited.mul_f64(schedule.left() as f64 / done.max(1) as f64)
+                    >= STEP_ASIDE_MIN_WORK
+            {
                 scope.spawn(|_| work(End::Front));
                 return;
             }
@@ -98,6 +108,7 @@ fn run<const N: usize>(
                 Some(run) => fill(run),
                 None => break,
             }
+            done += 1;
         }
         // A helper that has started holds at most one claim, soon done: spinning for it is
         // cheaper than being woken. One that never started finds nothing left, and the scope
@@ -147,6 +158,12 @@ impl Schedule {
             threads: threads as u64,
             unclaimed: AtomicU64::new(u64::from(count) << 32),
         })
+    }
+
+    /// The number of blocks not yet claimed.
+    fn left(&self) -> usize {
+        let unclaimed = self.unclaimed.load(Ordering::Relaxed);
+        ((unclaimed >> 32) - (unclaimed & u64::from(u32::MAX))) as usize
     }
 
     /// The next run of unclaimed blocks at `end`: a `1/(2·threads)` share of those left, at
@@ -213,9 +230,11 @@ mod tests {
         }
         assert!(Schedule::new(1 << 32, 2).is_none());
         let schedule = Schedule::new(100, 2).expect("small count");
+        assert_eq!(schedule.left(), 100);
         assert_eq!(schedule.claim_at_most(End::Front, 1), Some(0..1));
         assert_eq!(schedule.claim_at_most(End::Back, 3), Some(97..100));
         assert_eq!(schedule.claim(End::Front), Some(1..25));
+        assert_eq!(schedule.left(), 72);
     }
 
     #[test]
@@ -238,7 +257,11 @@ mod tests {
     #[test]
     fn the_caller_working_or_stepping_aside_fills_the_same_slots() {
         let count = 300;
-        let block = |b: usize| [(b as f64).sqrt(), -(b as f64)];
+        // A few µs a block, so that 300 of them are worth stepping aside for.
+        let block = |b: usize| {
+            let x = (0..2000).fold(b as f64, |x, _| (x + 1.0).sqrt() + b as f64);
+            [x, -(b as f64)]
+        };
         let expected: Vec<[f64; 2]> = (0..count).map(block).collect();
         // No wait: the caller almost always steps aside; a long one: it always works.
         for wait in [Duration::ZERO, Duration::from_secs(5)] {
