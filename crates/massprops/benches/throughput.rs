@@ -8,7 +8,10 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{
+    BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
+};
 use massprops::{IntegrationPath, PolyMesh, shapes, volume_integrals};
 
 /// A closed triangulated torus of 4·t² triangles.
@@ -17,12 +20,18 @@ fn torus_mesh(triangles: usize) -> PolyMesh {
     shapes::torus(1.0, 0.3, 2 * t, t).triangulated().build()
 }
 
-fn throughput(c: &mut Criterion) {
-    let mut group = c.benchmark_group("volume_integrals");
+/// A group of 10 samples over 2 s each: enough to separate the paths, which differ by 2–20×.
+fn short_group<'a>(c: &'a mut Criterion, name: &str) -> BenchmarkGroup<'a, WallTime> {
+    let mut group = c.benchmark_group(name);
     group
         .sample_size(10)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2));
+    group
+}
+
+fn throughput(c: &mut Criterion) {
+    let mut group = short_group(c, "volume_integrals");
     for size in [10_000, 100_000, 1_000_000, 4_000_000] {
         let mesh = torus_mesh(size);
         let triangles = mesh.as_triangles().expect("triangulated").to_vec();
@@ -62,11 +71,7 @@ fn throughput(c: &mut Criterion) {
 /// One call after the pool has gone idle, as `props` and the app make it: each timed call
 /// follows a 3 ms pause, long enough for rayon's threads to fall asleep.
 fn cold_call(c: &mut Criterion) {
-    let mut group = c.benchmark_group("cold_call");
-    group
-        .sample_size(10)
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2));
+    let mut group = short_group(c, "cold_call");
     for size in [100_000, 1_000_000] {
         let mesh = torus_mesh(size);
         let triangles = mesh.as_triangles().expect("triangulated").len();
