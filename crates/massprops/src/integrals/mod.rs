@@ -13,8 +13,9 @@
 //!
 //! Numerics: coordinates are taken relative to the bounding-box centre of the vertices faces use,
 //! so a body far from the origin loses no digits to cancellation, and face contributions are
-//! added in fixed blocks whose sums are combined with Neumaier's compensated summation. The block order is fixed, so the
-//! parallel path returns bit-for-bit the sequential result.
+//! added in fixed blocks whose sums are combined with Neumaier's compensated summation. The
+//! block order is fixed, so the parallel path (`parallel`) returns bit-for-bit the sequential
+//! result.
 
 pub mod mirtich;
 mod parallel;
@@ -33,7 +34,9 @@ pub enum IntegrationPath {
     Polygon,
     /// The triangle specialisation on one thread (every face a triangle, else falls back to Polygon).
     Triangle,
-    /// The triangle specialisation on all threads of the rayon pool (same result bit for bit).
+    /// The triangle specialisation on the calling thread and the rayon pool (same result bit for
+    /// bit). Like any rayon scope, it returns only once a pool thread has taken its helper task:
+    /// do not call it while holding something the pool's other work waits for.
     TriangleParallel,
     /// Triangle paths when every face is a triangle (parallel above 64k triangles), else Polygon.
     Auto,

@@ -13,8 +13,8 @@
 //! and the helper joins.
 //! When the pool sleeps, the guest scheduler wakes the helper on the caller's own core (it avoids
 //! the halted vCPU) and the two share it until the load balancer moves one, milliseconds later;
-//! so when no helper has started within [`HELPER_START_WAIT`] and much work is left, the caller
-//! hands its share to the pool too and sleeps, which frees its core.
+//! so when no helper has started within [`HELPER_START_WAIT`] and much work is left, a caller
+//! from outside the pool hands its share to the pool too and sleeps, which frees its core.
 //!
 //! Every block is still computed by the same function and stored in its own slot, so the result
 //! does not depend on which thread took which block.
@@ -30,44 +30,58 @@ const HELPER_START_WAIT: Duration = Duration::from_micros(10);
 /// it a sleep and a wake-up, 50–70 µs here.
 const STEP_ASIDE_MIN_WORK: Duration = Duration::from_micros(100);
 
+/// How long the caller spins without yielding: a helper on another core is usually done by then.
+const YIELD_AFTER: Duration = Duration::from_micros(5);
+
 /// How long the caller spins, once every block is claimed, for a helper still finishing one,
 /// before it falls back to rayon's blocking wait (which costs a thread wake-up).
 const SPIN_LIMIT: Duration = Duration::from_micros(200);
 
-/// `block(0), block(1), …, block(count − 1)`, computed on the caller and the rayon pool.
+/// `[block(0), block(1), …, block(count − 1)]`, computed on the caller and the rayon pool.
+///
+/// Like any rayon scope entered from outside the pool, the call returns only once a pool thread
+/// has run each helper task, even one that finds no block left: while the pool is busy with
+/// other work, that can take long, and it never comes if that work waits for the caller.
 pub(crate) fn map_blocks<const N: usize>(
     count: usize,
     block: impl Fn(usize) -> [f64; N] + Sync,
-) -> impl Iterator<Item = [f64; N]> {
+) -> Vec<[f64; N]> {
+    let schedule = match Schedule::new(count, rayon::current_num_threads()) {
+        Some(schedule) if schedule.threads > 1 && count > 1 => schedule,
+        _ => return (0..count).map(block).collect(),
+    };
     // f64 bits in relaxed atomics: each slot is written once by whichever thread claims it, and
     // the end of the rayon scope orders those writes before the reads.
-    let slots: Vec<[AtomicU64; N]> = match Schedule::new(count, rayon::current_num_threads()) {
-        Some(schedule) if schedule.threads > 1 && count > 1 => {
-            let slots: Vec<_> = (0..count)
-                .map(|_| std::array::from_fn(|_| AtomicU64::new(0)))
-                .collect();
-            run(&schedule, &slots, block, HELPER_START_WAIT);
-            slots
-        }
-        _ => (0..count)
-            .map(|b| block(b).map(|value| AtomicU64::new(value.to_bits())))
-            .collect(),
-    };
+    let slots: Vec<[AtomicU64; N]> = (0..count)
+        .map(|_| std::array::from_fn(|_| AtomicU64::new(0)))
+        .collect();
+    run(&schedule, &slots, block, HELPER_START_WAIT);
+    // Same size and alignment: the collect reuses the allocation.
     slots
         .into_iter()
         .map(|slot| slot.map(|bits| f64::from_bits(bits.into_inner())))
+        .collect()
+}
+
+/// What the calling thread did in [`run`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Caller {
+    /// Claimed blocks alongside the helpers.
+    Worked,
+    /// Handed its share to the pool and waited.
+    SteppedAside,
 }
 
 /// Fills `slots` with the blocks: one rayon task per other thread claims from the back of
 /// `schedule`; the caller takes single blocks from the front until a helper starts, then
-/// claims like the helpers, or steps aside if none has started within `helper_start_wait` and
-/// enough work is left.
+/// claims like the helpers, or, outside the pool, steps aside if none has started within
+/// `helper_start_wait` and enough work is left.
 fn run<const N: usize>(
     schedule: &Schedule,
     slots: &[[AtomicU64; N]],
     block: impl Fn(usize) -> [f64; N] + Sync,
     helper_start_wait: Duration,
-) {
+) -> Caller {
     let (started, finished) = (AtomicUsize::new(0), AtomicUsize::new(0));
     let fill = |run: Range<usize>| {
         for b in run {
@@ -81,6 +95,8 @@ fn run<const N: usize>(
             fill(run);
         }
     };
+    // A pool thread that stepped aside would only queue its share on its own deque.
+    let may_step_aside = rayon::current_thread_index().is_none();
     rayon::in_place_scope(|scope| {
         for _ in 1..schedule.threads {
             scope.spawn(|_| {
@@ -96,13 +112,15 @@ fn run<const N: usize>(
                 work(End::Front);
                 break;
             }
+            // The work left, at the pace of the blocks done so far.
             let waited = start.elapsed();
-            if waited >= helper_start_wait
-                && waited.mul_f64(schedule.left() as f64 / done.max(1) as f64)
-                    >= STEP_ASIDE_MIN_WORK
+            let work_left = waited.as_secs_f64() * schedule.left() as f64 / done.max(1) as f64;
+            if may_step_aside
+                && waited >= helper_start_wait
+                && work_left >= STEP_ASIDE_MIN_WORK.as_secs_f64()
             {
                 scope.spawn(|_| work(End::Front));
-                return;
+                return Caller::SteppedAside;
             }
             match schedule.claim_at_most(End::Front, 1) {
                 Some(run) => fill(run),
@@ -116,20 +134,24 @@ fn run<const N: usize>(
         spin_until(SPIN_LIMIT, || {
             finished.load(Ordering::Acquire) == started.load(Ordering::Acquire)
         });
-    });
+        Caller::Worked
+    })
 }
 
-/// Spins until `done()` or `limit` has passed; whether `done()`.
-fn spin_until(limit: Duration, done: impl Fn() -> bool) -> bool {
+/// Spins until `done()` or `limit` has passed, yielding the core after [`YIELD_AFTER`] in case
+/// the thread waited for shares it.
+fn spin_until(limit: Duration, done: impl Fn() -> bool) {
     let start = Instant::now();
-    loop {
-        if done() {
-            return true;
+    while !done() {
+        let spun = start.elapsed();
+        if spun >= limit {
+            return;
         }
-        if start.elapsed() >= limit {
-            return false;
+        if spun >= YIELD_AFTER {
+            std::thread::yield_now();
+        } else {
+            std::hint::spin_loop();
         }
-        std::hint::spin_loop();
     }
 }
 
@@ -141,8 +163,8 @@ enum End {
 }
 
 /// Guided self-scheduling of `0..count` among `threads` threads, the caller taking from the
-/// front and the helpers from the back, so that on repeated calls each thread tends to get the
-/// blocks it had last time, still in its own cache.
+/// front and the helpers from the back: with two threads working, repeated calls on one mesh
+/// tend to give each thread the blocks it had last time, still in its own cache.
 struct Schedule {
     threads: u64,
     /// The unclaimed blocks `front..back`, as `back << 32 | front`: one atomic, so that a claim
@@ -155,7 +177,7 @@ impl Schedule {
     fn new(count: usize, threads: usize) -> Option<Self> {
         let count = u32::try_from(count).ok()?;
         Some(Self {
-            threads: threads as u64,
+            threads: threads.max(1) as u64,
             unclaimed: AtomicU64::new(u64::from(count) << 32),
         })
     }
@@ -174,7 +196,8 @@ impl Schedule {
 
     /// [`Self::claim`], of at most `most` (≥ 1) blocks.
     fn claim_at_most(&self, end: End, most: usize) -> Option<Range<usize>> {
-        let most = u64::try_from(most).unwrap_or(u64::MAX);
+        debug_assert!(most >= 1, "a claim of no block would never end `work`");
+        let most = most as u64;
         let mut unclaimed = self.unclaimed.load(Ordering::Relaxed);
         loop {
             let (front, back) = (unclaimed & u64::from(u32::MAX), unclaimed >> 32);
@@ -247,29 +270,37 @@ mod tests {
             let block = |b: usize| [b as f64, (b * b) as f64 + 0.5];
             let expected: Vec<[f64; 2]> = (0..count).map(block).collect();
             // From inside the pool (the caller is a rayon worker) and from outside it.
-            let inside: Vec<_> = pool.install(|| map_blocks(count, block).collect());
+            let inside = pool.install(|| map_blocks(count, block));
             assert_eq!(inside, expected, "{count} blocks");
-            let outside: Vec<_> = map_blocks(count, block).collect();
+            let outside = map_blocks(count, block);
             assert_eq!(outside, expected, "{count} blocks");
         }
     }
 
     #[test]
-    fn the_caller_working_or_stepping_aside_fills_the_same_slots() {
+    fn working_or_stepping_aside_the_caller_gets_every_block_computed_once() {
         let count = 300;
+        let calls: Vec<AtomicUsize> = (0..count).map(|_| AtomicUsize::new(0)).collect();
         // A few µs a block, so that 300 of them are worth stepping aside for.
         let block = |b: usize| {
+            calls[b].fetch_add(1, Ordering::Relaxed);
             let x = (0..2000).fold(b as f64, |x, _| (x + 1.0).sqrt() + b as f64);
             [x, -(b as f64)]
         };
-        let expected: Vec<[f64; 2]> = (0..count).map(block).collect();
-        // No wait: the caller almost always steps aside; a long one: it always works.
-        for wait in [Duration::ZERO, Duration::from_secs(5)] {
+        let mut roles = Vec::new();
+        // No wait: the caller steps aside unless a helper is already running; a long one: it
+        // always works.
+        for wait in [Duration::ZERO; 20]
+            .into_iter()
+            .chain([Duration::from_secs(5)])
+        {
+            let expected: Vec<[f64; 2]> = (0..count).map(block).collect();
+            calls.iter().for_each(|c| c.store(0, Ordering::Relaxed));
             let schedule = Schedule::new(count, 2).expect("small count");
             let slots: Vec<[AtomicU64; 2]> = (0..count)
                 .map(|_| std::array::from_fn(|_| AtomicU64::new(0)))
                 .collect();
-            run(&schedule, &slots, block, wait);
+            roles.push(run(&schedule, &slots, block, wait));
             let filled: Vec<[f64; 2]> = slots
                 .iter()
                 .map(|slot| {
@@ -278,6 +309,9 @@ mod tests {
                 })
                 .collect();
             assert_eq!(filled, expected, "wait {wait:?}");
+            assert!(calls.iter().all(|c| c.load(Ordering::Relaxed) == 1));
         }
+        assert_eq!(roles.last(), Some(&Caller::Worked));
+        assert!(roles.contains(&Caller::SteppedAside), "{roles:?}");
     }
 }

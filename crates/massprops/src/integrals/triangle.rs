@@ -49,7 +49,8 @@ fn integrate_with(
 }
 
 /// The ten volume integrals on the caller and the rayon pool; equal bit for bit to
-/// [`integrate`].
+/// [`integrate`]. Returns only once a pool thread has taken its helper task (see
+/// `parallel::map_blocks`).
 pub fn integrate_parallel(
     positions: &[Point3<f64>],
     triangles: &[[u32; 3]],
