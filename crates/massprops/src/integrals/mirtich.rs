@@ -112,22 +112,8 @@ impl Kernel for BlockSum<'_> {
                 }
             }
         }
-        for face in triangles.pending() {
-            add_faces(
-                std::slice::from_ref(face),
-                positions,
-                reference,
-                &mut single,
-            );
-        }
-        for face in quads.pending() {
-            add_faces(
-                std::slice::from_ref(face),
-                positions,
-                reference,
-                &mut single,
-            );
-        }
+        add_each(triangles.pending(), positions, reference, &mut single);
+        add_each(quads.pending(), positions, reference, &mut single);
         for (s, l) in single.iter_mut().zip(lanes) {
             *s += l.sum_lanes();
         }
@@ -182,6 +168,18 @@ fn add_faces<T: Real, const N: usize>(
         [x[k], y[k], z[k]] = T::gather(positions, reference, faces, k);
     }
     add_polygon(&x, &y, &z, acc);
+}
+
+/// Adds `faces` one at a time, in order.
+fn add_each<const N: usize>(
+    faces: &[[u32; N]],
+    positions: &[Point3<f64>],
+    reference: Point3<f64>,
+    acc: &mut [f64; 10],
+) {
+    for face in faces.chunks(1) {
+        add_faces(face, positions, reference, acc);
+    }
 }
 
 /// Newell's normal of a polygon: twice its vector area, exact for planar polygons of any shape.
