@@ -191,7 +191,12 @@ fn bad_input_exits_3_with_file_and_line() {
     let nan = TempFile::new("nan.obj", b"v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
     let out = run(&["props", nan.path()]);
     assert_eq!(out.status.code(), Some(3));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("line 3"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    // The file's third `v`, numbered as every index in our messages is: from 0.
+    assert!(
+        err.contains("line 3: vertex 2 (counting from 0) has a non-finite coordinate NaN"),
+        "{err}"
+    );
 
     let missing = run(&["props", "no/such/file.obj"]);
     assert_eq!(missing.status.code(), Some(3));

@@ -175,15 +175,16 @@ fn warnings(d: &MeshDiagnostics, method: Method, flipped: bool) -> Vec<String> {
     }
     if d.degenerate_faces > 0 {
         w.push(format!(
-            "{} degenerate face(s) of zero area (e.g. face {}); they contribute nothing",
+            "{} degenerate face(s) of zero area (e.g. face {}, counting from 0); they contribute \
+             nothing",
             d.degenerate_faces,
             join(&d.degenerate_face_examples)
         ));
     }
     if d.nonplanar_faces > 0 {
         w.push(format!(
-            "{} non-planar polygon(s) (e.g. face {}); each is integrated as the polygon projected \
-             onto its best-fit plane",
+            "{} non-planar polygon(s) (e.g. face {}, counting from 0); each is integrated as the \
+             polygon projected onto its best-fit plane",
             d.nonplanar_faces,
             join(&d.nonplanar_face_examples)
         ));

@@ -11,7 +11,7 @@ pub enum MeshError {
     #[error("the mesh is empty: it has no faces")]
     Empty,
     /// A vertex coordinate is NaN or infinite.
-    #[error("vertex {vertex} has a non-finite coordinate {value}")]
+    #[error("vertex {vertex} (counting from 0) has a non-finite coordinate {value}")]
     NonFiniteVertex {
         /// Zero-based vertex index.
         vertex: usize,
@@ -19,7 +19,10 @@ pub enum MeshError {
         value: f64,
     },
     /// A face refers to a vertex that does not exist.
-    #[error("face {face} refers to vertex {index}, but the mesh has only {vertex_count} vertices")]
+    #[error(
+        "face {face} refers to vertex {index}, but the mesh has only {vertex_count} vertices \
+         (indices count from 0)"
+    )]
     IndexOutOfRange {
         /// Zero-based face index.
         face: usize,
@@ -29,7 +32,7 @@ pub enum MeshError {
         vertex_count: usize,
     },
     /// A face has fewer than three corners.
-    #[error("face {face} has {corners} corner(s); a face needs at least 3")]
+    #[error("face {face} (counting from 0) has {corners} corner(s); a face needs at least 3")]
     TooFewCorners {
         /// Zero-based face index.
         face: usize,

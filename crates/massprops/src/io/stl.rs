@@ -21,8 +21,11 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         .map_err(|e| malformed(format!("not a readable STL file: {e}")))?;
     let mut corners = Vec::new();
     for (t, triangle) in reader.enumerate() {
-        let triangle =
-            triangle.map_err(|e| malformed(format!("triangle {t} cannot be read: {e}")))?;
+        let triangle = triangle.map_err(|e| {
+            malformed(format!(
+                "triangle {t} (counting from 0) cannot be read: {e}"
+            ))
+        })?;
         corners.extend(
             triangle
                 .vertices
