@@ -75,8 +75,8 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
     let diagnostics = diagnose(mesh);
     let solid = solid_properties(mesh, IntegrationPath::Auto).map_err(|e| explain(e, &diagnostics));
     let volume = solid.as_ref().ok().map(|s| s.volume);
-    let (properties, density, flipped) = match method {
-        Method::Shell => {
+    let (properties, density, flipped) = match (method, spec) {
+        (Method::Shell, _) => {
             let (unit, area) = shell_properties(mesh, 1.0)?;
             let sigma = match spec {
                 MassSpec::Density(d) => d,
@@ -85,7 +85,12 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
             let p = unit.with_mass(sigma * area)?;
             (p, Some(sigma), solid.as_ref().is_ok_and(|s| s.flipped))
         }
-        Method::Volume | Method::Points | Method::BoundingBox => {
+        // With the mass given, the approximations need no volume: they serve open meshes and
+        // sheets too.
+        (Method::Points | Method::BoundingBox, MassSpec::Mass(mass)) if solid.is_err() => {
+            (approximation(mesh, method, mass)?, None, false)
+        }
+        (Method::Volume | Method::Points | Method::BoundingBox, _) => {
             let solid: Solid = solid?;
             let density = match spec {
                 MassSpec::Density(d) => d,
@@ -93,14 +98,13 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
             };
             let exact = solid.with_density(density)?;
             let p = match method {
-                Method::Points => point_mass_properties(mesh, exact.mass)?,
-                Method::BoundingBox => bounding_box_properties(mesh, exact.mass)?,
-                _ => exact,
+                Method::Volume => exact,
+                _ => approximation(mesh, method, exact.mass)?,
             };
             (p, Some(density), solid.flipped)
         }
     };
-    let warnings = warnings(&diagnostics, method, flipped);
+    let warnings = warnings(&diagnostics, method, density.is_some(), flipped);
     Ok(Analysis {
         method,
         density,
@@ -136,9 +140,19 @@ fn explain(e: MeshError, d: &MeshDiagnostics) -> MeshError {
     }
 }
 
-fn warnings(d: &MeshDiagnostics, method: Method, flipped: bool) -> Vec<String> {
+/// The vertex point masses, or the bounding-box cuboid, of `mass`.
+fn approximation(mesh: &PolyMesh, method: Method, mass: f64) -> Result<MassProperties, MeshError> {
+    match method {
+        Method::BoundingBox => bounding_box_properties(mesh, mass),
+        _ => point_mass_properties(mesh, mass),
+    }
+}
+
+/// `used_volume`: whether the numbers depend on the enclosed volume (for the approximations, a
+/// mass found from the density).
+fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: bool) -> Vec<String> {
     let mut w = Vec::new();
-    if d.open_edges > 0 && method != Method::Shell {
+    if d.open_edges > 0 && method != Method::Shell && used_volume {
         let examples: Vec<String> = d
             .open_edge_examples
             .iter()

@@ -226,3 +226,34 @@ fn zero_volume_from_a_flipped_face_names_the_winding() {
     let text = e.to_string();
     assert!(text.contains("4 inconsistently wound edge(s)"), "{text}");
 }
+
+#[test]
+fn approximations_of_a_sheet_need_only_its_mass() {
+    // A 2 × 3 rectangle in z = 0 encloses no volume; its four corners and its flat bounding box
+    // still have closed forms at a given mass m = 4.
+    let corners = vec![
+        Point3::new(-1.0, -1.5, 0.0),
+        Point3::new(1.0, -1.5, 0.0),
+        Point3::new(1.0, 1.5, 0.0),
+        Point3::new(-1.0, 1.5, 0.0),
+    ];
+    let sheet = massprops::PolyMesh::new(corners, &[[0, 1, 2, 3]]).expect("valid");
+    let m = 4.0;
+    let points = analyze(&sheet, Method::Points, MassSpec::Mass(m)).expect("mass given");
+    // Each corner m/4 at (±1, ±1.5): Ixx = m·1.5², Iyy = m·1², Izz = their sum, ∑xy = 0.
+    let want = Matrix3::from_diagonal(&Vector3::new(m * 2.25, m, m * 3.25));
+    assert_mat(&points.properties.inertia_com, &want, 1e-15, "corners");
+    assert_eq!((points.volume, points.density), (None, None));
+    // The numbers do not depend on the missing volume: no open-mesh warning.
+    assert!(points.warnings.is_empty(), "{:?}", points.warnings);
+    let bbox = analyze(&sheet, Method::BoundingBox, MassSpec::Mass(m)).expect("mass given");
+    assert_mat(
+        &bbox.properties.inertia_com,
+        &box_tensor(m, 2.0, 3.0, 0.0),
+        1e-15,
+        "flat box",
+    );
+    // A density needs the volume to give a mass.
+    let e = analyze(&sheet, Method::Points, MassSpec::Density(1.0)).expect_err("no volume");
+    assert!(e.to_string().contains("zero volume"), "{e}");
+}
