@@ -72,6 +72,7 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
         MassSpec::Density(d) => positive("density", d)?,
         MassSpec::Mass(m) => positive("mass", m)?,
     };
+    check_range(mesh, method, spec)?;
     let diagnostics = diagnose(mesh);
     let solid = solid_properties(mesh, IntegrationPath::Auto).map_err(|e| explain(e, &diagnostics));
     let volume = solid.as_ref().ok().map(|s| s.volume);
@@ -116,6 +117,46 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
         diagnostics,
         warnings,
     })
+}
+
+/// Longest bounding-box sides accepted: the integrals multiply up to five coordinates, and
+/// (1e±50)⁵ = 1e±250 keeps every product a normal f64 (1e-308 to 1e308) with room to spare.
+const SIZE_RANGE: (f64, f64) = (1e-50, 1e50);
+
+/// Masses and moments of inertia accepted, as orders of magnitude: far enough inside the normal
+/// f64 range that a thin body (volume ≪ size³) or a sum of many terms stays in it.
+const RESULT_RANGE: (f64, f64) = (1e-250, 1e250);
+
+/// Refuses a body whose numbers f64 cannot hold to full precision, from their orders of
+/// magnitude: size L (longest side), mass ~ ρL³ (ρL² for a shell) or as given, inertia ~ mL².
+/// Without this, overflow gives NaN and underflow gives zero moments, both silently.
+fn check_range(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<(), MeshError> {
+    let (lo, hi) = mesh.bounding_box();
+    let size = (hi - lo).amax();
+    if size == 0.0 {
+        // A point: the zero-volume and zero-area checks say what is wrong.
+        return Ok(());
+    }
+    let out_of = |quantity, estimate: f64, (low, high): (f64, f64)| {
+        if (low..=high).contains(&estimate) {
+            Ok(())
+        } else {
+            Err(MeshError::OutOfRange {
+                quantity,
+                estimate,
+                low,
+                high,
+            })
+        }
+    };
+    out_of("size", size, SIZE_RANGE)?;
+    let mass = match (spec, method) {
+        (MassSpec::Mass(m), _) => m,
+        (MassSpec::Density(sigma), Method::Shell) => sigma * size * size,
+        (MassSpec::Density(rho), _) => rho * size.powi(3),
+    };
+    out_of("mass", mass, RESULT_RANGE)?;
+    out_of("inertia", mass * size * size, RESULT_RANGE)
 }
 
 /// Replaces a zero-volume error's generic cause by what the diagnostics found: a mesh with

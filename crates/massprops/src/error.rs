@@ -68,6 +68,23 @@ pub enum MeshError {
         /// The value given.
         value: f64,
     },
+    /// The body's size, mass or inertia is too large or too small for f64 arithmetic to keep
+    /// full precision (the integrals multiply up to five coordinates).
+    #[error(
+        "the {quantity} of this body is of the order of {estimate:e}, outside {low:e} to {high:e}, \
+         where f64 arithmetic keeps full precision: express the mesh in other units, or use \
+         another density or mass"
+    )]
+    OutOfRange {
+        /// "size" (the bounding box's longest side), "mass" or "inertia".
+        quantity: &'static str,
+        /// Its order of magnitude.
+        estimate: f64,
+        /// The least accepted.
+        low: f64,
+        /// The greatest accepted.
+        high: f64,
+    },
     /// The shell method found no surface area.
     #[error("the mesh has zero surface area")]
     ZeroArea,

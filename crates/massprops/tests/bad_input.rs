@@ -454,6 +454,39 @@ fn stl_binary_and_ascii_give_the_obj_result() {
     let e = parse_mesh(&short, Path::new("cut.stl")).expect_err("truncated");
     assert!(matches!(e, MeshError::Malformed { .. }), "{e:?}");
     assert!(e.to_string().contains("cut.stl"), "{e}");
+    // Infinity in triangle 5, corner 2: the message names where, not an index of the welded
+    // mesh.
+    let mut inf_binary = binary_stl(&b, b"binary");
+    let at = 84 + 50 * 5 + 12 + 2 * 12;
+    inf_binary[at..at + 4].copy_from_slice(&f32::INFINITY.to_le_bytes());
+    let ascii = ascii_stl(&b, "solid box");
+    let sixth_facet = ascii
+        .match_indices("facet normal")
+        .nth(5)
+        .expect("12 facets")
+        .0;
+    let third_vertex = sixth_facet
+        + ascii[sixth_facet..]
+            .match_indices("vertex")
+            .nth(2)
+            .expect("3")
+            .0;
+    let line_end = third_vertex + ascii[third_vertex..].find('\n').expect("a line");
+    let mut inf_ascii = ascii.clone();
+    inf_ascii.replace_range(third_vertex..line_end, "vertex inf 0 0");
+    let e = parse_mesh(&inf_binary, Path::new("inf.stl")).expect_err("non-finite");
+    assert!(
+        e.to_string()
+            .contains("inf.stl: triangle 5 (counting from 0), corner 2: non-finite coordinate inf"),
+        "{e}"
+    );
+    // stl_io refuses the ASCII number itself.
+    let e = parse_mesh(inf_ascii.as_bytes(), Path::new("inf.stl")).expect_err("non-finite");
+    let text = e.to_string();
+    assert!(
+        text.contains("inf.stl: triangle 5 (counting from 0)") && text.contains("inf"),
+        "{text}"
+    );
 }
 
 #[test]

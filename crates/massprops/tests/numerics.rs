@@ -7,8 +7,8 @@ use common::{assert_mat, assert_rel, box_tensor, tetra_sum};
 use massprops::integrals::IntegrationPath;
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{
-    Degeneracy, MassProperties, PolyMesh, diagnose, mass_properties, principal_inertia,
-    solid_properties,
+    Degeneracy, MassProperties, MassSpec, MeshError, Method, PolyMesh, analyze, diagnose,
+    mass_properties, principal_inertia, solid_properties,
 };
 use nalgebra::{Isometry3, Matrix3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 
@@ -372,6 +372,79 @@ fn extreme_scales_keep_full_relative_accuracy_on_both_paths() {
                 1e-12,
                 &what,
             );
+        }
+    }
+}
+
+#[test]
+fn sizes_beyond_f64_are_refused_never_reported_as_nan_or_zero() {
+    let base = shapes::book().build();
+    let unit = analyze(&base, Method::Volume, MassSpec::Density(1.0)).expect("closed");
+    let unit_shell = analyze(&base, Method::Shell, MassSpec::Density(1.0)).expect("area");
+    let mut refused = Vec::new();
+    for k in (-120..=120).step_by(5) {
+        let s = 10f64.powi(k);
+        let mesh = base.map_positions(|p| p * s).expect("finite");
+        // Each result is the unit book's by the scaling laws, or a refusal naming the range.
+        let cases = [
+            (
+                Method::Volume,
+                MassSpec::Density(1.0),
+                &unit,
+                s.powi(3),
+                s.powi(5),
+            ),
+            (Method::Volume, MassSpec::Mass(28.0), &unit, 1.0, s * s),
+            (
+                Method::Shell,
+                MassSpec::Density(1.0),
+                &unit_shell,
+                s * s,
+                s.powi(4),
+            ),
+            (Method::Points, MassSpec::Mass(28.0), &unit, 1.0, s * s),
+        ];
+        for (method, spec, unit, mass_factor, inertia_factor) in cases {
+            let what = format!("book × 1e{k}, {method:?}, {spec:?}");
+            match analyze(&mesh, method, spec) {
+                Ok(r) => {
+                    let want = if method == Method::Points {
+                        &unit.point_masses
+                    } else {
+                        &unit.properties
+                    };
+                    assert_rel(r.properties.mass, want.mass * mass_factor, 1e-14, &what);
+                    assert_mat(
+                        &r.properties.inertia_com,
+                        &(want.inertia_com * inertia_factor),
+                        1e-13,
+                        &what,
+                    );
+                    assert!(r.diagnostics.surface_area.is_finite(), "{what}");
+                    assert_eq!(r.diagnostics.degenerate_faces, 0, "{what}");
+                }
+                Err(MeshError::OutOfRange { quantity, .. }) => refused.push((k, quantity)),
+                Err(e) => panic!("{what}: {e}"),
+            }
+        }
+    }
+    // Everything from 1e-45 to 1e45 works (density 1: inertia 1e±225); far beyond, lengths
+    // themselves are refused.
+    assert!(
+        refused.iter().all(|&(k, _)| !(-45..=45).contains(&k)),
+        "{refused:?}"
+    );
+    assert!(refused.contains(&(-120, "size")) && refused.contains(&(120, "size")));
+    // Size 7 with density 1e-260: mass ~ 3e-258. Mass 1e249: inertia ~ 5e250.
+    for (spec, quantity) in [
+        (MassSpec::Density(1e-260), "mass"),
+        (MassSpec::Mass(1e249), "inertia"),
+    ] {
+        match analyze(&base, Method::Volume, spec) {
+            Err(e @ MeshError::OutOfRange { .. }) => {
+                assert!(e.to_string().contains(&format!("the {quantity} of")), "{e}");
+            }
+            other => panic!("{spec:?}: {other:?}"),
         }
     }
 }
