@@ -146,7 +146,7 @@ fn comparison_line(out: &mut String, name: &str, c: &Comparison, approx: &MassPr
         .collect();
     let _ = writeln!(
         out,
-        "  {name}\n    principal moments {} {} {}\n    error vs exact     {:+.2}% {:+.2}% {:+.2}%\n    axis angles        {}\n    centre offset      {}",
+        "  {name}\n    principal moments {} {} {}\n    moment error       {:+.2}% {:+.2}% {:+.2}%\n    axis angles        {}\n    centre offset      {}",
         num(approx.principal.moments.x),
         num(approx.principal.moments.y),
         num(approx.principal.moments.z),

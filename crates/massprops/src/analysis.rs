@@ -86,10 +86,15 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
             let p = unit.with_mass(sigma * area)?;
             (p, Some(sigma), solid.as_ref().is_ok_and(|s| s.flipped))
         }
-        // With the mass given, the approximations need no volume: they serve open meshes and
-        // sheets too.
-        (Method::Points | Method::BoundingBox, MassSpec::Mass(mass)) if solid.is_err() => {
-            (approximation(mesh, method, mass)?, None, false)
+        // With the mass given, the approximations use no volume (nor a density found from it):
+        // they serve open meshes and sheets too, and their numbers never depend on holes. A
+        // mesh without area is no body at all.
+        (Method::Points | Method::BoundingBox, MassSpec::Mass(mass)) => {
+            if diagnostics.surface_area.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+                return Err(MeshError::ZeroArea);
+            }
+            let flipped = solid.as_ref().is_ok_and(|s| s.flipped);
+            (approximation(mesh, method, mass)?, None, flipped)
         }
         (Method::Volume | Method::Points | Method::BoundingBox, _) => {
             let solid: Solid = solid?;
@@ -137,7 +142,7 @@ fn check_range(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<(), Me
         // A point: the zero-volume and zero-area checks say what is wrong.
         return Ok(());
     }
-    let out_of = |quantity, estimate: f64, (low, high): (f64, f64)| {
+    let out_of = |quantity, estimate: f64, (low, high): (f64, f64), advice| {
         if (low..=high).contains(&estimate) {
             Ok(())
         } else {
@@ -146,17 +151,23 @@ fn check_range(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<(), Me
                 estimate,
                 low,
                 high,
+                advice,
             })
         }
     };
-    out_of("size", size, SIZE_RANGE)?;
-    let mass = match (spec, method) {
-        (MassSpec::Mass(m), _) => m,
-        (MassSpec::Density(sigma), Method::Shell) => sigma * size * size,
-        (MassSpec::Density(rho), _) => rho * size.powi(3),
+    let units = "express the mesh in other units";
+    out_of("size", size, SIZE_RANGE, units)?;
+    let (mass, other) = match (spec, method) {
+        (MassSpec::Mass(m), _) => (m, "give another mass"),
+        (MassSpec::Density(sigma), Method::Shell) => (sigma * size * size, "use another density"),
+        (MassSpec::Density(rho), _) => (rho * size.powi(3), "use another density"),
     };
-    out_of("mass", mass, RESULT_RANGE)?;
-    out_of("inertia", mass * size * size, RESULT_RANGE)
+    out_of("mass", mass, RESULT_RANGE, other)?;
+    let advice = match spec {
+        MassSpec::Mass(_) => "express the mesh in other units, or give another mass",
+        MassSpec::Density(_) => "express the mesh in other units, or use another density",
+    };
+    out_of("inertia", mass * size * size, RESULT_RANGE, advice)
 }
 
 /// Replaces a zero-volume error's generic cause by what the diagnostics found: a mesh with
@@ -189,8 +200,8 @@ fn approximation(mesh: &PolyMesh, method: Method, mass: f64) -> Result<MassPrope
     }
 }
 
-/// `used_volume`: whether the numbers depend on the enclosed volume (for the approximations, a
-/// mass found from the density).
+/// `used_volume`: whether the numbers depend on the enclosed volume (not for the approximations
+/// at a given mass).
 fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: bool) -> Vec<String> {
     let mut w = Vec::new();
     if d.open_edges > 0 && method != Method::Shell && used_volume {
@@ -200,9 +211,9 @@ fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: boo
             .map(|(a, b)| format!("{a}-{b}"))
             .collect();
         w.push(format!(
-            "the mesh is open: {} boundary edge(s) (e.g. between vertices {}); a solid's volume is \
-             not defined by an open surface and these numbers depend on where the holes are. Close \
-             the mesh, or use --method shell for a sheet",
+            "the mesh is open: {} boundary edge(s) (e.g. between vertices {}, counting from 0); a \
+             solid's volume is not defined by an open surface and these numbers depend on where \
+             the holes are. Close the mesh, or use --method shell for a sheet",
             d.open_edges,
             examples.join(", ")
         ));
@@ -221,7 +232,7 @@ fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: boo
             d.inconsistent_edges
         ));
     }
-    if flipped && method != Method::Shell {
+    if flipped && method != Method::Shell && used_volume {
         w.push(
             "the faces wind clockwise seen from outside (negative signed volume): the result was \
              flipped to that of the outward-wound mesh"

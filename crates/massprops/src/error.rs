@@ -72,8 +72,7 @@ pub enum MeshError {
     /// full precision (the integrals multiply up to five coordinates).
     #[error(
         "the {quantity} of this body is of the order of {estimate:e}, outside {low:e} to {high:e}, \
-         where f64 arithmetic keeps full precision: express the mesh in other units, or use \
-         another density or mass"
+         where f64 arithmetic keeps full precision: {advice}"
     )]
     OutOfRange {
         /// "size" (the bounding box's longest side), "mass" or "inertia".
@@ -84,6 +83,8 @@ pub enum MeshError {
         low: f64,
         /// The greatest accepted.
         high: f64,
+        /// What would bring it into range.
+        advice: &'static str,
     },
     /// The shell method found no surface area.
     #[error("the mesh has zero surface area")]

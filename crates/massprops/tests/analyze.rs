@@ -256,4 +256,26 @@ fn approximations_of_a_sheet_need_only_its_mass() {
     // A density needs the volume to give a mass.
     let e = analyze(&sheet, Method::Points, MassSpec::Density(1.0)).expect_err("no volume");
     assert!(e.to_string().contains("zero volume"), "{e}");
+
+    // A unit cube without its top encloses a volume that depends on the hole; at a given mass
+    // its eight corners (m/8 at (±½, ±½, ±½): I = m/2 on each axis) do not, so no warning.
+    let mut open = shapes::cube();
+    open.faces.remove(0);
+    let r = analyze(&open.build(), Method::Points, MassSpec::Mass(m)).expect("mass given");
+    assert_mat(
+        &r.properties.inertia_com,
+        &(Matrix3::identity() * (m / 2.0)),
+        1e-15,
+        "open cube corners",
+    );
+    assert_eq!(r.density, None);
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+
+    // Four copies of one point are no body, whatever the method.
+    let point = massprops::PolyMesh::new(vec![Point3::new(1.0, 1.0, 1.0); 4], &[[0, 1, 2, 3]])
+        .expect("valid indices");
+    for method in [Method::Points, Method::BoundingBox] {
+        let e = analyze(&point, method, MassSpec::Mass(m)).expect_err("a point");
+        assert!(matches!(e, massprops::MeshError::ZeroArea), "{e:?}");
+    }
 }
