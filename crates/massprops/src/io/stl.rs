@@ -27,12 +27,12 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
             ))
         })?;
         // Checked here, where the triangle is still known: after welding only an index is.
-        if let Some((corner, value)) = triangle.vertices.iter().enumerate().find_map(|(c, v)| {
-            (0..3)
-                .map(|i| v[i])
-                .find(|x| !x.is_finite())
-                .map(|x| (c, x))
-        }) {
+        if let Some((corner, value)) = triangle
+            .vertices
+            .iter()
+            .enumerate()
+            .find_map(|(c, v)| v.0.into_iter().find(|x| !x.is_finite()).map(|x| (c, x)))
+        {
             return Err(malformed(format!(
                 "triangle {t} (counting from 0), corner {corner}: non-finite coordinate {value}"
             )));
