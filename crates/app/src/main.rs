@@ -1,33 +1,13 @@
 //! `inertia-lab`: exact mass properties and rigid-body dynamics of any mesh.
 //!
-//! Without a subcommand the binary opens the desktop app (`gui`) on the flipping T-handle, or on
-//! a mesh given as the argument. Command-line entry points: `props` (mass properties of a mesh,
-//! `massprops`), `simulate` (headless rigid-body simulation, `rbcore`) and `export` (mass
-//! properties for engines and robot formats).
-
-mod camera;
-mod clock;
-mod error;
-mod export;
-mod export_cmd;
-mod geometry;
-mod gui;
-mod history;
-mod loader;
-mod model;
-mod panels;
-mod picking;
-mod props;
-mod report;
-mod settings;
-mod simulate;
-#[cfg(test)]
-mod ui_tests;
-mod view3d;
+//! Argument parsing and dispatch only; the work is in the library (`inertia_lab`). Without a
+//! subcommand the binary opens the desktop app on the flipping T-handle, or on a mesh given as
+//! the argument.
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use inertia_lab::cli::{self, CliError};
 
 /// Inertia Lab: exact mass properties of any mesh, and how they shape its rotation.
 #[derive(Parser, Debug)]
@@ -40,31 +20,32 @@ use clap::{Parser, Subcommand};
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    #[cfg(feature = "gui")]
     #[command(flatten)]
-    gui: gui::GuiArgs,
+    gui: inertia_lab::gui::GuiArgs,
 }
 
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Mass properties of a mesh (OBJ or STL): volume, mass, centre of mass, inertia tensor,
     /// principal moments and axes, the bounding-box and point-mass approximations, diagnostics.
-    Props(props::PropsArgs),
+    Props(cli::props::PropsArgs),
     /// Headless rigid-body simulation of a free body (CSV on stdout or --csv FILE); --compare
     /// prints the integrator accuracy-for-cost table.
-    Simulate(simulate::SimulateArgs),
+    Simulate(cli::simulate::SimulateArgs),
     /// Mass properties for an engine or robot format (json, urdf, mjcf, sdf, unity, godot,
     /// unreal, rapier, gltf), with the mesh's units and up axis, and each target's frame,
     /// handedness, units and sign conventions handled.
-    Export(export_cmd::ExportArgs),
+    Export(cli::export::ExportArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
-        Some(Command::Props(args)) => props::run(args),
-        Some(Command::Simulate(args)) => simulate::run(args),
-        Some(Command::Export(args)) => export_cmd::run(args),
-        None => gui::run(&cli.gui),
+        Some(Command::Props(args)) => cli::props::run(args),
+        Some(Command::Simulate(args)) => cli::simulate::run(args),
+        Some(Command::Export(args)) => cli::export::run(args),
+        None => app(&cli),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -73,4 +54,19 @@ fn main() -> ExitCode {
             e.exit_code()
         }
     }
+}
+
+#[cfg(feature = "gui")]
+fn app(cli: &Cli) -> Result<(), CliError> {
+    inertia_lab::gui::run(&cli.gui)
+}
+
+#[cfg(not(feature = "gui"))]
+fn app(_: &Cli) -> Result<(), CliError> {
+    Err(CliError::Usage(
+        "this inertia-lab was built without the desktop app (the `gui` feature): use a \
+         subcommand (props, simulate, export; see --help), or get the app with \
+         `cargo install --path crates/app` or `cargo run --release` (the feature is on by default)"
+            .to_owned(),
+    ))
 }

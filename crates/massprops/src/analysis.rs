@@ -1,5 +1,6 @@
 //! One call that gives everything a report needs: the chosen method's numbers, both
-//! approximations at the same mass, the diagnostics and plain-language warnings.
+//! approximations at the same mass, the diagnostics and typed warnings ([`Warning`]; the wording
+//! for users is the caller's, as a command line and a window say different things).
 
 use crate::approximations::{bounding_box_properties, point_mass_properties};
 use crate::diagnostics::{MeshDiagnostics, diagnose};
@@ -62,8 +63,74 @@ pub struct Analysis {
     pub point_masses: MassProperties,
     /// Mesh diagnostics.
     pub diagnostics: MeshDiagnostics,
-    /// What the user should know before trusting the numbers.
-    pub warnings: Vec<String>,
+    /// What the user should know before trusting the numbers, in this order: open mesh,
+    /// non-manifold edges, inconsistent winding, flipped, degenerate faces, non-planar faces.
+    pub warnings: Vec<Warning>,
+}
+
+/// Something wrong with the mesh that the numbers of an [`Analysis`] depend on or hide.
+///
+/// Vertex, face and edge indices count from 0 (vertices after welding), as in
+/// [`MeshDiagnostics`]; each `examples` list holds at most
+/// [`EXAMPLES`](crate::diagnostics::EXAMPLES) items. New variants may be added, so match with a
+/// wildcard arm.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Warning {
+    /// The surface has holes, and the enclosed volume (so the mass and inertia) depends on where
+    /// they are. Only given when the numbers use that volume (not for the shell method, nor for
+    /// the approximations at a given mass).
+    OpenMesh {
+        /// Edges used by only one face.
+        boundary_edges: usize,
+        /// Some of them, as vertex pairs (low, high).
+        examples: Vec<(u32, u32)>,
+    },
+    /// Edges shared by more than two faces: touching or overlapping parts each count in full.
+    NonManifoldEdges {
+        /// How many such edges.
+        count: usize,
+    },
+    /// Edges whose two faces traverse them in the same direction: some faces are wound the
+    /// other way, and the volume method counts them as negative volume.
+    InconsistentWinding {
+        /// How many such edges.
+        edges: usize,
+    },
+    /// The faces wind clockwise seen from outside (negative signed volume); the results are those
+    /// of the outward-wound mesh. Only given when the numbers use the enclosed volume.
+    Flipped,
+    /// Faces of (numerically) zero area, which contribute nothing.
+    DegenerateFaces {
+        /// How many such faces.
+        count: usize,
+        /// Some of their indices.
+        examples: Vec<usize>,
+    },
+    /// Polygons whose corners leave their plane; each is integrated as projected onto its
+    /// best-fit plane.
+    NonPlanarFaces {
+        /// How many such faces.
+        count: usize,
+        /// Some of their indices.
+        examples: Vec<usize>,
+    },
+}
+
+impl Warning {
+    /// A stable snake_case identifier of the variant, for machine-readable output (JSON):
+    /// `open_mesh`, `non_manifold_edges`, `inconsistent_winding`, `flipped`, `degenerate_faces`,
+    /// `non_planar_faces`.
+    pub fn code(&self) -> &'static str {
+        match self {
+            Warning::OpenMesh { .. } => "open_mesh",
+            Warning::NonManifoldEdges { .. } => "non_manifold_edges",
+            Warning::InconsistentWinding { .. } => "inconsistent_winding",
+            Warning::Flipped => "flipped",
+            Warning::DegenerateFaces { .. } => "degenerate_faces",
+            Warning::NonPlanarFaces { .. } => "non_planar_faces",
+        }
+    }
 }
 
 /// Computes the chosen method's mass properties, the approximations and the diagnostics.
@@ -202,65 +269,40 @@ fn approximation(mesh: &PolyMesh, method: Method, mass: f64) -> Result<MassPrope
 
 /// `used_volume`: whether the numbers depend on the enclosed volume (not for the approximations
 /// at a given mass).
-fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: bool) -> Vec<String> {
+fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: bool) -> Vec<Warning> {
+    // Holes and winding only matter to numbers that come from the enclosed volume.
+    let volume_matters = method != Method::Shell && used_volume;
     let mut w = Vec::new();
-    if d.open_edges > 0 && method != Method::Shell && used_volume {
-        let examples: Vec<String> = d
-            .open_edge_examples
-            .iter()
-            .map(|(a, b)| format!("{a}-{b}"))
-            .collect();
-        w.push(format!(
-            "the mesh is open: {} boundary edge(s) (e.g. between vertices {}, counting from 0); a \
-             solid's volume is not defined by an open surface and these numbers depend on where \
-             the holes are. Close the mesh, or use --method shell for a sheet",
-            d.open_edges,
-            examples.join(", ")
-        ));
+    if d.open_edges > 0 && volume_matters {
+        w.push(Warning::OpenMesh {
+            boundary_edges: d.open_edges,
+            examples: d.open_edge_examples.clone(),
+        });
     }
     if d.nonmanifold_edges > 0 {
-        w.push(format!(
-            "{} non-manifold edge(s) (shared by more than two faces): touching or overlapping parts \
-             are counted once each",
-            d.nonmanifold_edges
-        ));
+        w.push(Warning::NonManifoldEdges {
+            count: d.nonmanifold_edges,
+        });
     }
     if d.inconsistent_edges > 0 {
-        w.push(format!(
-            "{} edge(s) where neighbouring faces wind in opposite senses: some faces are flipped, \
-             and the volume method counts them as negative volume",
-            d.inconsistent_edges
-        ));
+        w.push(Warning::InconsistentWinding {
+            edges: d.inconsistent_edges,
+        });
     }
-    if flipped && method != Method::Shell && used_volume {
-        w.push(
-            "the faces wind clockwise seen from outside (negative signed volume): the result was \
-             flipped to that of the outward-wound mesh"
-                .into(),
-        );
+    if flipped && volume_matters {
+        w.push(Warning::Flipped);
     }
     if d.degenerate_faces > 0 {
-        w.push(format!(
-            "{} degenerate face(s) of zero area (e.g. face {}, counting from 0); they contribute \
-             nothing",
-            d.degenerate_faces,
-            join(&d.degenerate_face_examples)
-        ));
+        w.push(Warning::DegenerateFaces {
+            count: d.degenerate_faces,
+            examples: d.degenerate_face_examples.clone(),
+        });
     }
     if d.nonplanar_faces > 0 {
-        w.push(format!(
-            "{} non-planar polygon(s) (e.g. face {}, counting from 0); each is integrated as the \
-             polygon projected onto its best-fit plane",
-            d.nonplanar_faces,
-            join(&d.nonplanar_face_examples)
-        ));
+        w.push(Warning::NonPlanarFaces {
+            count: d.nonplanar_faces,
+            examples: d.nonplanar_face_examples.clone(),
+        });
     }
     w
-}
-
-fn join(v: &[usize]) -> String {
-    v.iter()
-        .map(usize::to_string)
-        .collect::<Vec<_>>()
-        .join(", ")
 }

@@ -5,6 +5,7 @@
 //! direction means the two faces wind inconsistently (one is flipped).
 
 use nalgebra::{Point3, Vector3};
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 use crate::PolyMesh;
@@ -64,11 +65,21 @@ impl MeshDiagnostics {
 
 /// Computes every diagnostic of `mesh`.
 pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
+    // Each face on its own, so the order of evaluation changes nothing: the area is summed below
+    // in face order either way.
+    #[cfg(feature = "parallel")]
     let face_stats: Vec<(f64, bool, bool)> = (0..mesh.face_count())
         .into_par_iter()
         .with_min_len(4096)
         .map_init(Vec::new, |corners, f| face_shape(mesh, f, corners))
         .collect();
+    #[cfg(not(feature = "parallel"))]
+    let face_stats: Vec<(f64, bool, bool)> = {
+        let mut corners = Vec::new();
+        (0..mesh.face_count())
+            .map(|f| face_shape(mesh, f, &mut corners))
+            .collect()
+    };
     let mut degenerate = Vec::new();
     let mut nonplanar = Vec::new();
     let mut area = crate::integrals::CompensatedSum::<1>::new();
@@ -160,7 +171,11 @@ fn edge_report(mesh: &PolyMesh) -> EdgeReport {
             prev = cur;
         }
     }
+    // Records with equal keys are only counted, so an unstable sort gives the same report.
+    #[cfg(feature = "parallel")]
     records.par_sort_unstable_by_key(|r| r.0);
+    #[cfg(not(feature = "parallel"))]
+    records.sort_unstable_by_key(|r| r.0);
     let mut report = EdgeReport {
         edges: 0,
         open: 0,

@@ -9,6 +9,13 @@
 //! shell, the vertex point-mass sum and the bounding-box cuboid, principal moments and axes by a
 //! scale-invariant Jacobi eigensolver, mesh diagnostics, and OBJ/STL loading.
 //!
+//! Cargo features, both on by default: `io` (OBJ and STL parsing and file loading, through
+//! `tobj` and `stl_io`) and `parallel` (the triangle path and the diagnostics on the rayon pool).
+//! Without `parallel`, [`IntegrationPath::TriangleParallel`] and [`IntegrationPath::Auto`] run
+//! the triangle path on the calling thread, with the same result bit for bit (the block order is
+//! fixed either way). With neither, only `nalgebra` and `thiserror` are built: what a dynamics
+//! crate needs for [`symmetric_eigen`].
+//!
 //! Conventions: lengths in the mesh's unit (metres for SI), density per volume (kg/m³); the
 //! inertia tensor is I = ∫ρ(|r|²E − r rᵀ)dV, **off-diagonals −∑m·x·y**; faces wind
 //! counter-clockwise seen from outside.
@@ -27,6 +34,7 @@ mod approximations;
 mod diagnostics;
 mod error;
 pub mod integrals;
+#[cfg(feature = "io")]
 mod io;
 mod mesh;
 mod principal;
@@ -35,11 +43,12 @@ pub mod shapes;
 mod shell;
 mod solid;
 
-pub use analysis::{Analysis, MassSpec, Method, analyze};
+pub use analysis::{Analysis, MassSpec, Method, Warning, analyze};
 pub use approximations::{bounding_box_properties, point_mass_properties};
 pub use diagnostics::{MeshDiagnostics, diagnose};
 pub use error::MeshError;
 pub use integrals::{IntegrationPath, VolumeIntegrals, volume_integrals};
+#[cfg(feature = "io")]
 pub use io::{load_mesh, parse_mesh, parse_obj, parse_stl};
 pub use mesh::{PolyMesh, weld_exact};
 pub use principal::{

@@ -5,7 +5,7 @@ mod common;
 
 use common::{assert_mat, assert_rel, box_tensor, prism_closed_form, steiner};
 use massprops::shapes;
-use massprops::{MassSpec, Method, analyze};
+use massprops::{MassSpec, Method, Warning, analyze};
 use nalgebra::{Matrix3, Point2, Point3, Vector3};
 
 /// The book 1 × 4 × 7 centred on the origin: every method has a closed form.
@@ -168,11 +168,7 @@ fn warnings_say_what_is_wrong() {
     )
     .expect("closed");
     assert!(inside_out.flipped);
-    assert!(
-        inside_out.warnings.iter().any(|w| w.contains("flipped")),
-        "{:?}",
-        inside_out.warnings
-    );
+    assert_eq!(inside_out.warnings, vec![Warning::Flipped]);
     // For a shell, winding is irrelevant: no flip warning.
     let shell = analyze(
         &shapes::cube().build().flipped(),
@@ -186,12 +182,15 @@ fn warnings_say_what_is_wrong() {
     let mut open = shapes::cube();
     open.faces.remove(0);
     let r = analyze(&open.build(), Method::Points, MassSpec::Density(1.0)).expect("some volume");
-    assert_eq!(r.warnings.len(), 1, "{:?}", r.warnings);
-    assert!(
-        r.warnings[0].contains("4 boundary edge(s)") && r.warnings[0].contains("shell"),
-        "{}",
-        r.warnings[0]
+    // The cube's first face (z = 0, corners 0 1 2 3) is gone: its four edges are the boundary.
+    assert_eq!(
+        r.warnings,
+        vec![Warning::OpenMesh {
+            boundary_edges: 4,
+            examples: vec![(0, 1), (0, 3), (1, 2), (2, 3)],
+        }]
     );
+    assert_eq!(r.warnings[0].code(), "open_mesh");
 }
 
 #[test]

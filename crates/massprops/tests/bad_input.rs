@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use common::{assert_mat, assert_rel, box_tensor};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{
-    MassSpec, MeshError, Method, PolyMesh, analyze, diagnose, load_mesh, mass_properties,
+    MassSpec, MeshError, Method, PolyMesh, Warning, analyze, diagnose, load_mesh, mass_properties,
     parse_mesh, shell_properties, solid_properties,
 };
 use nalgebra::{Matrix3, Point3, Vector3};
@@ -88,17 +88,19 @@ fn open_mesh_counts_its_boundary_edges() {
         );
     }
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
-    assert!(
-        a.warnings
-            .iter()
-            .any(|w| w.contains("open") && w.contains("4 boundary edge")),
-        "{:?}",
-        a.warnings
+    assert_eq!(
+        a.warnings,
+        vec![Warning::OpenMesh {
+            boundary_edges: 4,
+            examples: d.open_edge_examples.clone(),
+        }]
     );
     // The shell method is meant for open meshes: no open-mesh warning there.
     let s = analyze(&mesh, Method::Shell, MassSpec::Density(1.0)).expect("area");
     assert!(
-        !s.warnings.iter().any(|w| w.contains("open")),
+        !s.warnings
+            .iter()
+            .any(|w| matches!(w, Warning::OpenMesh { .. })),
         "{:?}",
         s.warnings
     );
@@ -128,7 +130,8 @@ fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume 2");
     assert_rel(a.properties.mass, 2.0, 1e-15, "two unit boxes");
     assert!(
-        a.warnings.iter().any(|w| w.contains("1 non-manifold edge")),
+        a.warnings
+            .contains(&Warning::NonManifoldEdges { count: 1 }),
         "{:?}",
         a.warnings
     );
@@ -148,8 +151,7 @@ fn one_flipped_face_gives_four_inconsistent_edges() {
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
     assert!(
         a.warnings
-            .iter()
-            .any(|w| w.contains("4 edge(s)") && w.contains("wind")),
+            .contains(&Warning::InconsistentWinding { edges: 4 }),
         "{:?}",
         a.warnings
     );
@@ -165,8 +167,7 @@ fn inverted_mesh_is_flipped_and_warned_about() {
     assert_rel(s.volume, 28.0, 1e-15, "book volume");
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(2.0)).expect("volume");
     assert!(a.flipped);
-    assert_eq!(a.warnings.len(), 1, "{:?}", a.warnings);
-    assert!(a.warnings[0].contains("clockwise"), "{:?}", a.warnings);
+    assert_eq!(a.warnings, vec![Warning::Flipped]);
     assert_mat(
         &a.properties.inertia_com,
         &box_tensor(56.0, 1.0, 4.0, 7.0),
@@ -190,7 +191,10 @@ fn degenerate_and_non_planar_faces_are_reported() {
     assert_eq!(d.degenerate_faces, 0);
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume");
     assert!(
-        a.warnings.iter().any(|w| w.contains("3 non-planar")),
+        a.warnings.contains(&Warning::NonPlanarFaces {
+            count: 3,
+            examples: around.clone(),
+        }),
         "{:?}",
         a.warnings
     );
@@ -211,9 +215,10 @@ fn degenerate_and_non_planar_faces_are_reported() {
     assert_eq!(d.degenerate_face_examples, vec![12, 13]);
     let a = analyze(&c.build(), Method::Volume, MassSpec::Density(1.0)).expect("volume");
     assert!(
-        a.warnings
-            .iter()
-            .any(|w| w.contains("2 degenerate face(s)") && w.contains("12, 13")),
+        a.warnings.contains(&Warning::DegenerateFaces {
+            count: 2,
+            examples: vec![12, 13],
+        }),
         "{:?}",
         a.warnings
     );

@@ -7,7 +7,7 @@
 use serde_json::json;
 
 use super::frames::Converted;
-use crate::report::TENSOR_CONVENTION;
+use super::TENSOR_CONVENTION;
 
 /// Version of this export schema; bumped on any incompatible change.
 pub const SCHEMA_VERSION: u32 = 1;

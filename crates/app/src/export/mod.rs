@@ -34,6 +34,10 @@ mod urdf;
 
 use massprops::MassProperties;
 
+/// The tensor sign convention, stated in every output (`props` and every export format).
+pub const TENSOR_CONVENTION: &str =
+    "inertia tensor I = sum m(|r|^2 E - r r^T): diagonal = moments, off-diagonals = -sum(m*x*y)";
+
 use frames::{Axes, Conversion};
 pub use frames::{LengthUnit, UpAxis, density_per_cubic_unit};
 

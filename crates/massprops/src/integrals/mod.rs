@@ -18,6 +18,7 @@
 //! result.
 
 pub mod mirtich;
+#[cfg(feature = "parallel")]
 mod parallel;
 mod simd;
 pub mod triangle;
@@ -36,9 +37,11 @@ pub enum IntegrationPath {
     Triangle,
     /// The triangle specialisation on the calling thread and the rayon pool (same result bit for
     /// bit). Like any rayon scope, it returns only once a pool thread has taken its helper task:
-    /// do not call it while holding something the pool's other work waits for.
+    /// do not call it while holding something the pool's other work waits for. Without the
+    /// `parallel` feature it is [`IntegrationPath::Triangle`].
     TriangleParallel,
-    /// Triangle paths when every face is a triangle (parallel above 64k triangles), else Polygon.
+    /// Triangle paths when every face is a triangle (parallel above 64k triangles with the
+    /// `parallel` feature, else on the calling thread), else Polygon.
     Auto,
 }
 
@@ -123,12 +126,14 @@ pub(crate) fn compensated_total<const N: usize>(
     acc.total()
 }
 
+/// Triangles above which [`IntegrationPath::Auto`] takes the parallel path. A single call to an
+/// idle pool gains nothing below this size on a 2-core VM (the bench's `cold_call` group:
+/// 1.0–1.1× at 99k triangles, 1.4–1.8× at 1M).
+pub const PARALLEL_ABOVE: usize = 1 << 16;
+
 /// Computes the ten volume integrals of `mesh` about its bounding-box centre (found when the mesh
 /// was built).
 pub fn volume_integrals(mesh: &crate::PolyMesh, path: IntegrationPath) -> VolumeIntegrals {
-    // A single call to an idle pool gains nothing below this size on a 2-core VM (the bench's
-    // `cold_call` group: 1.0–1.1× at 99k triangles, 1.4–1.8× at 1M).
-    const PARALLEL_ABOVE: usize = 1 << 16;
     let positions = mesh.positions();
     let parallel = match (path, mesh.as_triangles()) {
         (IntegrationPath::TriangleParallel, Some(_)) => true,

@@ -11,7 +11,9 @@
 use nalgebra::Point3;
 
 use super::simd::{Kernel, Level, Real, prefetch};
-use super::{BLOCK, compensated_total, parallel};
+#[cfg(feature = "parallel")]
+use super::parallel;
+use super::{BLOCK, compensated_total};
 
 /// Final factors of the tetrahedron sums: 1/6, 1/24, 1/120.
 const SCALE: [f64; 10] = [
@@ -50,17 +52,24 @@ fn integrate_with(
 
 /// The ten volume integrals on the caller and the rayon pool; equal bit for bit to
 /// [`integrate`]. Returns only once a pool thread has taken its helper task (see
-/// `parallel::map_blocks`).
+/// `parallel::map_blocks`). Without the `parallel` feature, this is [`integrate`].
 pub fn integrate_parallel(
     positions: &[Point3<f64>],
     triangles: &[[u32; 3]],
     reference: Point3<f64>,
 ) -> [f64; 10] {
-    let level = Level::detect();
-    let blocks = parallel::map_blocks(triangles.len().div_ceil(BLOCK), |b| {
-        block_sum(positions, triangles, b, reference, level)
-    });
-    scaled(compensated_total(blocks))
+    #[cfg(feature = "parallel")]
+    {
+        let level = Level::detect();
+        let blocks = parallel::map_blocks(triangles.len().div_ceil(BLOCK), |b| {
+            block_sum(positions, triangles, b, reference, level)
+        });
+        scaled(compensated_total(blocks))
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        integrate(positions, triangles, reference)
+    }
 }
 
 fn scaled(mut total: [f64; 10]) -> [f64; 10] {

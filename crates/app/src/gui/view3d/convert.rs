@@ -6,8 +6,8 @@
 use nalgebra::{Matrix4, Point2, Point3, Translation3, Vector2};
 use three_d::{CpuMesh, Indices, Mat4, Positions, Vec3};
 
-use crate::camera::OrbitCamera;
-use crate::geometry::TriMesh;
+use crate::lab::camera::OrbitCamera;
+use crate::lab::geometry::TriMesh;
 
 /// f64 point → three-d vector.
 pub fn vec3(p: &Point3<f64>) -> Vec3 {

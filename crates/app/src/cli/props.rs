@@ -6,8 +6,8 @@ use std::time::Instant;
 use clap::{Args, ValueEnum};
 use massprops::{MassSpec, Method};
 
-use crate::error::{CliError, positive};
-use crate::report;
+use super::error::{CliError, positive};
+use super::report;
 
 /// Mass-distribution method, as named on the command line.
 #[derive(Debug, Clone, Copy, ValueEnum)]

@@ -148,9 +148,9 @@ mod tests {
     use three_d::{DepthTexture2D, Interpolation, Texture2D, Wrapping};
 
     use super::*;
-    use crate::camera::OrbitCamera;
-    use crate::geometry::TriMesh;
-    use crate::view3d::convert;
+    use crate::lab::camera::OrbitCamera;
+    use crate::lab::geometry::TriMesh;
+    use crate::gui::view3d::convert;
 
     /// A surfaceless EGL context on the first EGL device (Mesa's software device on a machine
     /// without a GPU), made current on this thread.

@@ -7,8 +7,8 @@ use std::time::Duration;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
-use crate::gui::LabApp;
-use crate::settings::{AppSettings, InertiaSource};
+use inertia_lab::gui::LabApp;
+use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassSpec};
 
 fn harness() -> Harness<'static, LabApp> {
     let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
@@ -29,24 +29,24 @@ fn frames(h: &mut Harness<'static, LabApp>, n: usize) {
 fn pause_button_and_space_stop_and_restart_the_simulation() {
     let mut h = harness();
     frames(&mut h, 5);
-    assert!(h.state().lab().sim().steps() > 0, "runs from the start");
+    assert!(h.state().lab().primary().sim().steps() > 0, "runs from the start");
     h.get_all_by_label("Pause").next().expect("button").click();
     frames(&mut h, 2);
-    assert!(h.state().lab().sim().is_paused());
-    let steps = h.state().lab().sim().steps();
+    assert!(h.state().lab().primary().sim().is_paused());
+    let steps = h.state().lab().primary().sim().steps();
     frames(&mut h, 5);
     assert_eq!(
-        h.state().lab().sim().steps(),
+        h.state().lab().primary().sim().steps(),
         steps,
         "no steps while paused"
     );
     h.get_by_label("Step").click();
     frames(&mut h, 1);
-    assert_eq!(h.state().lab().sim().steps(), steps + 1);
+    assert_eq!(h.state().lab().primary().sim().steps(), steps + 1);
     h.key_press(egui::Key::Space);
     frames(&mut h, 5);
-    assert!(!h.state().lab().sim().is_paused());
-    assert!(h.state().lab().sim().steps() > steps + 1);
+    assert!(!h.state().lab().primary().sim().is_paused());
+    assert!(h.state().lab().primary().sim().steps() > steps + 1);
 }
 
 #[test]
@@ -55,24 +55,24 @@ fn switching_the_inertia_source_mid_run_keeps_angular_momentum() {
     frames(&mut h, 5);
     h.get_all_by_label("Pause").next().expect("button").click();
     frames(&mut h, 1);
-    let l = h.state().lab().sim().body().angular_momentum();
+    let l = h.state().lab().primary().sim().body().angular_momentum();
     h.get_by_label("bounding box").click();
     frames(&mut h, 2);
     let lab = h.state().lab();
-    assert_eq!(lab.settings.body.source, InertiaSource::BoundingBox);
-    let bbox = lab.properties(InertiaSource::BoundingBox).principal.moments;
-    let used = lab.sim().body().moments();
+    assert_eq!(lab.settings().body.source, InertiaSource::BoundingBox);
+    let bbox = lab.primary().properties(InertiaSource::BoundingBox).principal.moments;
+    let used = lab.primary().sim().body().moments();
     assert!(
         (used - bbox).norm() <= 1e-12 * bbox.norm(),
         "{used} vs {bbox}"
     );
-    assert!((lab.sim().body().angular_momentum() - l).norm() <= 1e-12 * l.norm());
+    assert!((lab.primary().sim().body().angular_momentum() - l).norm() <= 1e-12 * l.norm());
     // "exact" also heads the table column: the radio button is the last one.
     h.get_all_by_label("exact").last().expect("radio").click();
     frames(&mut h, 2);
     let lab = h.state().lab();
-    let exact = lab.properties(InertiaSource::Exact).principal.moments;
-    assert!((lab.sim().body().moments() - exact).norm() <= 1e-12 * exact.norm());
+    let exact = lab.primary().properties(InertiaSource::Exact).principal.moments;
+    assert!((lab.primary().sim().body().moments() - exact).norm() <= 1e-12 * exact.norm());
 }
 
 #[test]
@@ -99,8 +99,8 @@ fn a_bad_file_shows_the_error_and_keeps_the_body() {
     assert!(message.error);
     assert!(message.text.contains("not-a-mesh.obj"), "{}", message.text);
     assert!(message.text.contains("kept"), "{}", message.text);
-    assert_eq!(lab.body().name, "T-handle");
-    assert!(!lab.sim().is_paused(), "the old body keeps running");
+    assert_eq!(lab.primary().body().name, "T-handle");
+    assert!(!lab.primary().sim().is_paused(), "the old body keeps running");
     // The message is on screen.
     frames(&mut h, 1);
     assert!(h.query_by_label_contains("not-a-mesh.obj").is_some());
@@ -113,8 +113,35 @@ fn samples_load_and_help_opens_with_f1() {
     frames(&mut h, 1);
     h.get_by_label("Book").click();
     frames(&mut h, 2);
-    assert_eq!(h.state().lab().body().name, "Book");
+    assert_eq!(h.state().lab().primary().body().name, "Book");
     h.key_press(egui::Key::F1);
     frames(&mut h, 2);
     assert!(h.query_by_label_contains("Dzhanibekov").is_some());
+}
+
+/// Edits in two panels in the same frame both survive (the panels share one settings draft).
+#[test]
+fn reset_settings_spin_presets_and_reset_from_the_panel() {
+    let mut h = harness();
+    frames(&mut h, 2);
+    h.get_by_label("Spin axis 3").click();
+    frames(&mut h, 2);
+    let lab = h.state().lab();
+    let w = lab.primary().history().samples()[0].omega_principal;
+    let rate = lab.settings().body.spin_rate;
+    assert_eq!(w[2], rate, "axis 3 spins at the rate");
+    assert!((w[0] - 0.02 * rate).abs() < 1e-12);
+    // Bounding box (the toolbar) and the Mass radio (the side panel) in the same frame.
+    h.get_by_label("Bounding box").click();
+    h.get_by_label("Mass").click();
+    frames(&mut h, 2);
+    let s = h.state().lab().settings().clone();
+    assert!(s.view.bounding_box, "toolbar edit kept");
+    assert!(matches!(s.body.mass, MassSpec::Mass(_)), "panel edit kept");
+    h.get_by_label("Reset").click();
+    frames(&mut h, 1);
+    assert!(h.state().lab().primary().sim().time() < 0.1);
+    h.get_by_label("Reset settings").click();
+    frames(&mut h, 2);
+    assert_eq!(h.state().lab().settings(), &AppSettings::default());
 }

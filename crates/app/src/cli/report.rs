@@ -6,12 +6,10 @@ use massprops::{Analysis, Comparison, Degeneracy, MassProperties, Method};
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde_json::{Value, json};
 
+use crate::export::TENSOR_CONVENTION;
+
 /// Version of the JSON schema printed by `props --json`; bumped on any incompatible change.
 pub const SCHEMA_VERSION: u32 = 1;
-
-/// The tensor sign convention, stated in every output.
-pub const TENSOR_CONVENTION: &str =
-    "inertia tensor I = sum m(|r|^2 E - r r^T): diagonal = moments, off-diagonals = -sum(m*x*y)";
 
 fn rows(m: &Matrix3<f64>) -> Value {
     json!([

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 use massprops::{MassSpec, Method};
 
-use crate::error::{CliError, positive};
+use super::error::{CliError, positive};
 use crate::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, Material, UpAxis,
     density_per_cubic_unit, export,

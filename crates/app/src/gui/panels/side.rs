@@ -7,28 +7,31 @@ use egui::{Color32, RichText};
 use rbcore::{Integrator, RotationModel};
 
 use super::{PanelState, number};
-use crate::loader::SAMPLES;
-use crate::model::{Command, Lab};
-use crate::settings::{InertiaSource, MassSpec};
+use crate::gui::dialogs::DialogPurpose;
+use crate::lab::loader::SAMPLES;
+use crate::lab::settings::{AppSettings, InertiaSource, MassSpec};
+use crate::lab::{Command, Lab};
 
-/// Shows the panel contents.
-pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut Vec<Command>) {
-    let mut s = lab.settings.clone();
+/// Shows the panel contents, editing the frame's settings draft `s`.
+pub fn show(
+    ui: &mut egui::Ui,
+    lab: &Lab,
+    s: &mut AppSettings,
+    state: &mut PanelState,
+    commands: &mut Vec<Command>,
+) {
     egui::ScrollArea::vertical().show(ui, |ui| {
-        ui.heading(format!("Inertia Lab — {}", lab.body().name));
-        body_section(ui, lab, state, commands, &mut s);
-        table_section(ui, lab, &mut s);
-        motion_section(ui, lab, commands, &mut s);
-        interaction_section(ui, lab, &mut s);
+        ui.heading(format!("Inertia Lab — {}", lab.primary().body().name));
+        body_section(ui, lab, state, commands, s);
+        table_section(ui, lab, s);
+        motion_section(ui, lab, commands, s);
+        interaction_section(ui, lab, s);
         diagnostics_section(ui, lab);
         ui.separator();
         if ui.button("Reset settings").clicked() {
             commands.push(Command::ResetSettings);
         }
     });
-    if s != lab.settings {
-        commands.push(Command::Settings(Box::new(s)));
-    }
 }
 
 fn body_section(
@@ -36,17 +39,17 @@ fn body_section(
     lab: &Lab,
     state: &mut PanelState,
     commands: &mut Vec<Command>,
-    s: &mut crate::settings::AppSettings,
+    s: &mut AppSettings,
 ) {
     egui::CollapsingHeader::new("Body")
         .default_open(true)
         .show(ui, |ui| {
             ui.horizontal(|ui| {
                 if ui
-                    .add_enabled(!lab.dialog_open(), egui::Button::new("Open mesh…"))
+                    .add_enabled(!state.dialog_open, egui::Button::new("Open mesh…"))
                     .clicked()
                 {
-                    commands.push(Command::OpenDialog);
+                    state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
                 ui.label("or drop an OBJ/STL file on the window");
             });
@@ -78,14 +81,12 @@ fn body_section(
             number(ui, "Size ×", &mut s.body.scale, 1e-3..=1e3, 0.01, "");
             ui.horizontal(|ui| {
                 let density = matches!(s.body.mass, MassSpec::Density(_));
-                let exact = lab.properties(InertiaSource::Exact);
+                let primary = lab.primary();
                 if ui.radio(density, "Density").clicked() && !density {
-                    s.body.mass = MassSpec::Density(
-                        lab.body().analysis.properties.mass.recip() * exact.mass
-                            / s.body.scale.powi(3),
-                    );
+                    s.body.mass = MassSpec::Density(primary.density());
                 }
                 if ui.radio(!density, "Mass").clicked() && density {
+                    let exact = primary.properties(InertiaSource::Exact);
                     s.body.mass = MassSpec::Mass(exact.mass);
                 }
             });
@@ -104,12 +105,13 @@ fn fmt(x: f64) -> String {
     format!("{x:.4e}")
 }
 
-fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::AppSettings) {
+fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
     egui::CollapsingHeader::new("Mass properties")
         .default_open(true)
         .show(ui, |ui| {
-            let [exact, bbox, points] = InertiaSource::ALL.map(|src| lab.properties(src));
-            let [_, cb, cp] = InertiaSource::ALL.map(|src| lab.comparison(src));
+            let primary = lab.primary();
+            let [exact, bbox, points] = InertiaSource::ALL.map(|src| primary.properties(src));
+            let [_, cb, cp] = InertiaSource::ALL.map(|src| primary.comparison(src));
             egui::Grid::new("mass-table")
                 .striped(true)
                 .num_columns(4)
@@ -192,7 +194,7 @@ fn motion_section(
     ui: &mut egui::Ui,
     lab: &Lab,
     commands: &mut Vec<Command>,
-    s: &mut crate::settings::AppSettings,
+    s: &mut AppSettings,
 ) {
     egui::CollapsingHeader::new("Motion")
         .default_open(true)
@@ -205,7 +207,7 @@ fn motion_section(
                 if ui.button("Reset").clicked() {
                     commands.push(Command::Reset);
                 }
-                ui.label(format!("t = {:.2} s", lab.sim().time()));
+                ui.label(format!("t = {:.2} s", lab.primary().sim().time()));
             });
             ui.horizontal(|ui| {
                 for axis in 0..3 {
@@ -276,7 +278,7 @@ fn motion_section(
         });
 }
 
-fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::AppSettings) {
+fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
     egui::CollapsingHeader::new("Poke and string")
         .default_open(false)
         .show(ui, |ui| {
@@ -289,7 +291,8 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::Ap
                 0.01,
                 " m/s",
             );
-            ui.small(format!("J = {:.4e} N·s", lab.poke_impulse()));
+            let primary = lab.primary();
+            ui.small(format!("J = {:.4e} N·s", primary.poke_impulse(lab.settings())));
             number(
                 ui,
                 "String frequency",
@@ -314,16 +317,17 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut crate::settings::Ap
                 1.0,
                 " m/s²",
             );
-            ui.small(format!("F max = {:.4e} N", lab.string_max_force()));
+            let f = primary.string_max_force(lab.settings());
+            ui.small(format!("F max = {f:.4e} N"));
         });
 }
 
 fn diagnostics_section(ui: &mut egui::Ui, lab: &Lab) {
-    let a = &lab.body().analysis;
+    let a = &lab.primary().body().analysis;
     egui::CollapsingHeader::new(if a.warnings.is_empty() {
         "Mesh diagnostics".to_owned()
     } else {
-        format!("Mesh diagnostics ⚠ {}", a.warnings.len())
+        format!("Mesh diagnostics ({} warnings)", a.warnings.len())
     })
     .default_open(!a.warnings.is_empty())
     .show(ui, |ui| {

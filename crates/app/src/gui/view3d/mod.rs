@@ -9,10 +9,10 @@ use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use egui::{Color32, PointerButton, Sense, Stroke};
-use nalgebra::{Matrix4, Point3, Vector3};
+use nalgebra::{Point3, Vector3};
 
-use crate::camera::OrbitCamera;
-use crate::model::{Command, Lab};
+use crate::lab::camera::OrbitCamera;
+use crate::lab::{Command, Lab, PRIMARY};
 use convert::FrameParams;
 use overlay::{Overlay, WIREFRAME_MAX_EDGES};
 use scene::Scene;
@@ -55,15 +55,15 @@ impl View3d {
     /// Centres the camera on the body, with room for the ω and L arrows (up to 1.3 radii from
     /// the centre of mass at the preset spin).
     pub fn frame_body(&mut self, lab: &Lab) {
-        let (c, r) = lab.bounding_sphere();
+        let (c, r) = lab.primary().bounding_sphere();
         self.camera.frame(c, 1.8 * r);
     }
 
     /// Moves the target with the centre of mass (keeping any pan offset), so a poked or pulled
     /// body that drifts stays in view.
     fn follow(&mut self, lab: &Lab) {
-        let com = lab.sim().body().position();
-        if lab.settings.view.follow_body
+        let com = lab.primary().sim().body().position();
+        if lab.settings().view.follow_body
             && let Some(last) = self.followed
         {
             self.camera.target += com - last;
@@ -100,7 +100,7 @@ impl View3d {
                 {
                     s.set_mesh(
                         lab.generation(),
-                        &convert::cpu_mesh(&lab.body().mesh, &origin),
+                        &convert::cpu_mesh(&lab.primary().body().mesh, &origin),
                     );
                 }
                 let scene = Arc::clone(scene);
@@ -129,7 +129,9 @@ impl View3d {
         }
         self.paint_overlay(ui, rect, lab);
         let mut hint = HINT.to_owned();
-        if lab.settings.view.wireframe && lab.body().mesh.edges.len() > WIREFRAME_MAX_EDGES {
+        if lab.settings().view.wireframe
+            && lab.primary().body().mesh.edges.len() > WIREFRAME_MAX_EDGES
+        {
             hint = format!("Wireframe off above {WIREFRAME_MAX_EDGES} edges · {hint}");
         }
         ui.allocate_ui(egui::vec2(rect.width(), hint_height), |ui| {
@@ -140,15 +142,9 @@ impl View3d {
     /// Camera values and the mesh → world matrix for the renderer, with the upload origin (the
     /// mesh's bounding-sphere centre).
     fn frame_params(&self, lab: &Lab) -> (Point3<f64>, FrameParams) {
-        let origin = lab.body().sphere.0;
-        let body = lab.sim().body();
-        let s = lab.scale();
-        let c = lab.used_properties().center_of_mass;
-        // x ↦ R (s·x − c) + r
-        let model = Matrix4::new_translation(&body.position().coords)
-            * body.body_orientation().to_homogeneous()
-            * Matrix4::new_translation(&(-c.coords))
-            * Matrix4::new_scaling(s);
+        let primary = lab.primary();
+        let origin = primary.body().sphere.0;
+        let model = primary.placement().matrix();
         (origin, FrameParams::new(&self.camera, &model, &origin))
     }
 
@@ -167,10 +163,13 @@ impl View3d {
             let origin = ui
                 .input(|i| i.pointer.press_origin())
                 .or(response.interact_pointer_pos());
-            let hit = origin.and_then(|p| lab.pick(&ray_at(&self.camera, p)));
+            let hit = origin.and_then(|p| lab.primary().pick(&ray_at(&self.camera, p)));
             self.gesture = Some(match hit {
                 Some(hit) => {
-                    commands.push(Command::Grab(hit.point));
+                    commands.push(Command::Grab {
+                        specimen: PRIMARY,
+                        point: hit.point,
+                    });
                     Gesture::String {
                         point: hit.point,
                         normal: self.camera.forward(),
@@ -189,7 +188,10 @@ impl View3d {
                     if let Some(pos) = response.interact_pointer_pos()
                         && let Some(target) = ray_at(&self.camera, pos).hit_plane(&point, &normal)
                     {
-                        commands.push(Command::Drag(target));
+                        commands.push(Command::Drag {
+                            specimen: PRIMARY,
+                            target,
+                        });
                     }
                 }
                 None => {}
@@ -197,7 +199,7 @@ impl View3d {
         }
         if response.drag_stopped() {
             if matches!(self.gesture, Some(Gesture::String { .. })) {
-                commands.push(Command::Release);
+                commands.push(Command::Release { specimen: PRIMARY });
             }
             self.gesture = None;
         }
@@ -212,8 +214,9 @@ impl View3d {
             && let Some(pos) = response.interact_pointer_pos()
         {
             let ray = ray_at(&self.camera, pos);
-            if let Some(hit) = lab.pick(&ray) {
+            if let Some(hit) = lab.primary().pick(&ray) {
                 commands.push(Command::Poke {
+                    specimen: PRIMARY,
                     point: hit.point,
                     direction: ray.dir,
                 });
@@ -231,7 +234,7 @@ impl View3d {
     }
 
     fn paint_overlay(&self, ui: &egui::Ui, rect: egui::Rect, lab: &Lab) {
-        let overlay = Overlay::build(lab, &lab.settings.view, Instant::now());
+        let overlay = Overlay::build(lab, Instant::now());
         let painter = ui.painter_at(rect);
         let size = convert::size(rect.size());
         let project = |p: &Point3<f64>| {

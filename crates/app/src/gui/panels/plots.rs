@@ -7,9 +7,12 @@ use egui::Color32;
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use super::{PanelState, number};
-use crate::history::{History, Sample};
-use crate::model::{Command, Lab};
-use crate::view3d::overlay::AXIS_COLORS;
+use crate::gui::dialogs::DialogPurpose;
+use crate::gui::view3d::overlay::AXIS_COLORS;
+use crate::lab::history::History;
+use crate::lab::settings::AppSettings;
+use crate::lab::{Command, Lab, PRIMARY};
+use crate::timeseries::Sample;
 
 type Series = (&'static str, Color32, fn(&Sample) -> f64);
 
@@ -31,9 +34,14 @@ const ENERGY: [Series; 3] = [
 ];
 
 /// Shows the controls row and the three plots.
-pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut Vec<Command>) {
-    let history = lab.history();
-    let mut settings = lab.settings.clone();
+pub fn show(
+    ui: &mut egui::Ui,
+    lab: &Lab,
+    settings: &mut AppSettings,
+    state: &mut PanelState,
+    commands: &mut Vec<Command>,
+) {
+    let history = lab.primary().history();
     ui.horizontal(|ui| {
         super::pause_button(ui, lab, commands);
         ui.checkbox(&mut state.follow, "Follow");
@@ -60,21 +68,21 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
         ui.add(egui::TextEdit::singleline(&mut state.csv_path).desired_width(120.0))
             .labelled_by(l.id);
         if ui.button("Export CSV").clicked() && !state.csv_path.trim().is_empty() {
-            commands.push(Command::ExportCsv(PathBuf::from(state.csv_path.trim())));
+            commands.push(Command::ExportCsv {
+                specimen: PRIMARY,
+                path: PathBuf::from(state.csv_path.trim()),
+            });
         }
         if ui
-            .button("…")
+            .add_enabled(!state.dialog_open, egui::Button::new("…"))
             .on_hover_text("choose where to save")
             .clicked()
         {
-            commands.push(Command::ExportCsvDialog);
+            state.dialog_request = Some(DialogPurpose::SaveCsv);
         }
     });
-    if settings != lab.settings {
-        commands.push(Command::Settings(Box::new(settings)));
-    }
     let t_end = history.last().map_or(0.0, |s| s.t);
-    let window = lab.settings.plots.window;
+    let window = settings.plots.window;
     // Until a full window has elapsed the axis shows [0, window] rather than negative time.
     let bounds = state
         .follow
@@ -137,10 +145,11 @@ fn draw(
 
 /// The energy drift readout.
 fn drift_text(lab: &Lab) -> String {
-    if lab.string_view().is_some() {
+    let primary = lab.primary();
+    if primary.string_view().is_some() {
         return "ΔE/E: n/a while the string pulls".to_owned();
     }
-    match lab.history().energy_drift() {
+    match primary.history().energy_drift() {
         Some((now, max)) => format!("ΔE/E₀ {now:+.2e} (max {max:.2e})"),
         None => "ΔE/E₀: n/a (E₀ = 0)".to_owned(),
     }

@@ -7,7 +7,7 @@
 
 use nalgebra::{Point3, Vector3};
 
-use crate::geometry::TriMesh;
+use super::geometry::TriMesh;
 
 /// A ray `origin + t·dir`, `t ≥ 0`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,6 +1,9 @@
 //! The 2D panels: the side panel (body, mass properties, motion, interaction), the toolbar of
-//! view toggles, the plot panel and the F1 help. Each reads the model and records [`crate::model::Command`]s; none
-//! changes the model itself.
+//! view toggles, the plot panel and the F1 help. Each reads the model, edits the frame's one
+//! settings draft and records [`Command`]s; none changes the model itself.
+
+use super::dialogs::DialogPurpose;
+use crate::lab::{Command, Lab};
 
 pub mod help;
 pub mod plots;
@@ -18,6 +21,10 @@ pub struct PanelState {
     pub follow: bool,
     /// Whether the F1 help is shown.
     pub help_open: bool,
+    /// A file dialog a panel asked for this frame (the app opens it).
+    pub dialog_request: Option<DialogPurpose>,
+    /// Whether a file dialog is open (its buttons are disabled meanwhile).
+    pub dialog_open: bool,
 }
 
 impl Default for PanelState {
@@ -27,23 +34,21 @@ impl Default for PanelState {
             csv_path: "inertia-lab.csv".to_owned(),
             follow: true,
             help_open: false,
+            dialog_request: None,
+            dialog_open: false,
         }
     }
 }
 
 /// The Run / Pause button (in the side panel and over the plots).
-pub(crate) fn pause_button(
-    ui: &mut egui::Ui,
-    lab: &crate::model::Lab,
-    commands: &mut Vec<crate::model::Command>,
-) {
-    let label = if lab.sim().is_paused() {
+pub(crate) fn pause_button(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
+    let label = if lab.is_paused() {
         "Run"
     } else {
         "Pause"
     };
     if ui.button(label).clicked() {
-        commands.push(crate::model::Command::TogglePause);
+        commands.push(Command::TogglePause);
     }
 }
 

@@ -1,6 +1,6 @@
 //! Loading a body off the UI thread: read (with progress), parse, mass properties and the picking
 //! index run on a worker thread that reports through a channel, so a large mesh never freezes the
-//! UI. Also the native file dialogs, which block and therefore run on their own threads too.
+//! UI.
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -9,37 +9,37 @@ use std::thread;
 
 use massprops::{Analysis, MassSpec, Method, PolyMesh};
 
-use crate::geometry::TriMesh;
-use crate::picking::Bvh;
+use super::geometry::TriMesh;
+use super::picking::Bvh;
 
 /// The sample bodies, embedded so the binary needs no files: (label, file name, OBJ text).
 pub const SAMPLES: [(&str, &str, &str); 7] = [
     (
         "T-handle",
         "t_handle.obj",
-        include_str!("../../../assets/t_handle.obj"),
+        include_str!("../../../../assets/t_handle.obj"),
     ),
     (
         "Tennis racket",
         "tennis_racket.obj",
-        include_str!("../../../assets/tennis_racket.obj"),
+        include_str!("../../../../assets/tennis_racket.obj"),
     ),
-    ("Book", "book.obj", include_str!("../../../assets/book.obj")),
+    ("Book", "book.obj", include_str!("../../../../assets/book.obj")),
     (
         "Hammer",
         "hammer.obj",
-        include_str!("../../../assets/hammer.obj"),
+        include_str!("../../../../assets/hammer.obj"),
     ),
     (
         "L-bracket",
         "l_bracket.obj",
-        include_str!("../../../assets/l_bracket.obj"),
+        include_str!("../../../../assets/l_bracket.obj"),
     ),
-    ("Cube", "cube.obj", include_str!("../../../assets/cube.obj")),
+    ("Cube", "cube.obj", include_str!("../../../../assets/cube.obj")),
     (
         "Torus",
         "torus.obj",
-        include_str!("../../../assets/torus.obj"),
+        include_str!("../../../../assets/torus.obj"),
     ),
 ];
 
@@ -188,57 +188,6 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
     drop(bytes);
     progress("mass properties and picking index", 0.0);
     LoadedBody::new(&name, &poly).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// A native file dialog running on its own thread (they block until closed).
-#[derive(Debug)]
-pub struct Dialog {
-    /// What the chosen path is for.
-    pub purpose: DialogPurpose,
-    answer: Receiver<Option<PathBuf>>,
-}
-
-/// Why a dialog was opened.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DialogPurpose {
-    /// Pick a mesh to load.
-    OpenMesh,
-    /// Choose where to write the plot CSV.
-    SaveCsv,
-}
-
-impl Dialog {
-    /// Opens the dialog for `purpose`.
-    pub fn open(purpose: DialogPurpose, wake: impl Fn() + Send + 'static) -> Self {
-        let (tx, rx) = channel();
-        thread::spawn(move || {
-            let dialog = rfd::FileDialog::new();
-            let path = match purpose {
-                DialogPurpose::OpenMesh => dialog
-                    .add_filter("Meshes (OBJ, STL)", &["obj", "stl", "OBJ", "STL"])
-                    .pick_file(),
-                DialogPurpose::SaveCsv => dialog
-                    .add_filter("CSV", &["csv"])
-                    .set_file_name("inertia-lab.csv")
-                    .save_file(),
-            };
-            let _ = tx.send(path);
-            wake();
-        });
-        Self {
-            purpose,
-            answer: rx,
-        }
-    }
-
-    /// `Some(answer)` once closed (`None` inside: cancelled, or no dialog service available).
-    pub fn poll(&self) -> Option<Option<PathBuf>> {
-        match self.answer.try_recv() {
-            Ok(answer) => Some(answer),
-            Err(TryRecvError::Empty) => None,
-            Err(TryRecvError::Disconnected) => Some(None),
-        }
-    }
 }
 
 #[cfg(test)]

@@ -7,15 +7,13 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::Args;
-use nalgebra::{Rotation3, UnitQuaternion, Vector3};
+use nalgebra::{Rotation3, Vector3};
 use rbcore::{
     Body, Diagnostics, DriftTracker, FlipCounter, Integrator, RotationModel, Settings, Simulation,
 };
 
-use crate::error::{CliError, positive};
-
-/// The CSV header, one column per field documented in README.
-pub const CSV_HEADER: &str = "t,w1,w2,w3,wx,wy,wz,Lx,Ly,Lz,qw,qx,qy,qz,T,U,E";
+use super::error::{CliError, positive};
+use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
 
 /// Arguments of `simulate`. Without `--mesh` or `--inertia` it runs the canonical
 /// tennis-racket case I = (1, 2, 3), ω₀ = (0.001, 10, 0.001).
@@ -184,19 +182,24 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         None => Box::new(BufWriter::new(std::io::stdout().lock())),
     };
     writeln!(out, "{CSV_HEADER}").map_err(write_err)?;
+    let mut sign = QuaternionSign::default();
+    let mut write_row = |out: &mut dyn Write, d: &Diagnostics| {
+        let mut s = Sample::new(d);
+        sign.apply(&mut s);
+        s.write_csv_row(out)
+    };
     let d0 = sim.diagnostics();
     let mut drift = DriftTracker::new(&d0);
     let mut flips = FlipCounter::new();
     flips.observe(d0.time, d0.omega_principal.y);
-    let mut last_q = d0.orientation;
-    write_row(&mut out, &d0, &mut last_q).map_err(write_err)?;
+    write_row(&mut out, &d0).map_err(write_err)?;
     for i in 1..=steps {
         sim.step().map_err(diverged)?;
         let d = sim.diagnostics();
         drift.observe(&d);
         flips.observe(d.time, d.omega_principal.y);
         if i % args.every == 0 {
-            write_row(&mut out, &d, &mut last_q).map_err(write_err)?;
+            write_row(&mut out, &d).map_err(write_err)?;
         }
     }
     out.flush().map_err(write_err)?;
@@ -218,41 +221,6 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     );
     eprintln!("flips (reversals of w2):            {}", flips.flips());
     Ok(())
-}
-
-/// One CSV row; the quaternion sign is kept continuous (q and −q are the same rotation).
-fn write_row(
-    out: &mut dyn Write,
-    d: &Diagnostics,
-    last_q: &mut UnitQuaternion<f64>,
-) -> std::io::Result<()> {
-    let mut q = d.orientation.into_inner();
-    if q.coords.dot(&last_q.coords) < 0.0 {
-        q = -q;
-    }
-    *last_q = UnitQuaternion::new_unchecked(q);
-    let (w, wo, l) = (d.omega_principal, d.omega_world, d.angular_momentum);
-    writeln!(
-        out,
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-        d.time,
-        w.x,
-        w.y,
-        w.z,
-        wo.x,
-        wo.y,
-        wo.z,
-        l.x,
-        l.y,
-        l.z,
-        q.w,
-        q.i,
-        q.j,
-        q.k,
-        d.kinetic,
-        d.potential,
-        d.energy
-    )
 }
 
 /// One integrator's row of the comparison.

@@ -1,6 +1,6 @@
 //! The F1 help overlay: controls and what the views show.
 
-use crate::view3d::overlay::AXIS_COLORS;
+use crate::gui::view3d::overlay::AXIS_COLORS;
 
 /// Shows the help window while `open`.
 pub fn show(ctx: &egui::Context, open: &mut bool) {

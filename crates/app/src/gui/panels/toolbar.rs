@@ -1,11 +1,10 @@
 //! The toolbar over the 3D view: overlay toggles and "frame the body".
 
-use crate::model::{Command, Lab};
-use crate::settings::Equivalent;
+use crate::lab::settings::{AppSettings, Equivalent};
 
-/// Shows the toolbar; returns whether "Frame" was clicked (a camera action, not a command).
-pub fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) -> bool {
-    let mut s = lab.settings.clone();
+/// Shows the toolbar, editing the frame's settings draft; returns whether "Frame" was clicked
+/// (a camera action, not a command).
+pub fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
     let mut frame = false;
     ui.horizontal_wrapped(|ui| {
         frame = ui
@@ -26,8 +25,5 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) -> bool {
         ui.radio_value(&mut v.equivalent, Equivalent::Box, "box");
         ui.radio_value(&mut v.equivalent, Equivalent::Ellipsoid, "ellipsoid");
     });
-    if s != lab.settings {
-        commands.push(Command::Settings(Box::new(s)));
-    }
     frame
 }

@@ -1,82 +1,13 @@
 //! The plotted time series: one sample per simulation step in a bounded ring buffer, the energy
-//! drift since the last disturbance, decimation for drawing, and CSV export in the columns of the
-//! `simulate` command.
+//! drift since the last disturbance, decimation for drawing, and CSV export in the schema of
+//! [`crate::timeseries`] (the columns of the `simulate` command).
 
 use std::collections::VecDeque;
 use std::io::{self, Write};
 
-use rbcore::Diagnostics;
+use rbcore::{Diagnostics, relative_change};
 
-use crate::simulate::CSV_HEADER;
-
-/// One step's plotted quantities (the `simulate` CSV columns).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Sample {
-    /// Simulated time (s).
-    pub t: f64,
-    /// ω in the principal body frame (rad/s), moments ascending.
-    pub omega_principal: [f64; 3],
-    /// ω in world (rad/s).
-    pub omega_world: [f64; 3],
-    /// World angular momentum about the centre of mass.
-    pub l: [f64; 3],
-    /// |L|.
-    pub l_norm: f64,
-    /// Orientation quaternion (w, x, y, z), principal → world, sign kept continuous.
-    pub q: [f64; 4],
-    /// Kinetic energy T.
-    pub kinetic: f64,
-    /// Potential energy U (gravity and string).
-    pub potential: f64,
-    /// Total energy E = T + U.
-    pub energy: f64,
-}
-
-impl Sample {
-    /// The sample of `d`, or `None` if any value is not finite (never plotted).
-    pub fn from_diagnostics(d: &Diagnostics) -> Option<Self> {
-        let q = d.orientation.into_inner();
-        let s = Self {
-            t: d.time,
-            omega_principal: d.omega_principal.into(),
-            omega_world: d.omega_world.into(),
-            l: d.angular_momentum.into(),
-            l_norm: d.angular_momentum_norm,
-            q: [q.w, q.i, q.j, q.k],
-            kinetic: d.kinetic,
-            potential: d.potential,
-            energy: d.energy,
-        };
-        s.values().iter().all(|v| v.is_finite()).then_some(s)
-    }
-
-    /// All values in CSV column order.
-    pub fn values(&self) -> [f64; 17] {
-        let [w1, w2, w3] = self.omega_principal;
-        let [wx, wy, wz] = self.omega_world;
-        let [lx, ly, lz] = self.l;
-        let [qw, qx, qy, qz] = self.q;
-        [
-            self.t,
-            w1,
-            w2,
-            w3,
-            wx,
-            wy,
-            wz,
-            lx,
-            ly,
-            lz,
-            qw,
-            qx,
-            qy,
-            qz,
-            self.kinetic,
-            self.potential,
-            self.energy,
-        ]
-    }
-}
+use crate::timeseries::{QuaternionSign, Sample};
 
 /// Bounded history of samples plus the energy reference for the drift readout.
 #[derive(Debug, Clone)]
@@ -85,6 +16,7 @@ pub struct History {
     capacity: usize,
     energy_reference: Option<f64>,
     max_drift: f64,
+    sign: QuaternionSign,
 }
 
 impl History {
@@ -95,6 +27,7 @@ impl History {
             capacity: capacity.max(2),
             energy_reference: None,
             max_drift: 0.0,
+            sign: QuaternionSign::default(),
         }
     }
 
@@ -109,22 +42,16 @@ impl History {
     /// Appends a sample of `d` (skipped if not finite; returns whether it was kept). Samples must
     /// come in time order; one older than the last (after a reset) clears the history first.
     pub fn push(&mut self, d: &Diagnostics) -> bool {
-        let Some(mut s) = Sample::from_diagnostics(d) else {
+        let mut s = Sample::new(d);
+        if !s.is_finite() {
             return false;
-        };
-        if let Some(last) = self.samples.back() {
-            if s.t < last.t {
-                self.clear();
-            } else {
-                // q and −q are the same orientation: keep the sign continuous, as `simulate` does.
-                let dot: f64 = s.q.iter().zip(last.q).map(|(a, b)| a * b).sum();
-                if dot < 0.0 {
-                    s.q = s.q.map(|x| -x);
-                }
-            }
         }
+        if self.samples.back().is_some_and(|last| s.t < last.t) {
+            self.clear();
+        }
+        self.sign.apply(&mut s);
         let reference = *self.energy_reference.get_or_insert(s.energy);
-        if let Some(drift) = relative(s.energy, reference) {
+        if let Some(drift) = relative_change(s.energy, reference) {
             self.max_drift = self.max_drift.max(drift.abs());
         }
         if self.samples.len() == self.capacity {
@@ -137,6 +64,7 @@ impl History {
     /// Forgets all samples and the energy reference.
     pub fn clear(&mut self) {
         self.samples.clear();
+        self.sign.reset();
         self.mark_disturbance();
     }
 
@@ -157,10 +85,10 @@ impl History {
         self.samples.back()
     }
 
-    /// (current, largest) relative energy drift |E − E₀| / |E₀| since the reference; `None` while
-    /// the reference energy is zero (a body at rest has no scale to be relative to).
+    /// (current, largest) relative energy drift (E − E₀) / |E₀| since the reference; `None` when
+    /// E changed from a zero reference (a body at rest has no scale to be relative to).
     pub fn energy_drift(&self) -> Option<(f64, f64)> {
-        let current = relative(self.last()?.energy, self.energy_reference?)?;
+        let current = relative_change(self.last()?.energy, self.energy_reference?)?;
         Some((current, self.max_drift))
     }
 
@@ -205,19 +133,13 @@ impl History {
         out
     }
 
-    /// Writes the history as CSV with the header and columns of `inertia-lab simulate`.
+    /// Writes the history as CSV in the schema of [`crate::timeseries`].
+    ///
+    /// # Errors
+    /// Writing to `out` failed.
     pub fn write_csv(&self, out: &mut dyn Write) -> io::Result<()> {
-        writeln!(out, "{CSV_HEADER}")?;
-        for s in &self.samples {
-            let row: Vec<String> = s.values().iter().map(f64::to_string).collect();
-            writeln!(out, "{}", row.join(","))?;
-        }
-        Ok(())
+        crate::timeseries::write_csv(out, &self.samples)
     }
-}
-
-fn relative(e: f64, reference: f64) -> Option<f64> {
-    (reference.abs() > f64::MIN_POSITIVE).then(|| (e - reference) / reference.abs())
 }
 
 #[cfg(test)]
@@ -306,8 +228,11 @@ mod tests {
         h.write_csv(&mut out).expect("in memory");
         let text = String::from_utf8(out).expect("utf-8");
         let lines: Vec<&str> = text.lines().collect();
-        assert_eq!(lines[0], CSV_HEADER);
+        assert_eq!(lines[0], crate::timeseries::CSV_HEADER);
         assert_eq!(lines.len(), 4);
-        assert_eq!(lines[1].split(',').count(), CSV_HEADER.split(',').count());
+        assert_eq!(
+            lines[1].split(',').count(),
+            crate::timeseries::CSV_HEADER.split(',').count()
+        );
     }
 }

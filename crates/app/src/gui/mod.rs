@@ -10,12 +10,17 @@ use std::time::Instant;
 use clap::Args;
 use egui::Key;
 
-use crate::error::CliError;
-use crate::model::{Command, Lab};
-use crate::panels::{self, PanelState};
-use crate::settings::AppSettings;
-use crate::view3d::View3d;
-use crate::view3d::scene::Scene;
+pub mod dialogs;
+pub mod panels;
+pub mod view3d;
+
+use crate::cli::CliError;
+use crate::lab::settings::AppSettings;
+use crate::lab::{Command, Lab};
+use dialogs::{Dialog, DialogPurpose};
+use panels::PanelState;
+use view3d::View3d;
+use view3d::scene::Scene;
 
 /// Key under which the settings are stored.
 const SETTINGS_KEY: &str = "inertia-lab-settings";
@@ -62,6 +67,7 @@ pub struct LabApp {
     view: View3d,
     panels: PanelState,
     scene: Option<Arc<Mutex<Scene>>>,
+    dialog: Option<Dialog>,
     bench: Option<Bench>,
 }
 
@@ -100,12 +106,12 @@ impl LabApp {
             view: View3d::default(),
             panels: PanelState::default(),
             scene,
+            dialog: None,
             bench: None,
         })
     }
 
-    /// The model (for the UI tests).
-    #[cfg(test)]
+    /// The model (read-only; the UI tests inspect it).
     pub fn lab(&self) -> &Lab {
         &self.lab
     }
@@ -128,7 +134,11 @@ impl LabApp {
                 .collect()
         });
         commands.extend(dropped.into_iter().take(1).map(Command::LoadFile));
+        self.poll_dialog(&mut commands);
+        self.panels.dialog_open = self.dialog.is_some();
         self.lab.frame(Instant::now());
+        // Every panel edits this one draft; it becomes one command, so no edit undoes another.
+        let mut draft = self.lab.settings().clone();
 
         egui::Panel::top("message").show(ui, |ui| {
             ui.horizontal(|ui| match self.lab.message() {
@@ -155,7 +165,7 @@ impl LabApp {
             .default_size(360.0)
             .max_size(520.0)
             .show(ui, |ui| {
-                panels::side::show(ui, &self.lab, &mut self.panels, &mut commands);
+                panels::side::show(ui, &self.lab, &mut draft, &mut self.panels, &mut commands);
             });
         let hide_plots = self.bench.as_ref().is_some_and(|b| b.hide_plots);
         if !hide_plots {
@@ -164,11 +174,11 @@ impl LabApp {
                 .default_size(260.0)
                 .min_size(200.0)
                 .show(ui, |ui| {
-                    panels::plots::show(ui, &self.lab, &mut self.panels, &mut commands);
+                    panels::plots::show(ui, &self.lab, &mut draft, &mut self.panels, &mut commands);
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
-            if panels::toolbar::show(ui, &self.lab, &mut commands) {
+            if panels::toolbar::show(ui, &mut draft) {
                 self.view.frame_body(&self.lab);
             }
             self.view
@@ -184,10 +194,50 @@ impl LabApp {
             );
         }
         panels::help::show(&ctx, &mut self.panels.help_open);
+        if let Some(purpose) = self.panels.dialog_request.take()
+            && self.dialog.is_none()
+        {
+            let repaint = ctx.clone();
+            self.dialog = Some(Dialog::open(purpose, move || repaint.request_repaint()));
+        }
+        if draft != *self.lab.settings() {
+            // Before the panels' commands, so that "Reset settings" in the same frame wins.
+            commands.insert(0, Command::Settings(Box::new(draft)));
+        }
         self.lab.apply_all(commands);
-        if self.lab.is_animating() || self.view.is_dragging() || self.bench.is_some() {
+        if self.lab.is_animating()
+            || self.dialog.is_some()
+            || self.view.is_dragging()
+            || self.bench.is_some()
+        {
             ctx.request_repaint();
         }
+    }
+
+    /// Turns a closed dialog's answer into a command.
+    fn poll_dialog(&mut self, commands: &mut Vec<Command>) {
+        let Some(answer) = self.dialog.as_ref().and_then(Dialog::poll) else {
+            return;
+        };
+        let purpose = self.dialog.take().map(|d| d.purpose);
+        commands.push(match (purpose, answer) {
+            (Some(DialogPurpose::OpenMesh), Some(path)) => Command::LoadFile(path),
+            (Some(DialogPurpose::SaveCsv), Some(path)) => Command::ExportCsv {
+                specimen: crate::lab::PRIMARY,
+                path,
+            },
+            // rfd reports a cancel and a missing XDG desktop portal alike.
+            _ => Command::Inform(
+                "no file chosen (if no dialog appeared, this desktop has no file-dialog portal: \
+                 type a path or drop the file on the window)"
+                    .to_owned(),
+            ),
+        });
+    }
+
+    /// Whether a file dialog is open.
+    pub fn dialog_open(&self) -> bool {
+        self.dialog.is_some()
     }
 
     fn shortcuts(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
@@ -247,8 +297,8 @@ impl LabApp {
                  ({:.1} fps), p50 {:.1} ms, p90 {:.1} ms, p99 {:.1} ms, max {:.1} ms; \
                  building the UI {:.2} ms, whole frame's work {:.2} ms",
                 t.len(),
-                self.lab.body().mesh.triangles.len(),
-                self.lab.history().samples().len(),
+                self.lab.primary().body().mesh.triangles.len(),
+                self.lab.primary().history().samples().len(),
                 if b.hide_plots { "hidden" } else { "shown" },
                 mean,
                 1e3 / mean,
@@ -278,11 +328,12 @@ impl LabApp {
             })
             .collect();
         let start = Instant::now();
-        let hits = rays.iter().filter(|r| self.lab.pick(r).is_some()).count();
+        let primary = self.lab.primary();
+        let hits = rays.iter().filter(|r| primary.pick(r).is_some()).count();
         let per_ray = start.elapsed().as_secs_f64() / rays.len() as f64;
         println!(
             "picking ({} triangles): {:.1} µs per ray ({} of {} rays hit)",
-            self.lab.body().mesh.triangles.len(),
+            primary.body().mesh.triangles.len(),
             per_ray * 1e6,
             hits,
             rays.len()
@@ -308,7 +359,7 @@ impl eframe::App for LabApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         if self.bench.is_none() {
-            eframe::set_value(storage, SETTINGS_KEY, &self.lab.settings);
+            eframe::set_value(storage, SETTINGS_KEY, self.lab.settings());
         }
     }
 }

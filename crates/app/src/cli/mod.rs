@@ -1,0 +1,11 @@
+//! The command-line entry points: `props` (mass properties of a mesh and the report as a table or
+//! JSON), `simulate` (headless simulation as CSV in the [`crate::timeseries`] schema) and
+//! `export` (engine and robot formats), with their exit codes ([`error`]).
+
+pub mod error;
+pub mod export;
+pub mod props;
+pub mod report;
+pub mod simulate;
+
+pub use error::CliError;

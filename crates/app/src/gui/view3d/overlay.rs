@@ -1,0 +1,455 @@
+//! What the 3D view draws over the shaded mesh, as world-space segments, markers and labels:
+//! wireframe, bounding box, centre of mass, principal axes, the equivalent box or ellipsoid, the
+//! ω and L arrows, the poke's ΔL and the string with its force. Plain f64 geometry (tested
+//! without a GPU); `view3d` projects it with the camera and paints it with egui.
+
+use std::time::Instant;
+
+use egui::{Align2, Color32};
+use nalgebra::{Point3, Vector3};
+
+use crate::lab::placement::Placement;
+use crate::lab::settings::{Equivalent, InertiaSource, ViewSettings};
+use crate::lab::{Lab, Specimen};
+
+/// Above this many polygon edges the wireframe is skipped: egui would spend more time on it than
+/// the whole frame budget.
+pub const WIREFRAME_MAX_EDGES: usize = 60_000;
+
+/// A straight line in world space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Segment {
+    /// Start.
+    pub a: Point3<f64>,
+    /// End.
+    pub b: Point3<f64>,
+    /// Colour.
+    pub color: Color32,
+    /// Width in points.
+    pub width: f32,
+    /// Draw an arrow head at `b`.
+    pub arrow: bool,
+}
+
+/// Text at a world point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    /// Anchor.
+    pub at: Point3<f64>,
+    /// Text.
+    pub text: String,
+    /// Colour.
+    pub color: Color32,
+    /// Which corner of the text sits at the anchor.
+    pub align: Align2,
+}
+
+/// Everything to draw.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Overlay {
+    /// Lines and arrows.
+    pub segments: Vec<Segment>,
+    /// Dots (world point, colour).
+    pub markers: Vec<(Point3<f64>, Color32)>,
+    /// Labels.
+    pub labels: Vec<Label>,
+}
+
+/// Axis colours 1, 2, 3 (moments ascending).
+pub const AXIS_COLORS: [Color32; 3] = [
+    Color32::from_rgb(235, 80, 80),
+    Color32::from_rgb(90, 200, 90),
+    Color32::from_rgb(90, 140, 255),
+];
+const OMEGA_COLOR: Color32 = Color32::from_rgb(255, 160, 40);
+const L_COLOR: Color32 = Color32::from_rgb(220, 90, 255);
+const STRING_COLOR: Color32 = Color32::from_rgb(250, 230, 120);
+const FORCE_COLOR: Color32 = Color32::from_rgb(255, 110, 110);
+const GUIDE_COLOR: Color32 = Color32::from_rgb(200, 200, 200);
+const EQUIVALENT_COLOR: Color32 = Color32::from_rgb(80, 220, 230);
+const EXACT_COM_COLOR: Color32 = Color32::from_rgb(120, 220, 255);
+
+impl Overlay {
+    fn line(&mut self, a: Point3<f64>, b: Point3<f64>, color: Color32, width: f32) {
+        self.segments.push(Segment {
+            a,
+            b,
+            color,
+            width,
+            arrow: false,
+        });
+    }
+
+    fn arrow(
+        &mut self,
+        from: Point3<f64>,
+        v: Vector3<f64>,
+        color: Color32,
+        label: &str,
+        align: Align2,
+    ) {
+        if !(v.iter().all(|x| x.is_finite()) && v.norm() > 0.0) {
+            return;
+        }
+        self.segments.push(Segment {
+            a: from,
+            b: from + v,
+            color,
+            width: 3.0,
+            arrow: true,
+        });
+        self.labels.push(Label {
+            at: from + v,
+            text: label.to_owned(),
+            color,
+            align,
+        });
+    }
+
+    /// The overlay for the lab's current state: every layer of [`LAYERS`] in order, over the
+    /// primary specimen.
+    pub fn build(lab: &Lab, now: Instant) -> Self {
+        let specimen = lab.primary();
+        let body = specimen.sim().body();
+        let ctx = Context {
+            lab,
+            view: &lab.settings().view,
+            specimen,
+            placement: specimen.placement(),
+            com: body.position(),
+            radius: specimen.bounding_sphere().1,
+            now,
+        };
+        let mut o = Overlay::default();
+        for layer in LAYERS {
+            layer(&mut o, &ctx);
+        }
+        o
+    }
+}
+
+/// What every layer reads.
+struct Context<'a> {
+    lab: &'a Lab,
+    view: &'a ViewSettings,
+    specimen: &'a Specimen,
+    /// The one mesh → world transform (the renderer draws with the same).
+    placement: Placement,
+    /// The body's centre of mass (world).
+    com: Point3<f64>,
+    /// Bounding-sphere radius of the scaled body: the length scale of guides and arrows.
+    radius: f64,
+    now: Instant,
+}
+
+impl Context<'_> {
+    /// Arrow length for a vector of size `reference` (the preset spin's ω or L), so arrows keep
+    /// their size across bodies and units; longer vectors grow up to 2.5×.
+    fn scaled(&self, v: Vector3<f64>, reference: f64) -> Vector3<f64> {
+        let len = self.arrow_len() * (v.norm() / reference).min(2.5);
+        v.try_normalize(0.0).map(|u| u * len).unwrap_or_default()
+    }
+    fn arrow_len(&self) -> f64 {
+        1.3 * self.radius
+    }
+    /// The preset spin rate, the ω arrow's reference.
+    fn rate(&self) -> f64 {
+        self.lab.settings().body.spin_rate.abs().max(1e-9)
+    }
+    /// The angular momentum of the preset spin about the intermediate axis, L's reference.
+    fn l_reference(&self) -> f64 {
+        self.specimen.sim().body().moments()[1] * self.rate()
+    }
+}
+
+/// A layer adds its segments, markers and labels.
+type Layer = fn(&mut Overlay, &Context<'_>);
+
+/// The layers, bottom first.
+const LAYERS: [Layer; 9] = [
+    wireframe,
+    bounding_box,
+    principal_axes,
+    equivalent,
+    center_of_mass,
+    omega_arrow,
+    l_arrow,
+    poke,
+    string,
+];
+
+fn wireframe(o: &mut Overlay, c: &Context<'_>) {
+    let mesh = &c.specimen.body().mesh;
+    if !c.view.wireframe || mesh.edges.len() > WIREFRAME_MAX_EDGES {
+        return;
+    }
+    let color = Color32::from_rgba_unmultiplied(20, 20, 20, 200);
+    for [a, b] in &mesh.edges {
+        o.line(
+            c.placement.to_world(&mesh.positions[*a as usize]),
+            c.placement.to_world(&mesh.positions[*b as usize]),
+            color,
+            1.0,
+        );
+    }
+}
+
+fn bounding_box(o: &mut Overlay, c: &Context<'_>) {
+    if !c.view.bounding_box {
+        return;
+    }
+    let (lo, hi) = c.specimen.body().analysis.diagnostics.bounding_box;
+    let corner = |i: usize| {
+        c.placement.to_world(&Point3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        ))
+    };
+    for (a, b) in cube_edges() {
+        o.line(corner(a), corner(b), GUIDE_COLOR, 1.5);
+    }
+    o.labels.push(Label {
+        at: corner(7),
+        text: "bounding box".to_owned(),
+        color: GUIDE_COLOR,
+        align: Align2::LEFT_BOTTOM,
+    });
+}
+
+fn principal_axes(o: &mut Overlay, c: &Context<'_>) {
+    if !c.view.principal_axes {
+        return;
+    }
+    let principal = c.specimen.sim().body().orientation();
+    for (i, color) in AXIS_COLORS.iter().enumerate() {
+        let axis = principal * Vector3::ith(i, 0.8 * c.radius);
+        o.line(c.com - axis, c.com + axis, *color, 2.0);
+        o.labels.push(Label {
+            at: c.com + axis * 1.05,
+            text: format!("{}", i + 1),
+            color: *color,
+            align: Align2::LEFT_BOTTOM,
+        });
+    }
+}
+
+/// The uniform box or ellipsoid with the same mass and principal moments.
+fn equivalent(o: &mut Overlay, c: &Context<'_>) {
+    if c.view.equivalent == Equivalent::None {
+        return;
+    }
+    let body = c.specimen.sim().body();
+    let (m, i) = (body.mass(), body.moments());
+    // Half-extents of the uniform box and semi-axes of the uniform ellipsoid with the same mass
+    // and principal moments: I₁ = m(b² + c²)/3 for a box of half-extents a, b, c, I₁ = m(b² +
+    // c²)/5 for an ellipsoid.
+    let k = if c.view.equivalent == Equivalent::Box {
+        1.5
+    } else {
+        2.5
+    };
+    let half = Vector3::from_fn(|a, _| {
+        let (j, l) = ((a + 1) % 3, (a + 2) % 3);
+        (k * (i[j] + i[l] - i[a]) / m).max(0.0).sqrt()
+    });
+    let principal = body.orientation();
+    let to_world = |p: Vector3<f64>| c.com + principal * p;
+    if c.view.equivalent == Equivalent::Box {
+        let corner = |k: usize| {
+            Vector3::from_fn(|a, _| if k >> a & 1 == 0 { -half[a] } else { half[a] })
+        };
+        for (a, b) in cube_edges() {
+            o.line(
+                to_world(corner(a)),
+                to_world(corner(b)),
+                EQUIVALENT_COLOR,
+                1.5,
+            );
+        }
+        return;
+    }
+    let n = 48;
+    for plane in 0..3 {
+        let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
+        let point = |s: usize| {
+            let t = std::f64::consts::TAU * s as f64 / n as f64;
+            let mut p = Vector3::zeros();
+            p[u] = half[u] * t.cos();
+            p[v] = half[v] * t.sin();
+            to_world(p)
+        };
+        for s in 0..n {
+            o.line(point(s), point(s + 1), EQUIVALENT_COLOR, 1.5);
+        }
+    }
+    o.labels.push(Label {
+        at: to_world(Vector3::new(half[0], 0.0, 0.0)),
+        text: "equivalent ellipsoid".to_owned(),
+        color: EQUIVALENT_COLOR,
+        align: Align2::LEFT_BOTTOM,
+    });
+}
+
+/// The centre of mass in use, and the exact one where an approximation moves it.
+fn center_of_mass(o: &mut Overlay, c: &Context<'_>) {
+    if !c.view.center_of_mass {
+        return;
+    }
+    o.markers.push((c.com, Color32::WHITE));
+    let exact = c.specimen.properties(InertiaSource::Exact);
+    let used = c.specimen.used_properties();
+    if (exact.center_of_mass - used.center_of_mass).norm() > 1e-9 * c.radius {
+        let mesh_point = Point3::from(exact.center_of_mass.coords / c.placement.scale);
+        let at = c.placement.to_world(&mesh_point);
+        o.markers.push((at, EXACT_COM_COLOR));
+        o.labels.push(Label {
+            at,
+            text: "exact CoM".to_owned(),
+            color: EXACT_COM_COLOR,
+            align: Align2::LEFT_BOTTOM,
+        });
+    }
+}
+
+fn omega_arrow(o: &mut Overlay, c: &Context<'_>) {
+    if c.view.omega_arrow {
+        let w = c.specimen.sim().body().omega_world();
+        o.arrow(c.com, c.scaled(w, c.rate()), OMEGA_COLOR, "ω", Align2::LEFT_TOP);
+    }
+}
+
+fn l_arrow(o: &mut Overlay, c: &Context<'_>) {
+    if !c.view.l_arrow {
+        return;
+    }
+    // Without torque about the centre of mass (gravity acts at it) L is conserved: say so where
+    // the user sees the arrow stand still.
+    let torque_free = c.lab.settings().physics.angular_damping == 0.0
+        && c.specimen.string_view().is_none();
+    let label = if torque_free {
+        "L (fixed: no torque)"
+    } else {
+        "L"
+    };
+    let l = c.specimen.sim().body().angular_momentum();
+    o.arrow(
+        c.com,
+        c.scaled(l, c.l_reference()),
+        L_COLOR,
+        label,
+        Align2::RIGHT_BOTTOM,
+    );
+}
+
+/// The last poke's impulse and the ΔL it caused, while the flash lasts.
+fn poke(o: &mut Overlay, c: &Context<'_>) {
+    let Some(p) = c.specimen.poke_flash().filter(|p| p.until > c.now) else {
+        return;
+    };
+    let j_len = 0.6 * c.radius;
+    let dir = p.impulse.try_normalize(0.0).unwrap_or_default();
+    o.segments.push(Segment {
+        a: p.point - dir * j_len,
+        b: p.point,
+        color: FORCE_COLOR,
+        width: 3.0,
+        arrow: true,
+    });
+    o.labels.push(Label {
+        at: p.point - dir * j_len,
+        text: format!("J = {:.3e} N·s", p.impulse.norm()),
+        color: FORCE_COLOR,
+        align: Align2::LEFT_BOTTOM,
+    });
+    o.arrow(
+        c.com,
+        c.scaled(p.delta_l, c.l_reference()),
+        Color32::from_rgb(255, 255, 255),
+        &format!("ΔL = r × J ({:.3e})", p.delta_l.norm()),
+        Align2::LEFT_BOTTOM,
+    );
+}
+
+/// The string and the force it applies.
+fn string(o: &mut Overlay, c: &Context<'_>) {
+    let Some(s) = c.specimen.string_view() else {
+        return;
+    };
+    o.line(s.attachment, s.target, STRING_COLOR, 2.0);
+    o.markers.push((s.target, STRING_COLOR));
+    let cap = c
+        .specimen
+        .string_max_force(c.lab.settings())
+        .max(f64::MIN_POSITIVE);
+    // Square-root scale: a weak pull stays visible next to one at the cap.
+    let f = s
+        .force
+        .try_normalize(0.0)
+        .map(|u| u * c.arrow_len() * (s.force.norm() / cap).min(1.0).sqrt())
+        .unwrap_or_default();
+    o.arrow(
+        s.attachment,
+        f,
+        FORCE_COLOR,
+        &format!("|F| = {:.3} N", s.force.norm()),
+        Align2::LEFT_TOP,
+    );
+}
+
+/// The 12 edges of a cube whose corners are numbered by bits (x = 1, y = 2, z = 4).
+fn cube_edges() -> impl Iterator<Item = (usize, usize)> {
+    (0..8usize).flat_map(|c| {
+        [1usize, 2, 4]
+            .into_iter()
+            .filter(move |bit| c & bit == 0)
+            .map(move |bit| (c, c | bit))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lab::Command;
+    use crate::lab::settings::AppSettings;
+
+    #[test]
+    fn cube_has_twelve_unit_edges() {
+        let edges: Vec<_> = cube_edges().collect();
+        assert_eq!(edges.len(), 12);
+        assert!(edges.iter().all(|(a, b)| (a ^ b).count_ones() == 1));
+    }
+
+    #[test]
+    fn equivalent_box_of_a_box_is_the_box_and_everything_is_finite() {
+        let mut lab = Lab::new(AppSettings::default()).expect("lab");
+        lab.apply(Command::LoadSample("Book".to_owned()));
+        let mut settings = lab.settings().clone();
+        settings.view = ViewSettings {
+            wireframe: true,
+            bounding_box: true,
+            equivalent: Equivalent::Box,
+            ..ViewSettings::default()
+        };
+        lab.apply(Command::Settings(Box::new(settings)));
+        let o = Overlay::build(&lab, Instant::now());
+        let com = lab.primary().sim().body().position();
+        // The book is a 1 × 4 × 7 box: its equivalent box has half-diagonal √(0.25+4+12.25).
+        let box_edges = o
+            .segments
+            .iter()
+            .filter(|s| s.color == EQUIVALENT_COLOR)
+            .collect::<Vec<_>>();
+        assert_eq!(box_edges.len(), 12);
+        for s in box_edges {
+            assert!(((s.a - com).norm() - 16.5f64.sqrt()).abs() < 1e-9);
+        }
+        let all_finite = |p: &Point3<f64>| p.iter().all(|x| x.is_finite());
+        assert!(
+            o.segments
+                .iter()
+                .all(|s| all_finite(&s.a) && all_finite(&s.b))
+        );
+        assert!(o.labels.iter().any(|l| l.text.starts_with("L")));
+    }
+}

@@ -1,0 +1,665 @@
+//! The headless model of the app: a [`Lab`] of one or more simulated [`Specimen`]s and the user's
+//! settings they share, changed only by [`Command`]s that [`Lab::apply`] carries out in one place
+//! (as MuJoCo's `simulate` viewer does). Nothing here draws or imports a GUI crate: the GUI reads
+//! the lab and records commands, the tests drive it directly.
+//!
+//! Also here, because the GUI and the tests both need them without a window: the frame clock,
+//! the loader (off the UI thread), the render/picking mesh, picking, the orbit camera's maths and
+//! the one mesh → world transform ([`placement`]).
+
+pub mod camera;
+pub mod clock;
+pub mod geometry;
+pub mod history;
+pub mod loader;
+pub mod picking;
+pub mod placement;
+pub mod settings;
+pub mod specimen;
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use nalgebra::{Point3, Vector3};
+
+use clock::FrameClock;
+use loader::{LoadedBody, Loading};
+use settings::AppSettings;
+pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView};
+
+/// The specimen every lab has: the one the user loads, pokes and plots.
+pub const PRIMARY: SpecimenId = SpecimenId(0);
+
+/// An intent recorded by the UI (or a test), applied by [`Lab::apply`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// Pause or resume every specimen.
+    TogglePause,
+    /// One fixed step of every specimen (pauses first).
+    Step,
+    /// Every specimen back to the start state of the current body and preset.
+    Reset,
+    /// Spin about principal axis 0, 1 or 2 (moments ascending) with a small perturbation.
+    Preset(usize),
+    /// New settings, applied live to every specimen.
+    Settings(Box<AppSettings>),
+    /// Settings back to defaults.
+    ResetSettings,
+    /// Load a mesh file on the worker thread; it replaces every specimen's body.
+    LoadFile(PathBuf),
+    /// Load a built-in sample by label.
+    LoadSample(String),
+    /// Write a specimen's plot history as CSV.
+    ExportCsv {
+        /// Whose history.
+        specimen: SpecimenId,
+        /// Where to write.
+        path: PathBuf,
+    },
+    /// Poke: impulse of the set magnitude at a world point, along `direction` (the view ray).
+    Poke {
+        /// The specimen poked.
+        specimen: SpecimenId,
+        /// World point on the surface.
+        point: Point3<f64>,
+        /// Direction of the impulse (normalised here).
+        direction: Vector3<f64>,
+    },
+    /// Attach the string at a world point on the surface.
+    Grab {
+        /// The specimen held.
+        specimen: SpecimenId,
+        /// World point on the surface.
+        point: Point3<f64>,
+    },
+    /// Move the string's free end.
+    Drag {
+        /// The specimen held.
+        specimen: SpecimenId,
+        /// The new free end (world).
+        target: Point3<f64>,
+    },
+    /// Detach the string.
+    Release {
+        /// The specimen held.
+        specimen: SpecimenId,
+    },
+    /// Add a copy of the primary specimen in its current state (same body, motion and history).
+    AddCopy,
+    /// Remove a specimen other than the primary.
+    Remove(SpecimenId),
+    /// Show a line of information (outcomes the GUI learns itself, such as a cancelled dialog).
+    Inform(String),
+    /// Dismiss the message line.
+    DismissMessage,
+}
+
+/// A line for the user: an error (red) or information.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Message {
+    /// The text.
+    pub text: String,
+    /// Whether something went wrong.
+    pub error: bool,
+}
+
+/// The model of the whole app.
+#[derive(Debug)]
+pub struct Lab {
+    settings: AppSettings,
+    /// The primary first; never empty.
+    specimens: Vec<Specimen>,
+    next_id: u32,
+    preset_axis: usize,
+    clock: FrameClock,
+    loading: Option<Loading>,
+    message: Option<Message>,
+    /// Bumped whenever the body's mesh changes, so the 3D view re-uploads it.
+    generation: u64,
+    /// Called by worker threads when they have news (a repaint request in the app).
+    waker: Waker,
+}
+
+/// A callback for worker threads.
+#[derive(Clone)]
+struct Waker(Arc<dyn Fn() + Send + Sync>);
+
+impl std::fmt::Debug for Waker {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Waker")
+    }
+}
+
+impl Lab {
+    /// The lab on the default T-handle with `settings` (falls back to defaults if they cannot
+    /// build a simulation).
+    ///
+    /// # Errors
+    /// Only if the built-in T-handle cannot be analysed (a bug).
+    pub fn new(settings: AppSettings) -> Result<Self, String> {
+        let body = Arc::new(LoadedBody::t_handle()?);
+        let axis = 1;
+        let (settings, primary) = match Specimen::start(PRIMARY, body.clone(), &settings, axis) {
+            Ok(s) => (settings, s),
+            Err(_) => {
+                let defaults = AppSettings::default();
+                let s = Specimen::start(PRIMARY, body, &defaults, axis)?;
+                (defaults, s)
+            }
+        };
+        Ok(Self {
+            settings,
+            specimens: vec![primary],
+            next_id: 1,
+            preset_axis: axis,
+            clock: FrameClock::new(),
+            loading: None,
+            message: None,
+            generation: 0,
+            waker: Waker(Arc::new(|| {})),
+        })
+    }
+
+    /// Sets what worker threads call when they have news.
+    pub fn set_waker(&mut self, waker: impl Fn() + Send + Sync + 'static) {
+        self.waker = Waker(Arc::new(waker));
+    }
+
+    /// Applies every command in order.
+    pub fn apply_all(&mut self, commands: impl IntoIterator<Item = Command>) {
+        for c in commands {
+            self.apply(c);
+        }
+    }
+
+    /// Carries out one command; failures become the message line, the model stays usable.
+    pub fn apply(&mut self, command: Command) {
+        if let Err(e) = self.try_apply(command) {
+            self.message = Some(Message {
+                text: e,
+                error: true,
+            });
+        }
+    }
+
+    fn try_apply(&mut self, command: Command) -> Result<(), String> {
+        match command {
+            Command::TogglePause => {
+                let run = self.is_paused();
+                for s in &mut self.specimens {
+                    if run { s.resume() } else { s.pause() }
+                }
+                self.clock.stop();
+            }
+            Command::Step => {
+                self.clock.stop();
+                for s in &mut self.specimens {
+                    s.pause();
+                    s.step().map_err(stopped)?;
+                }
+            }
+            Command::Reset => self.restart(self.preset_axis)?,
+            Command::Preset(axis) => self.restart(axis.min(2))?,
+            Command::Settings(s) => self.set_settings(*s)?,
+            Command::ResetSettings => self.set_settings(AppSettings::default())?,
+            Command::LoadFile(path) => {
+                let waker = self.waker.clone();
+                self.loading = Some(Loading::start(path, move || (waker.0)()));
+            }
+            Command::LoadSample(label) => {
+                let body = LoadedBody::sample(&label)?;
+                self.install(body)?;
+            }
+            Command::ExportCsv { specimen, path } => {
+                let history = self.specimen(specimen)?.history();
+                let write = || -> std::io::Result<()> {
+                    let mut out = std::io::BufWriter::new(std::fs::File::create(&path)?);
+                    history.write_csv(&mut out)?;
+                    std::io::Write::flush(&mut out)
+                };
+                write().map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                let n = history.samples().len();
+                self.info(format!("wrote {n} samples to {}", path.display()));
+            }
+            Command::Poke {
+                specimen,
+                point,
+                direction,
+            } => {
+                let magnitude = self.specimen(specimen)?.poke_impulse(&self.settings);
+                self.specimen_mut(specimen)?
+                    .poke(point, direction, magnitude, Instant::now())?;
+            }
+            Command::Grab { specimen, point } => {
+                let settings = self.settings.clone();
+                self.specimen_mut(specimen)?.grab(point, &settings)?;
+            }
+            Command::Drag { specimen, target } => self.specimen_mut(specimen)?.drag(target)?,
+            Command::Release { specimen } => self.specimen_mut(specimen)?.release(),
+            Command::AddCopy => {
+                let id = SpecimenId(self.next_id);
+                self.next_id += 1;
+                let copy = self.primary().copy_as(id);
+                self.specimens.push(copy);
+            }
+            Command::Remove(id) => {
+                if id == PRIMARY {
+                    return Err("the primary body cannot be removed".to_owned());
+                }
+                self.specimen(id)?;
+                self.specimens.retain(|s| s.id() != id);
+            }
+            Command::Inform(text) => self.info(text),
+            Command::DismissMessage => self.message = None,
+        }
+        Ok(())
+    }
+
+    /// Every specimen starts again on the current body, spinning about `axis`; the paused flag
+    /// is kept.
+    fn restart(&mut self, axis: usize) -> Result<(), String> {
+        let paused = self.is_paused();
+        let fresh = self
+            .specimens
+            .iter()
+            .map(|s| Specimen::start(s.id(), s.body_arc().clone(), &self.settings, axis))
+            .collect::<Result<Vec<_>, _>>()?;
+        self.specimens = fresh;
+        self.preset_axis = axis;
+        if paused {
+            self.specimens.iter_mut().for_each(Specimen::pause);
+        }
+        Ok(())
+    }
+
+    /// New settings for every specimen; if one rejects them, the ones already changed are put
+    /// back so that all keep the same settings.
+    fn set_settings(&mut self, new: AppSettings) -> Result<(), String> {
+        let old = self.settings.clone();
+        for i in 0..self.specimens.len() {
+            if let Err(e) = self.specimens[i].set_settings(&old, &new) {
+                for s in &mut self.specimens[..i] {
+                    // These accepted `old` before, so going back cannot fail.
+                    let _ = s.set_settings(&new, &old);
+                }
+                return Err(e);
+            }
+        }
+        self.settings = new;
+        Ok(())
+    }
+
+    /// Makes `body` every specimen's body, keeping the old one if the new one cannot be
+    /// simulated.
+    fn install(&mut self, body: LoadedBody) -> Result<(), String> {
+        let body = Arc::new(body);
+        let paused = self.is_paused();
+        let fresh = self
+            .specimens
+            .iter()
+            .map(|s| Specimen::start(s.id(), body.clone(), &self.settings, self.preset_axis))
+            .collect::<Result<Vec<_>, _>>()?;
+        self.specimens = fresh;
+        if paused {
+            self.specimens.iter_mut().for_each(Specimen::pause);
+        }
+        self.generation += 1;
+        self.info(format!(
+            "loaded {} ({} triangles)",
+            body.name,
+            body.mesh.triangles.len()
+        ));
+        Ok(())
+    }
+
+    fn info(&mut self, text: String) {
+        self.message = Some(Message { text, error: false });
+    }
+
+    /// Runs one frame: installs a finished load, then advances every specimen by the scaled
+    /// wall-clock time since the last frame (every step recorded in its history).
+    pub fn frame(&mut self, now: Instant) {
+        if let Some(result) = self.loading.as_mut().and_then(Loading::poll) {
+            self.loading = None;
+            self.finish_load(result);
+        }
+        for s in &mut self.specimens {
+            s.expire_flash(now);
+        }
+        if self.is_paused() {
+            self.clock.stop();
+            return;
+        }
+        let frame_dt = self.clock.tick(now, self.settings.physics.time_scale);
+        self.advance(frame_dt);
+    }
+
+    /// Advances every specimen by `frame_dt` simulated seconds (at most rbcore's catch-up cap of
+    /// steps each; the rest is counted in [`Specimen::dropped`]). A diverging specimen pauses
+    /// and says so on the message line.
+    pub fn advance(&mut self, frame_dt: f64) {
+        let mut failure = None;
+        for s in &mut self.specimens {
+            if s.sim().is_paused() {
+                continue;
+            }
+            if let Err(e) = s.advance(frame_dt) {
+                failure = Some(stopped(e));
+            }
+        }
+        if let Some(text) = failure {
+            self.specimens.iter_mut().for_each(Specimen::pause);
+            self.message = Some(Message { text, error: true });
+        }
+    }
+
+    /// Runs `seconds` of simulated time at once (every step recorded), in pieces of the
+    /// catch-up cap, e.g. to fill the plots before a benchmark.
+    pub fn advance_for(&mut self, seconds: f64) {
+        let s = self.primary().sim().settings();
+        let chunk = f64::from(s.max_catch_up_steps) * s.dt;
+        let mut left = seconds;
+        while left > 0.0 && !self.is_paused() {
+            self.advance(left.min(chunk));
+            left -= chunk;
+        }
+    }
+
+    /// Blocks until a running load has finished (benchmarks and tests), then installs it.
+    pub fn wait_for_load(&mut self) {
+        while let Some(loading) = &mut self.loading {
+            if let Some(result) = loading.poll() {
+                self.loading = None;
+                self.finish_load(result);
+            } else {
+                std::thread::sleep(Duration::from_millis(2));
+            }
+        }
+    }
+
+    fn finish_load(&mut self, result: Result<LoadedBody, String>) {
+        let outcome = result.and_then(|body| self.install(body));
+        if let Err(e) = outcome {
+            self.message = Some(Message {
+                text: format!("{e} (the current body is kept)"),
+                error: true,
+            });
+        }
+    }
+
+    /// The user's settings (change them with [`Command::Settings`]).
+    pub fn settings(&self) -> &AppSettings {
+        &self.settings
+    }
+    /// The specimens, the primary first.
+    pub fn specimens(&self) -> &[Specimen] {
+        &self.specimens
+    }
+    /// The primary specimen.
+    pub fn primary(&self) -> &Specimen {
+        &self.specimens[0]
+    }
+    /// A specimen by id.
+    ///
+    /// # Errors
+    /// No specimen has that id (it was removed).
+    pub fn specimen(&self, id: SpecimenId) -> Result<&Specimen, String> {
+        self.specimens
+            .iter()
+            .find(|s| s.id() == id)
+            .ok_or_else(|| format!("no body number {}", id.0))
+    }
+    fn specimen_mut(&mut self, id: SpecimenId) -> Result<&mut Specimen, String> {
+        self.specimens
+            .iter_mut()
+            .find(|s| s.id() == id)
+            .ok_or_else(|| format!("no body number {}", id.0))
+    }
+    /// Whether the simulation is paused (all specimens run or pause together).
+    pub fn is_paused(&self) -> bool {
+        self.primary().sim().is_paused()
+    }
+    /// Mesh generation counter (changes when a new mesh is installed).
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+    /// The message line.
+    pub fn message(&self) -> Option<&Message> {
+        self.message.as_ref()
+    }
+    /// The running load, if any.
+    pub fn loading(&self) -> Option<&Loading> {
+        self.loading.as_ref()
+    }
+    /// Whether anything moves without input (the app repaints continuously only then).
+    pub fn is_animating(&self) -> bool {
+        !self.is_paused()
+            || self.loading.is_some()
+            || self.specimens.iter().any(|s| s.poke_flash().is_some())
+    }
+}
+
+/// The message for a diverged simulation.
+fn stopped(e: rbcore::SimError) -> String {
+    format!("simulation stopped: {e}. Press Reset.")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use settings::{InertiaSource, MassSpec};
+
+    fn lab() -> Lab {
+        Lab::new(AppSettings::default()).expect("lab")
+    }
+
+    fn settings_with(lab: &Lab, change: impl FnOnce(&mut AppSettings)) -> Command {
+        let mut s = lab.settings().clone();
+        change(&mut s);
+        Command::Settings(Box::new(s))
+    }
+
+    #[test]
+    fn switching_the_source_keeps_the_mesh_in_place_and_momenta() {
+        let mut lab = lab();
+        lab.advance(0.5);
+        let corner = lab.primary().body().mesh.positions[3];
+        let before = lab.primary().placement().to_world(&corner);
+        let b = lab.primary().sim().body();
+        let (p, l) = (b.momentum(), b.angular_momentum());
+        lab.apply(settings_with(&lab, |s| {
+            s.body.source = InertiaSource::BoundingBox;
+        }));
+        assert!(lab.message().is_none(), "{:?}", lab.message());
+        let primary = lab.primary();
+        assert!((primary.placement().to_world(&corner) - before).norm() < 1e-12);
+        assert_eq!(primary.sim().body().momentum(), p);
+        assert!((primary.sim().body().angular_momentum() - l).norm() < 1e-15);
+        // The body now turns about the box centre.
+        let bbox = primary.properties(InertiaSource::BoundingBox).center_of_mass;
+        let bbox_mesh = Point3::from(bbox.coords / primary.placement().scale);
+        let at = primary.placement().to_world(&bbox_mesh);
+        assert!((at - primary.sim().body().position()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn placement_matches_the_body_frame() {
+        let mut lab = lab();
+        lab.apply(settings_with(&lab, |s| s.body.scale = 3.0));
+        lab.advance(0.7);
+        let sp = lab.primary();
+        let p = sp.placement();
+        let c = sp.used_properties().center_of_mass;
+        for &x in sp.body().mesh.positions.iter().take(20) {
+            let via_body = sp
+                .sim()
+                .body()
+                .point_to_world(&Point3::from(x.coords * 3.0 - c.coords));
+            assert!((p.to_world(&x) - via_body).norm() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn rejected_settings_change_nothing_and_say_why() {
+        let mut lab = lab();
+        let before = lab.settings().clone();
+        lab.apply(settings_with(&lab, |s| s.physics.dt = -1.0));
+        assert!(lab.message().is_some_and(|m| m.error));
+        assert_eq!(lab.settings(), &before);
+        lab.apply(settings_with(&lab, |s| {
+            s.body.mass = MassSpec::Mass(f64::NAN);
+        }));
+        assert_eq!(lab.settings(), &before);
+        lab.advance(0.1);
+        assert!(
+            lab.primary()
+                .history()
+                .samples()
+                .iter()
+                .all(|s| s.values().iter().all(|v| v.is_finite()))
+        );
+    }
+
+    #[test]
+    fn every_step_is_recorded_and_time_beyond_the_cap_is_reported() {
+        let mut lab = lab();
+        let dt = lab.primary().sim().settings().dt;
+        let cap = lab.primary().sim().settings().max_catch_up_steps;
+        let n0 = lab.primary().history().samples().len();
+        lab.advance(5.0 * dt);
+        assert_eq!(lab.primary().history().samples().len(), n0 + 5);
+        assert_eq!(lab.primary().dropped(), 0.0);
+        // A frame 40 steps long runs the cap and drops the rest, and says how much.
+        lab.advance(40.0 * dt);
+        let sp = lab.primary();
+        assert_eq!(sp.history().samples().len(), n0 + 5 + cap as usize);
+        let expected = (40.0 - f64::from(cap)) * dt;
+        assert!((sp.dropped() - expected).abs() < 1e-9 * expected);
+        assert!((sp.sim().time() - f64::from(5 + cap) * dt).abs() < 1e-12);
+    }
+
+    #[test]
+    fn poke_string_and_csv_export() {
+        let mut lab = lab();
+        lab.apply(Command::TogglePause);
+        let l0 = lab.primary().sim().body().angular_momentum();
+        let com = lab.primary().sim().body().position();
+        let point = com + Vector3::new(0.03, 0.0, 0.0);
+        lab.apply(Command::Poke {
+            specimen: PRIMARY,
+            point,
+            direction: Vector3::new(0.0, 0.0, -2.0),
+        });
+        let j = Vector3::new(0.0, 0.0, -lab.primary().poke_impulse(lab.settings()));
+        let dl = lab.primary().sim().body().angular_momentum() - l0;
+        assert!((dl - (point - com).cross(&j)).norm() < 1e-15);
+        assert!(lab.primary().poke_flash().is_some());
+        lab.apply(Command::Poke {
+            specimen: PRIMARY,
+            point,
+            direction: Vector3::zeros(),
+        });
+        assert!(lab.message().is_some_and(|m| m.error));
+
+        lab.apply(Command::TogglePause);
+        lab.apply(Command::Grab {
+            specimen: PRIMARY,
+            point,
+        });
+        let target = point + Vector3::new(0.0, 0.05, 0.0);
+        lab.apply(Command::Drag {
+            specimen: PRIMARY,
+            target,
+        });
+        let s = lab.primary().string_view().expect("attached");
+        assert_eq!(s.target, target);
+        let cap = lab.primary().string_max_force(lab.settings());
+        assert!(s.force.norm() <= cap * (1.0 + 1e-12));
+        lab.advance(0.2);
+        lab.apply(Command::Release { specimen: PRIMARY });
+        assert!(lab.primary().string_view().is_none());
+
+        let path = std::env::temp_dir().join(format!("inertia-lab-{}.csv", std::process::id()));
+        lab.apply(Command::ExportCsv {
+            specimen: PRIMARY,
+            path: path.clone(),
+        });
+        let text = std::fs::read_to_string(&path).expect("written");
+        assert_eq!(
+            text.lines().count(),
+            lab.primary().history().samples().len() + 1
+        );
+        std::fs::remove_file(&path).ok();
+        lab.apply(Command::ExportCsv {
+            specimen: PRIMARY,
+            path: PathBuf::from("/no/such/dir/x.csv"),
+        });
+        assert!(
+            lab.message()
+                .is_some_and(|m| m.error && m.text.contains("/no/such/dir"))
+        );
+    }
+
+    /// Copies run from the same state bit for bit; a poke acts only on the specimen it names.
+    #[test]
+    fn copies_are_independent_specimens() {
+        let mut lab = lab();
+        lab.advance(0.3);
+        lab.apply(Command::AddCopy);
+        assert_eq!(lab.specimens().len(), 2);
+        let copy = lab.specimens()[1].id();
+        lab.advance(1.0);
+        let (a, b) = (&lab.specimens()[0], &lab.specimens()[1]);
+        assert_eq!(a.sim().body().orientation(), b.sim().body().orientation());
+        assert_eq!(a.history().samples(), b.history().samples());
+
+        let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
+        lab.apply(Command::Poke {
+            specimen: copy,
+            point,
+            direction: Vector3::new(0.0, 0.0, 1.0),
+        });
+        lab.advance(0.5);
+        let (a, b) = (&lab.specimens()[0], &lab.specimens()[1]);
+        assert_ne!(
+            a.sim().body().angular_momentum(),
+            b.sim().body().angular_momentum()
+        );
+        assert!(a.poke_flash().is_none() && b.poke_flash().is_some());
+
+        // Settings reach every specimen; removing the copy leaves the primary.
+        lab.apply(settings_with(&lab, |s| s.body.scale = 2.0));
+        assert!(lab.specimens().iter().all(|s| s.placement().scale == 2.0));
+        lab.apply(Command::Remove(PRIMARY));
+        assert!(lab.message().is_some_and(|m| m.error));
+        lab.apply(Command::Remove(copy));
+        assert_eq!(lab.specimens().len(), 1);
+        lab.apply(Command::Release { specimen: copy });
+        assert!(lab.message().is_some_and(|m| m.text.contains("no body")));
+    }
+
+    /// Reset and the presets restart from the same state: the same spin about the chosen axis,
+    /// with the documented perturbation, at the settings' rate.
+    #[test]
+    fn reset_and_presets_start_the_documented_spin() {
+        let mut lab = lab();
+        let rate = lab.settings().body.spin_rate;
+        for axis in 0..3 {
+            lab.apply(Command::Preset(axis));
+            lab.advance(0.4);
+            lab.apply(Command::Reset);
+            let sp = lab.primary();
+            assert_eq!(sp.sim().time(), 0.0);
+            assert_eq!(sp.history().samples().len(), 1);
+            let w = sp.sim().body().omega_principal();
+            for k in 0..3 {
+                let expected = if k == axis { rate } else { 0.02 * rate };
+                assert!((w[k] - expected).abs() < 1e-12 * rate, "{axis} {w}");
+            }
+        }
+        lab.apply(settings_with(&lab, |s| s.body.spin_rate = 3.0));
+        lab.apply(Command::ResetSettings);
+        assert_eq!(lab.settings(), &AppSettings::default());
+    }
+}

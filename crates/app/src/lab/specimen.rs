@@ -1,0 +1,435 @@
+//! One simulated body: a loaded mesh with its mass properties at the current size and mass, the
+//! `rbcore` simulation, the plotted history, and what the user is doing to it (poke, string).
+//! The [`super::Lab`] holds one or more of them; each changes only through the lab's commands.
+
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use massprops::{Comparison, MassProperties};
+use nalgebra::{Point3, UnitQuaternion, Vector3};
+use rbcore::{Advance, Body, SimError, Simulation, SoftString};
+
+use super::history::History;
+use super::loader::LoadedBody;
+use super::picking::{Hit, Ray};
+use super::placement::Placement;
+use super::settings::{AppSettings, InertiaSource, MassSpec};
+
+/// How long the ΔL arrow of a poke stays on screen.
+const POKE_FLASH: Duration = Duration::from_millis(1500);
+
+/// Relative size of the perturbation the spin presets add on the other two axes: enough for the
+/// T-handle to flip within about three seconds at the default 8 rad/s.
+const PERTURBATION: f64 = 0.02;
+
+/// Most samples kept (about 58 MB): 600 s at the default step; a tiny step shortens the history
+/// rather than exhausting memory.
+const MAX_HISTORY: usize = 400_000;
+
+/// A specimen's name in commands; stays the same while the specimen exists.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SpecimenId(pub u32);
+
+/// The last poke, for the ΔL arrow.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PokeFlash {
+    /// Where the impulse was applied (world).
+    pub point: Point3<f64>,
+    /// The impulse J (N·s).
+    pub impulse: Vector3<f64>,
+    /// ΔL = r × J (world).
+    pub delta_l: Vector3<f64>,
+    /// When to stop drawing it.
+    pub until: Instant,
+}
+
+/// The string as drawn: both ends and the force it currently applies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StringView {
+    /// Attachment point on the body (world).
+    pub attachment: Point3<f64>,
+    /// The pointer end (world).
+    pub target: Point3<f64>,
+    /// Force on the body (N), the step's impulse over `dt`.
+    pub force: Vector3<f64>,
+}
+
+/// One simulated body.
+#[derive(Debug, Clone)]
+pub struct Specimen {
+    id: SpecimenId,
+    body: Arc<LoadedBody>,
+    /// Exact, bounding-box and point-mass properties at the current scale and mass.
+    props: [MassProperties; 3],
+    source: InertiaSource,
+    scale: f64,
+    sim: Simulation,
+    history: History,
+    poke: Option<PokeFlash>,
+    /// Simulated time the frames asked for but the catch-up cap did not run, since the start.
+    dropped: f64,
+}
+
+impl Specimen {
+    /// `body` at the size and mass of `settings`, spinning about principal axis `axis` (moments
+    /// ascending) with a small perturbation on the other two, mesh axes on the world axes.
+    ///
+    /// # Errors
+    /// The settings give no valid body or simulation (the message says which setting).
+    pub fn start(
+        id: SpecimenId,
+        body: Arc<LoadedBody>,
+        settings: &AppSettings,
+        axis: usize,
+    ) -> Result<Self, String> {
+        let props = scaled_properties(&body, settings)?;
+        let used = &props[source_index(settings.body.source)];
+        let mut b =
+            Body::from_principal(used.mass, used.principal.moments, used.principal.rotation)
+                .map_err(|e| format!("{}: {e}", body.name))?;
+        // Orientation maps principal → world: this puts the mesh axes on the world axes.
+        b.set_orientation(UnitQuaternion::from_rotation_matrix(
+            &used.principal.rotation,
+        ))
+        .map_err(|e| e.to_string())?;
+        let rate = settings.body.spin_rate;
+        let mut omega = Vector3::repeat(PERTURBATION * rate);
+        omega[axis.min(2)] = rate;
+        b.set_omega_principal(omega)
+            .map_err(|e| format!("spin rate: {e}"))?;
+        let sim = Simulation::new(b, settings.physics.to_sim()).map_err(|e| e.to_string())?;
+        let mut history = History::new(capacity(settings));
+        history.push(&sim.diagnostics());
+        Ok(Self {
+            id,
+            body,
+            props,
+            source: settings.body.source,
+            scale: settings.body.scale,
+            sim,
+            history,
+            poke: None,
+            dropped: 0.0,
+        })
+    }
+
+    /// The same body, state and history under another name (a copy to compare against).
+    pub fn copy_as(&self, id: SpecimenId) -> Self {
+        Self { id, ..self.clone() }
+    }
+
+    /// Applies new settings: simulation settings, history bound, and (if size, mass or source
+    /// changed) new mass properties with p and L kept, as an instantaneous change of mass
+    /// distribution conserves them. The mesh stays where it is in the world.
+    ///
+    /// # Errors
+    /// The settings are invalid; nothing has changed then.
+    pub fn set_settings(&mut self, old: &AppSettings, new: &AppSettings) -> Result<(), String> {
+        let props = scaled_properties(&self.body, new)?;
+        let used = &props[source_index(new.body.source)];
+        // Checked before anything changes, so a rejected value leaves the specimen as it was.
+        Body::from_principal(used.mass, used.principal.moments, used.principal.rotation)
+            .map_err(|e| format!("mass properties rejected: {e}"))?;
+        self.sim
+            .set_settings(new.physics.to_sim())
+            .map_err(|e| format!("setting rejected: {e}"))?;
+        // The body frame's origin is the used centre of mass. A new source moves it within the
+        // mesh by `shift`: the pose moves with it so the mesh stays where it is on screen (a new
+        // size or mass keeps the centre of mass in place and the body grows about it).
+        let shift = used.center_of_mass - props[source_index(self.source)].center_of_mass;
+        if old.body != new.body {
+            let b = self.sim.body_mut();
+            let position = b.position() + b.body_orientation() * shift;
+            b.set_mass_properties(used.mass, used.principal.moments, used.principal.rotation)
+                .map_err(|e| format!("mass properties rejected: {e}"))?;
+            b.set_position(position).map_err(|e| e.to_string())?;
+            self.history.mark_disturbance();
+        }
+        if new.physics != old.physics {
+            self.history.mark_disturbance();
+        }
+        if let Some(string) = self.sim.string().copied() {
+            let i = &new.interaction;
+            let moved = SoftString::new(
+                string.target(),
+                string.attachment() - shift,
+                i.string_frequency,
+                i.string_damping,
+                used.mass * i.string_max_accel,
+            )
+            .map_err(|e| format!("string: {e}"))?;
+            self.sim.set_string(Some(moved));
+        }
+        self.props = props;
+        self.source = new.body.source;
+        self.scale = new.body.scale;
+        self.history.set_capacity(capacity(new));
+        Ok(())
+    }
+
+    /// Advances by `frame_dt` simulated seconds through the simulation's accumulator, recording
+    /// every step in the history; time beyond rbcore's catch-up cap is counted in
+    /// [`Specimen::dropped`].
+    ///
+    /// # Errors
+    /// The simulation diverged; it is paused and the steps before stay recorded.
+    pub fn advance(&mut self, frame_dt: f64) -> Result<Advance, SimError> {
+        let history = &mut self.history;
+        let result = self
+            .sim
+            .advance_with(frame_dt, |sim| {
+                history.push(&sim.diagnostics());
+            })
+            .inspect(|a| self.dropped += a.dropped);
+        if result.is_err() {
+            self.sim.pause();
+        }
+        result
+    }
+
+    /// One fixed step (recorded).
+    ///
+    /// # Errors
+    /// The simulation diverged; it is paused.
+    pub fn step(&mut self) -> Result<(), SimError> {
+        let result = self.sim.step();
+        match &result {
+            Ok(()) => {
+                self.history.push(&self.sim.diagnostics());
+            }
+            Err(_) => self.sim.pause(),
+        }
+        result
+    }
+
+    /// Applies the impulse `magnitude · direction/|direction|` at the world point `point`.
+    ///
+    /// # Errors
+    /// The direction has no length, or the body rejects the impulse.
+    pub fn poke(
+        &mut self,
+        point: Point3<f64>,
+        direction: Vector3<f64>,
+        magnitude: f64,
+        now: Instant,
+    ) -> Result<(), String> {
+        let n = direction.norm();
+        if !(n.is_finite() && n > 0.0) {
+            return Err("poke: the view ray has no direction".to_owned());
+        }
+        let j = direction * (magnitude / n);
+        let r = point - self.sim.body().position();
+        self.sim
+            .poke(&point, &j)
+            .map_err(|e| format!("poke: {e}"))?;
+        self.poke = Some(PokeFlash {
+            point,
+            impulse: j,
+            delta_l: r.cross(&j),
+            until: now + POKE_FLASH,
+        });
+        self.history.mark_disturbance();
+        Ok(())
+    }
+
+    /// Attaches the string at the world point `point` (on the surface).
+    ///
+    /// # Errors
+    /// The string's settings are invalid.
+    pub fn grab(&mut self, point: Point3<f64>, settings: &AppSettings) -> Result<(), String> {
+        let i = &settings.interaction;
+        let attachment = self.sim.body().point_to_body(&point);
+        let string = SoftString::new(
+            point,
+            attachment,
+            i.string_frequency,
+            i.string_damping,
+            self.string_max_force(settings),
+        )
+        .map_err(|e| format!("string: {e}"))?;
+        self.sim.set_string(Some(string));
+        self.history.mark_disturbance();
+        Ok(())
+    }
+
+    /// Moves the string's free end (nothing if no string is attached).
+    ///
+    /// # Errors
+    /// The target is not finite.
+    pub fn drag(&mut self, target: Point3<f64>) -> Result<(), String> {
+        if let Some(s) = self.sim.string_mut() {
+            s.set_target(target).map_err(|e| format!("string: {e}"))?;
+        }
+        Ok(())
+    }
+
+    /// Detaches the string.
+    pub fn release(&mut self) {
+        if self.sim.string().is_some() {
+            self.sim.set_string(None);
+            self.history.mark_disturbance();
+        }
+    }
+
+    /// Forgets a poke flash that has expired at `now`.
+    pub fn expire_flash(&mut self, now: Instant) {
+        if self.poke.is_some_and(|p| now >= p.until) {
+            self.poke = None;
+        }
+    }
+
+    /// This specimen's name in commands.
+    pub fn id(&self) -> SpecimenId {
+        self.id
+    }
+    /// The simulation (read-only).
+    pub fn sim(&self) -> &Simulation {
+        &self.sim
+    }
+    /// Pauses the simulation.
+    pub fn pause(&mut self) {
+        self.sim.pause();
+    }
+    /// Resumes the simulation.
+    pub fn resume(&mut self) {
+        self.sim.resume();
+    }
+    /// The loaded body.
+    pub fn body(&self) -> &LoadedBody {
+        &self.body
+    }
+    /// The loaded body, shared.
+    pub fn body_arc(&self) -> &Arc<LoadedBody> {
+        &self.body
+    }
+    /// The plotted history.
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+    /// Simulated seconds dropped by the catch-up cap since the start (the frames came too slowly
+    /// for the step; 0 when the simulation kept up).
+    pub fn dropped(&self) -> f64 {
+        self.dropped
+    }
+    /// Mass properties per source (exact, bounding box, point masses) at the current scale/mass.
+    pub fn properties(&self, source: InertiaSource) -> &MassProperties {
+        &self.props[source_index(source)]
+    }
+    /// The inertia source the simulation uses.
+    pub fn source(&self) -> InertiaSource {
+        self.source
+    }
+    /// The mass properties the simulation uses.
+    pub fn used_properties(&self) -> &MassProperties {
+        self.properties(self.source)
+    }
+    /// How an approximation compares with the exact properties.
+    pub fn comparison(&self, source: InertiaSource) -> Comparison {
+        self.properties(source)
+            .compare_to(self.properties(InertiaSource::Exact))
+    }
+    /// The density (kg/m³) of the exact solid at the current size and mass: mass over volume.
+    pub fn density(&self) -> f64 {
+        // The analysis is at density 1, so its mass is the unscaled volume.
+        let volume = self.body.analysis.properties.mass * self.scale.powi(3);
+        self.properties(InertiaSource::Exact).mass / volume
+    }
+    /// The current poke flash.
+    pub fn poke_flash(&self) -> Option<PokeFlash> {
+        self.poke
+    }
+    /// Poke impulse magnitude (N·s) for the current mass: `J = m·Δv`.
+    pub fn poke_impulse(&self, settings: &AppSettings) -> f64 {
+        self.used_properties().mass * settings.interaction.poke_delta_v
+    }
+    /// String force cap (N) for the current mass: `F = m·a_max`.
+    pub fn string_max_force(&self, settings: &AppSettings) -> f64 {
+        self.used_properties().mass * settings.interaction.string_max_accel
+    }
+    /// The string, if attached.
+    pub fn string_view(&self) -> Option<StringView> {
+        let sim = &self.sim;
+        let s = sim.string()?;
+        let dt = sim.settings().dt;
+        Some(StringView {
+            attachment: sim.body().point_to_world(&s.attachment()),
+            target: s.target(),
+            force: s.impulse(sim.body(), dt) / dt,
+        })
+    }
+    /// The mesh → world transform now.
+    pub fn placement(&self) -> Placement {
+        let b = self.sim.body();
+        Placement {
+            scale: self.scale,
+            center: self.used_properties().center_of_mass,
+            rotation: b.body_orientation(),
+            position: b.position(),
+        }
+    }
+    /// Ray-casts the body: the world ray is mapped into mesh coordinates (the body is rigid, so
+    /// this equals intersecting the world-space mesh) and the hit mapped back.
+    pub fn pick(&self, ray: &Ray) -> Option<Hit> {
+        let placement = self.placement();
+        let local = Ray {
+            origin: placement.to_mesh(&ray.origin),
+            dir: placement.vector_to_mesh(&ray.dir),
+        };
+        let hit = self.body.bvh.pick(&self.body.mesh, &local)?;
+        Some(Hit {
+            point: placement.to_world(&hit.point),
+            ..hit
+        })
+    }
+    /// Bounding-sphere centre (world) and radius of the scaled body.
+    pub fn bounding_sphere(&self) -> (Point3<f64>, f64) {
+        let (c, r) = self.body.sphere;
+        (self.placement().to_world(&c), r * self.scale)
+    }
+}
+
+/// History capacity for the configured seconds at the configured step.
+fn capacity(settings: &AppSettings) -> usize {
+    let n = settings.plots.history / settings.physics.dt;
+    if n.is_finite() && n > 0.0 {
+        (n.ceil() as usize).clamp(2, MAX_HISTORY)
+    } else {
+        2
+    }
+}
+
+fn source_index(source: InertiaSource) -> usize {
+    match source {
+        InertiaSource::Exact => 0,
+        InertiaSource::BoundingBox => 1,
+        InertiaSource::PointMasses => 2,
+    }
+}
+
+/// The three sources' properties for the settings' scale and mass (the analysis is at density 1
+/// and scale 1: mass ∝ s³, inertia ∝ s⁵ at fixed density).
+fn scaled_properties(
+    body: &LoadedBody,
+    settings: &AppSettings,
+) -> Result<[MassProperties; 3], String> {
+    let s = settings.body.scale;
+    let a = &body.analysis;
+    let exact = a
+        .properties
+        .scaled_at_fixed_density(s)
+        .map_err(|e| format!("size: {e}"))?;
+    let mass = match settings.body.mass {
+        MassSpec::Density(d) => exact.mass * d,
+        MassSpec::Mass(m) => m,
+    };
+    let fit = |p: &MassProperties| -> Result<MassProperties, String> {
+        p.scaled_at_fixed_density(s)
+            .and_then(|p| p.with_mass(mass))
+            .map_err(|e| format!("mass: {e}"))
+    };
+    Ok([
+        fit(&a.properties)?,
+        fit(&a.bounding_box)?,
+        fit(&a.point_masses)?,
+    ])
+}
