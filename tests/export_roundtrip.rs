@@ -10,7 +10,7 @@ mod common;
 
 use std::process::Command;
 
-use common::{TempFile, root, run};
+use common::{TempFile, root, run, skip};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{MassProperties, mass_properties};
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -709,30 +709,75 @@ fn output_file_frames_and_unphysical_bodies() {
     );
 }
 
-/// Runs a consumer script; `None` (with a note) only when python3 itself is missing.
-fn python(script: &str, file: &str) -> Option<Value> {
-    let out = match Command::new("python3")
-        .arg(root().join("tests/python").join(script))
-        .arg(file)
-        .output()
-    {
-        Ok(out) => out,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            eprintln!("SKIPPED {script}: python3 is not installed");
-            return None;
+/// A Python consumer: its script, the module it imports and the one command that installs it
+/// (the versions `.ci/run` installs).
+struct Consumer {
+    test: &'static str,
+    script: &'static str,
+    module: &'static str,
+    install: &'static str,
+}
+
+const MUJOCO: Consumer = Consumer {
+    test: "mujoco_compiles_the_mjcf_to_the_same_body",
+    script: "mujoco_inertial.py",
+    module: "mujoco",
+    install: "python3 -m pip install mujoco==4.0.0",
+};
+
+const YOURDFPY: Consumer = Consumer {
+    test: "yourdfpy_reads_the_urdf_as_the_same_body",
+    script: "urdf_inertial.py",
+    module: "yourdfpy",
+    install: "python3 -m pip install yourdfpy==0.0.60",
+};
+
+impl Consumer {
+    /// Whether python3 and the module are here; reports the skip otherwise.
+    fn available(&self) -> bool {
+        let probe = Command::new("python3")
+            .args(["-c", &format!("import {}", self.module)])
+            .output();
+        match probe {
+            Ok(out) if out.status.success() => true,
+            Ok(_) => {
+                let missing = format!("the Python package {} is not installed", self.module);
+                skip(self.test, &missing, self.install);
+                false
+            }
+            Err(_) => {
+                skip(
+                    self.test,
+                    "python3 is not installed",
+                    "apt-get install python3 python3-pip",
+                );
+                false
+            }
         }
-        Err(e) => panic!("python3 {script}: {e}"),
-    };
-    assert!(
-        out.status.success(),
-        "{script} failed (is its package installed? .ci/run pip-installs it):\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    Some(serde_json::from_slice(&out.stdout).expect("JSON from the script"))
+    }
+
+    /// Runs the script on `file` and parses what it prints.
+    fn read(&self, file: &str) -> Value {
+        let out = Command::new("python3")
+            .arg(root().join("tests/python").join(self.script))
+            .arg(file)
+            .output()
+            .expect("python3 runs");
+        assert!(
+            out.status.success(),
+            "{} failed on {file}:\n{}",
+            self.script,
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).expect("JSON from the script")
+    }
 }
 
 #[test]
 fn mujoco_compiles_the_mjcf_to_the_same_body() {
+    if !MUJOCO.available() {
+        return;
+    }
     for b in bodies() {
         for frame in ["origin", "com-principal"] {
             let exact = reference(&b.mesh, b.metres, 1240.0);
@@ -750,9 +795,7 @@ fn mujoco_compiles_the_mjcf_to_the_same_body() {
                 ],
             );
             let file = TempFile::new(&format!("{}-{frame}.mjcf", b.name), text.as_bytes());
-            let Some(v) = python("mujoco_inertial.py", file.path()) else {
-                return;
-            };
+            let v = MUJOCO.read(file.path());
             let q = floats(&v["iquat"]);
             let p = floats(&v["ipos"]);
             let d = floats(&v["inertia"]);
@@ -770,6 +813,9 @@ fn mujoco_compiles_the_mjcf_to_the_same_body() {
 
 #[test]
 fn yourdfpy_reads_the_urdf_as_the_same_body() {
+    if !YOURDFPY.available() {
+        return;
+    }
     for b in bodies() {
         for frame in ["origin", "com-principal"] {
             let exact = reference(&b.mesh, 0.0254, 7850.0);
@@ -789,9 +835,7 @@ fn yourdfpy_reads_the_urdf_as_the_same_body() {
                 ],
             );
             let file = TempFile::new(&format!("{}-{frame}.urdf", b.name), text.as_bytes());
-            let Some(v) = python("urdf_inertial.py", file.path()) else {
-                return;
-            };
+            let v = YOURDFPY.read(file.path());
             let o: Vec<Vec<f64>> = v["origin"]
                 .as_array()
                 .expect("rows")

@@ -6,9 +6,13 @@
 //! Needs `Xvfb` and ImageMagick's `import` (`.ci/run` installs them with the X11/GL runtime
 //! libraries); skipped with a message when Xvfb is not installed.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
+
+use common::{on_path, skip};
 
 /// Kills a child process when dropped, so a failing assertion leaves nothing behind.
 struct Guard(Child);
@@ -20,10 +24,6 @@ impl Drop for Guard {
     }
 }
 
-fn on_path(program: &str) -> bool {
-    std::env::var_os("PATH")
-        .is_some_and(|paths| std::env::split_paths(&paths).any(|dir| dir.join(program).is_file()))
-}
 
 /// A binary PPM (P6) screenshot: width, height, RGB bytes.
 struct Image {
@@ -89,16 +89,16 @@ fn green_line(r: u8, g: u8, b: u8) -> bool {
 
 #[test]
 fn window_shows_the_body_and_the_plots_and_survives_a_bad_file() {
-    if !on_path("Xvfb") {
-        eprintln!(
-            "SKIPPED gui_smoke: Xvfb is not installed (`.ci/run` installs it: apt-get install xvfb imagemagick)"
-        );
-        return;
+    for (program, package) in [("Xvfb", "xvfb"), ("import", "imagemagick")] {
+        if !on_path(program) {
+            skip(
+                "gui_smoke",
+                &format!("{program} is not installed"),
+                &format!("apt-get install {package}"),
+            );
+            return;
+        }
     }
-    assert!(
-        on_path("import"),
-        "ImageMagick's `import` is needed to take the screenshot"
-    );
     let display = format!(":{}", 90 + std::process::id() % 500);
     let mut xvfb = Command::new("Xvfb");
     xvfb.args([

@@ -109,25 +109,61 @@ pub fn json(file: &str, scale: f64, a: &Analysis) -> Value {
     })
 }
 
-/// Shortest decimal that reads back to the same f64 (full precision), right-aligned; plain
+/// Significant digits of the human table (JSON keeps every digit).
+const TABLE_DIGITS: usize = 10;
+
+/// A matrix entry smaller than this fraction of the matrix's largest entry is round-off of a
+/// zero (e.g. `-4.9e-27` beside `7e-11`) and is printed as 0.
+const TABLE_ZERO: f64 = 1e-12;
+
+/// `v` to [`TABLE_DIGITS`] significant digits without trailing zeros, right-aligned: plain
 /// notation for moderate magnitudes, exponent notation for very small or large ones.
 fn num(v: f64) -> String {
-    let text = if v == 0.0 || (1e-4..1e15).contains(&v.abs()) {
-        format!("{v}")
+    format!("{:>17}", significant(v, TABLE_DIGITS))
+}
+
+/// `v` rounded to `digits` significant digits, trailing zeros dropped (`0.2`, `7e-11`).
+fn significant(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let exponent = v.abs().log10().floor();
+    if (-4.0..15.0).contains(&exponent) {
+        let decimals = digits as f64 - 1.0 - exponent;
+        let text = if decimals >= 0.0 {
+            format!("{v:.prec$}", prec = decimals as usize)
+        } else {
+            // More integer digits than significant ones: round the extra ones away.
+            let unit = 10f64.powf(-decimals);
+            format!("{:.0}", (v / unit).round() * unit)
+        };
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            text
+        }
     } else {
-        format!("{v:e}")
-    };
-    format!("{text:>24}")
+        let text = format!("{v:.prec$e}", prec = digits - 1);
+        let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = if mantissa.contains('.') {
+            mantissa.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            mantissa
+        };
+        format!("{mantissa}e{exp}")
+    }
 }
 
 fn matrix_lines(out: &mut String, m: &Matrix3<f64>) {
+    let largest = m.amax();
+    let entry = |v: f64| num(if v.abs() < TABLE_ZERO * largest { 0.0 } else { v });
     for r in 0..3 {
         let _ = writeln!(
             out,
             "    [{} {} {} ]",
-            num(m[(r, 0)]),
-            num(m[(r, 1)]),
-            num(m[(r, 2)])
+            entry(m[(r, 0)]),
+            entry(m[(r, 1)]),
+            entry(m[(r, 2)])
         );
     }
 }
@@ -269,4 +305,35 @@ pub fn table(file: &str, scale: f64, a: &Analysis) -> String {
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ten_significant_digits_without_trailing_zeros() {
+        assert_eq!(significant(0.20000000000000004, 10), "0.2");
+        assert_eq!(significant(6.999999999999999e-11, 10), "7e-11");
+        assert_eq!(significant(-1234.5678901234, 10), "-1234.56789");
+        assert_eq!(significant(123456789012.0, 10), "123456789000");
+        assert_eq!(significant(1.0 / 3.0, 10), "0.3333333333");
+        assert_eq!(significant(-2.5e20, 10), "-2.5e20");
+        assert_eq!(significant(0.0, 10), "0");
+        assert_eq!(significant(f64::NAN, 10), "NaN");
+    }
+
+    #[test]
+    fn round_off_beside_large_entries_prints_as_zero() {
+        let m = Matrix3::new(7e-11, -4.9e-27, 0.0, -4.9e-27, 7e-11, 2e-13, 0.0, 2e-13, 5e-11);
+        let mut out = String::new();
+        matrix_lines(&mut out, &m);
+        let rows: Vec<Vec<&str>> = out
+            .lines()
+            .map(|l| l.trim_matches(|c| c == ' ' || c == '[' || c == ']').split_whitespace().collect())
+            .collect();
+        assert_eq!(rows[0], ["7e-11", "0", "0"]);
+        // 2e-13 is 3e-3 of the largest entry: a real product of inertia, kept.
+        assert_eq!(rows[1], ["0", "7e-11", "2e-13"]);
+    }
 }
