@@ -24,7 +24,6 @@ impl Drop for Guard {
     }
 }
 
-
 /// A binary PPM (P6) screenshot: width, height, RGB bytes.
 struct Image {
     width: usize,

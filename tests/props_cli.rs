@@ -51,7 +51,7 @@ fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
     ] {
         assert!(j.get(key).is_some(), "missing {key}");
     }
-    assert_eq!(j["schema_version"], 1);
+    assert_eq!(j["schema_version"], 2);
     assert_eq!(j["method"], "volume");
     // Two boxes: crossbar 0.08 × 0.012 × 0.012 centred at y = 0.006, stem 0.012 × 0.05 × 0.012
     // centred at y = −0.025.
@@ -243,8 +243,10 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
     let j = props_json(&[file.path()]);
     assert_eq!(j["mesh"]["closed"], false);
     assert_eq!(j["mesh"]["open_edges"], 4);
+    assert_eq!(j["warnings"][0]["code"], "open_mesh");
+    assert_eq!(j["warnings"][0]["boundary_edges"], 4);
     assert!(
-        j["warnings"][0]
+        j["warnings"][0]["message"]
             .as_str()
             .is_some_and(|w| w.contains("open"))
     );

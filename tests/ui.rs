@@ -29,7 +29,10 @@ fn frames(h: &mut Harness<'static, LabApp>, n: usize) {
 fn pause_button_and_space_stop_and_restart_the_simulation() {
     let mut h = harness();
     frames(&mut h, 5);
-    assert!(h.state().lab().primary().sim().steps() > 0, "runs from the start");
+    assert!(
+        h.state().lab().primary().sim().steps() > 0,
+        "runs from the start"
+    );
     h.get_all_by_label("Pause").next().expect("button").click();
     frames(&mut h, 2);
     assert!(h.state().lab().primary().sim().is_paused());
@@ -60,7 +63,11 @@ fn switching_the_inertia_source_mid_run_keeps_angular_momentum() {
     frames(&mut h, 2);
     let lab = h.state().lab();
     assert_eq!(lab.settings().body.source, InertiaSource::BoundingBox);
-    let bbox = lab.primary().properties(InertiaSource::BoundingBox).principal.moments;
+    let bbox = lab
+        .primary()
+        .properties(InertiaSource::BoundingBox)
+        .principal
+        .moments;
     let used = lab.primary().sim().body().moments();
     assert!(
         (used - bbox).norm() <= 1e-12 * bbox.norm(),
@@ -71,7 +78,11 @@ fn switching_the_inertia_source_mid_run_keeps_angular_momentum() {
     h.get_all_by_label("exact").last().expect("radio").click();
     frames(&mut h, 2);
     let lab = h.state().lab();
-    let exact = lab.primary().properties(InertiaSource::Exact).principal.moments;
+    let exact = lab
+        .primary()
+        .properties(InertiaSource::Exact)
+        .principal
+        .moments;
     assert!((lab.primary().sim().body().moments() - exact).norm() <= 1e-12 * exact.norm());
 }
 
@@ -100,7 +111,10 @@ fn a_bad_file_shows_the_error_and_keeps_the_body() {
     assert!(message.text.contains("not-a-mesh.obj"), "{}", message.text);
     assert!(message.text.contains("kept"), "{}", message.text);
     assert_eq!(lab.primary().body().name, "T-handle");
-    assert!(!lab.primary().sim().is_paused(), "the old body keeps running");
+    assert!(
+        !lab.primary().sim().is_paused(),
+        "the old body keeps running"
+    );
     // The message is on screen.
     frames(&mut h, 1);
     assert!(h.query_by_label_contains("not-a-mesh.obj").is_some());

@@ -59,6 +59,7 @@ fn main() -> ExitCode {
 #[cfg(feature = "gui")]
 fn app(cli: &Cli) -> Result<(), CliError> {
     inertia_lab::gui::run(&cli.gui)
+        .map_err(|e| CliError::Runtime(format!("cannot start the app: {e}")))
 }
 
 #[cfg(not(feature = "gui"))]

@@ -156,13 +156,46 @@ mod tests {
         );
     }
 
+    /// ∫ from `lo` to `hi` of (u − q)ᵏ du, for k = 0, 1, 2.
+    fn power_integral(lo: f64, hi: f64, q: f64, k: i32) -> f64 {
+        ((hi - q).powi(k + 1) - (lo - q).powi(k + 1)) / f64::from(k + 1)
+    }
+
     #[test]
-    fn shifting_there_and_back_is_identity() {
-        let p = sample();
-        let q = Point3::new(7.0, 1.0, -3.0);
-        let about_q = p.inertia_about(&q);
-        let back = about_q - parallel_axis_term(p.mass, &(q - p.center_of_mass));
-        assert!((back - p.inertia_com).amax() < 1e-13);
+    fn inertia_about_a_point_is_the_box_integrated_about_that_point() {
+        // A solid box [lo, hi] of density ρ, integrated directly about q, with no shift theorem:
+        // Cᵢⱼ = ρ∫(xᵢ − qᵢ)(xⱼ − qⱼ)dV is a product of one-dimensional integrals, I = tr(C)E − C.
+        let (lo, hi, rho) = ([-0.5, 1.0, 2.0], [1.5, 1.5, 5.0], 3.0);
+        let sides: [f64; 3] = std::array::from_fn(|i| hi[i] - lo[i]);
+        let mass = rho * sides.iter().product::<f64>();
+        let centre = Point3::from(std::array::from_fn(|i| (lo[i] + hi[i]) / 2.0));
+        let [a, b, c] = sides;
+        let central =
+            Matrix3::from_diagonal(&Vector3::new(b * b + c * c, a * a + c * c, a * a + b * b))
+                * (mass / 12.0);
+        let p = MassProperties::new(mass, centre, central);
+        // The third point is the centre: the direct integral there is the closed-form central tensor.
+        for q in [
+            [7.0, 1.0, -3.0],
+            [0.0; 3],
+            [0.5, 1.25, 3.5],
+            [-40.0, 25.0, 1e3],
+        ] {
+            let cov = Matrix3::from_fn(|i, j| {
+                rho * (0..3)
+                    .map(|k| {
+                        let power = i32::from(k == i) + i32::from(k == j);
+                        power_integral(lo[k], hi[k], q[k], power)
+                    })
+                    .product::<f64>()
+            });
+            let want = Matrix3::identity() * cov.trace() - cov;
+            let got = p.inertia_about(&Point3::from(q));
+            assert!(
+                (got - want).amax() <= 1e-13 * want.amax(),
+                "about {q:?}: {got} vs {want}"
+            );
+        }
     }
 
     #[test]

@@ -130,8 +130,7 @@ fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume 2");
     assert_rel(a.properties.mass, 2.0, 1e-15, "two unit boxes");
     assert!(
-        a.warnings
-            .contains(&Warning::NonManifoldEdges { count: 1 }),
+        a.warnings.contains(&Warning::NonManifoldEdges { count: 1 }),
         "{:?}",
         a.warnings
     );

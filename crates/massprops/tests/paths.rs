@@ -173,6 +173,25 @@ fn parallel_triangle_path_is_bit_identical_to_the_sequential_one() {
 }
 
 #[test]
+fn auto_above_the_parallel_threshold_is_bit_identical_to_one_thread() {
+    // 256 × 130 quads = 66 560 triangles, just above the size from which `Auto` shares the
+    // triangles with the rayon pool (what `props` and the app use on large meshes).
+    let mesh = jittered(&shapes::torus(1.0, 0.3, 256, 130), 0.002, 3).build();
+    assert!(mesh.triangle_count() > massprops::integrals::PARALLEL_ABOVE);
+    let seq = volume_integrals(&mesh, IntegrationPath::Triangle);
+    assert_eq!(volume_integrals(&mesh, IntegrationPath::Auto), seq);
+    assert_eq!(
+        volume_integrals(&mesh, IntegrationPath::TriangleParallel),
+        seq
+    );
+    // And the polygon path, another algorithm, agrees to round-off: the blocks summed are real.
+    let polygon = volume_integrals(&mesh, IntegrationPath::Polygon);
+    assert_rel(polygon.volume(), seq.volume(), TOL, "volume");
+    // A torus of R = 1, r = 0.3 encloses about 2π²Rr² = 1.78 (less the polygons' deficit).
+    assert!((1.7..1.78).contains(&seq.volume()), "{}", seq.volume());
+}
+
+#[test]
 fn quads_match_their_triangulation_in_both_directions() {
     // A planar quad split along either diagonal is the same region.
     let b = shapes::cuboid(Vector3::new(1.5, 0.25, 3.0), Point3::new(0.5, -2.0, 1.0));

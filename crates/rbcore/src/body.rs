@@ -172,7 +172,7 @@ impl Body {
             .inverse_transform_vector(&self.angular_momentum)
     }
     /// Angular velocity in the principal frame, `I⁻¹ L_p`.
-    pub fn omega_principal(&self) -> Vector3<f64> {
+    pub(crate) fn omega_principal(&self) -> Vector3<f64> {
         self.angular_momentum_principal()
             .component_mul(&self.inv_moments)
     }
@@ -181,16 +181,16 @@ impl Body {
         self.orientation.transform_vector(&self.omega_principal())
     }
     /// World inverse inertia tensor about the centre of mass.
-    pub fn inverse_inertia_world(&self) -> Matrix3<f64> {
+    pub(crate) fn inverse_inertia_world(&self) -> Matrix3<f64> {
         let r = self.orientation.to_rotation_matrix();
         r.matrix() * Matrix3::from_diagonal(&self.inv_moments) * r.matrix().transpose()
     }
     /// Translational kinetic energy `|p|²/2m`.
-    pub fn kinetic_translational(&self) -> f64 {
+    pub(crate) fn kinetic_translational(&self) -> f64 {
         0.5 * self.momentum.norm_squared() / self.mass
     }
     /// Rotational kinetic energy `½ L·ω`.
-    pub fn kinetic_rotational(&self) -> f64 {
+    pub(crate) fn kinetic_rotational(&self) -> f64 {
         let l = self.angular_momentum_principal();
         0.5 * l.component_mul(&l).dot(&self.inv_moments)
     }
@@ -204,7 +204,7 @@ impl Body {
         Point3::from(self.vector_to_body(&(x_world - self.position)))
     }
     /// Body-frame vector → world (rotation only).
-    pub fn vector_to_world(&self, v_body: &Vector3<f64>) -> Vector3<f64> {
+    pub(crate) fn vector_to_world(&self, v_body: &Vector3<f64>) -> Vector3<f64> {
         self.orientation
             .transform_vector(&self.axes.inverse_transform_vector(v_body))
     }
@@ -214,7 +214,7 @@ impl Body {
             .transform_vector(&self.orientation.inverse_transform_vector(v_world))
     }
     /// Velocity of the material point currently at world position `x_world`: `v + ω × (x − r)`.
-    pub fn point_velocity(&self, x_world: &Point3<f64>) -> Vector3<f64> {
+    pub(crate) fn point_velocity(&self, x_world: &Point3<f64>) -> Vector3<f64> {
         self.velocity() + self.omega_world().cross(&(x_world - self.position))
     }
 
@@ -258,18 +258,15 @@ impl Body {
         self.angular_momentum = self.orientation.transform_vector(&l);
         Ok(())
     }
-    /// Sets the angular velocity given in world.
-    ///
-    /// # Errors
-    /// Non-finite input.
-    pub fn set_omega_world(&mut self, w: Vector3<f64>) -> Result<(), BodyError> {
-        self.set_omega_principal(self.orientation.inverse_transform_vector(&w))
-    }
     /// Applies an impulse `J` at world point `x`: `Δp = J`, `ΔL = (x − r) × J`.
     ///
     /// # Errors
     /// Non-finite input (the body is then unchanged).
-    pub fn apply_impulse_at(&mut self, x: &Point3<f64>, j: &Vector3<f64>) -> Result<(), BodyError> {
+    pub(crate) fn apply_impulse_at(
+        &mut self,
+        x: &Point3<f64>,
+        j: &Vector3<f64>,
+    ) -> Result<(), BodyError> {
         check_finite_vec(&x.coords, "impulse point")?;
         check_finite_vec(j, "impulse")?;
         let dl = (x - self.position).cross(j);

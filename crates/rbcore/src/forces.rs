@@ -8,17 +8,17 @@ use crate::error::BodyError;
 
 /// A force and the torque it exerts about the centre of mass, both in world.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Wrench {
+pub(crate) struct Wrench {
     /// Force.
-    pub force: Vector3<f64>,
+    pub(crate) force: Vector3<f64>,
     /// Torque about the centre of mass.
-    pub torque: Vector3<f64>,
+    pub(crate) torque: Vector3<f64>,
 }
 
 impl Wrench {
     /// The wrench of force `f` applied at world point `x` on a body whose centre of mass is at
     /// `center`: `τ = (x − center) × f`.
-    pub fn at_point(f: Vector3<f64>, x: &Point3<f64>, center: &Point3<f64>) -> Self {
+    pub(crate) fn at_point(f: Vector3<f64>, x: &Point3<f64>, center: &Point3<f64>) -> Self {
         Self {
             force: f,
             torque: (x - center).cross(&f),
@@ -27,7 +27,7 @@ impl Wrench {
 }
 
 /// Gravity acts at the centre of mass: force `m g`, no torque.
-pub fn gravity(body: &Body, g: &Vector3<f64>) -> Wrench {
+pub(crate) fn gravity(body: &Body, g: &Vector3<f64>) -> Wrench {
     Wrench {
         force: g * body.mass(),
         torque: Vector3::zeros(),
@@ -35,7 +35,7 @@ pub fn gravity(body: &Body, g: &Vector3<f64>) -> Wrench {
 }
 
 /// Gravitational potential energy `−m g·r` (zero at the world origin).
-pub fn gravity_potential(body: &Body, g: &Vector3<f64>) -> f64 {
+pub(crate) fn gravity_potential(body: &Body, g: &Vector3<f64>) -> f64 {
     -body.mass() * g.dot(&body.position().coords)
 }
 
@@ -83,27 +83,14 @@ impl Spring {
             damping: check_nonneg("spring damping", damping)?,
         })
     }
-    /// The world anchor.
-    pub fn anchor(&self) -> Point3<f64> {
-        self.anchor
-    }
-    /// Moves the anchor (e.g. following the mouse).
-    ///
-    /// # Errors
-    /// Non-finite input.
-    pub fn set_anchor(&mut self, anchor: Point3<f64>) -> Result<(), BodyError> {
-        check_finite_vec(&anchor.coords, "spring anchor")?;
-        self.anchor = anchor;
-        Ok(())
-    }
     /// Force `−k (x − a) − c v_x` at the attachment point, as a wrench.
-    pub fn wrench(&self, body: &Body) -> Wrench {
+    pub(crate) fn wrench(&self, body: &Body) -> Wrench {
         let x = body.point_to_world(&self.attachment);
         let f = -(x - self.anchor) * self.stiffness - body.point_velocity(&x) * self.damping;
         Wrench::at_point(f, &x, &body.position())
     }
     /// Elastic energy `½ k |x − a|²`.
-    pub fn potential(&self, body: &Body) -> f64 {
+    pub(crate) fn potential(&self, body: &Body) -> f64 {
         0.5 * self.stiffness * (body.point_to_world(&self.attachment) - self.anchor).norm_squared()
     }
 }
@@ -212,7 +199,7 @@ impl SoftString {
     }
     /// Energy of the equivalent spring `½ m (2πf)² |C|²` (Catto's `k = m ω²` with the body mass),
     /// reported in diagnostics; the constraint itself is dissipative.
-    pub fn potential(&self, body: &Body) -> f64 {
+    pub(crate) fn potential(&self, body: &Body) -> f64 {
         let omega = 2.0 * std::f64::consts::PI * self.frequency_hz;
         let c = body.point_to_world(&self.attachment) - self.target;
         0.5 * body.mass() * omega * omega * c.norm_squared()
@@ -234,7 +221,7 @@ impl Damping {
     ///
     /// # Errors
     /// A rate out of range.
-    pub fn validate(&self) -> Result<(), BodyError> {
+    pub(crate) fn validate(&self) -> Result<(), BodyError> {
         check_nonneg("linear damping", self.linear)?;
         check_nonneg("angular damping", self.angular)?;
         Ok(())
@@ -251,12 +238,10 @@ impl Damping {
 }
 
 /// The forces evaluated inside a step (the soft string and pokes act as impulses instead).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct ForceModel {
     pub gravity: Vector3<f64>,
     pub spring: Option<Spring>,
-    /// Constant forces at world points for this step.
-    pub applied: Vec<(Point3<f64>, Vector3<f64>)>,
 }
 
 impl ForceModel {
@@ -267,11 +252,6 @@ impl ForceModel {
             let ws = s.wrench(body);
             w.force += ws.force;
             w.torque += ws.torque;
-        }
-        for (x, f) in &self.applied {
-            let wa = Wrench::at_point(*f, x, &body.position());
-            w.force += wa.force;
-            w.torque += wa.torque;
         }
         w
     }

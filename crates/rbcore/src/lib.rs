@@ -25,11 +25,9 @@ mod integrators;
 mod simulation;
 
 pub use body::Body;
-pub use diagnostics::{Diagnostics, DriftTracker, FlipCounter};
+pub use diagnostics::{Diagnostics, DriftTracker, FlipCounter, relative_change};
 pub use error::{BodyError, SimError};
-pub use forces::{Damping, SoftString, Spring, Wrench, gravity, gravity_potential};
-pub use integrators::exact::{
-    elliptic_f, elliptic_k, jacobi_elliptic, torque_free_omega, torque_free_period,
-};
+pub use forces::{Damping, SoftString, Spring};
+pub use integrators::exact::{elliptic_f, jacobi_elliptic, torque_free_omega, torque_free_period};
 pub use integrators::{Integrator, ParseNameError, RotationModel};
 pub use simulation::{Advance, MAX_DT, Settings, Simulation};

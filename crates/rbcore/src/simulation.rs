@@ -29,7 +29,8 @@ pub struct Settings {
     pub gravity: Vector3<f64>,
     /// Linear and angular damping rates. Default none.
     pub damping: Damping,
-    /// Most steps one [`Simulation::advance`] call may run; the rest of a long frame is dropped
+    /// Most steps one [`Simulation::advance`] (or [`Simulation::advance_with`]) call may run; the
+    /// rest of a long frame is dropped
     /// (reported in [`Advance::dropped`]) so a slow frame cannot snowball. Default 16, ≥ 1.
     pub max_catch_up_steps: u32,
 }
@@ -73,15 +74,13 @@ impl Settings {
     }
 }
 
-/// What one [`Simulation::advance`] did.
+/// What one [`Simulation::advance`] or [`Simulation::advance_with`] did.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Advance {
     /// Whole steps run.
     pub steps: u32,
     /// Frame time discarded by the catch-up cap (s).
     pub dropped: f64,
-    /// Leftover accumulator as a fraction of `dt`, for render interpolation.
-    pub alpha: f64,
 }
 
 /// A body, its settings and the interaction forces, advanced deterministically in fixed steps.
@@ -171,15 +170,14 @@ impl Simulation {
     pub fn is_paused(&self) -> bool {
         self.paused
     }
-    /// Back to the initial body at t = 0; clears the accumulator, applied forces, the string and
-    /// a divergence halt. Settings, the spring and the paused flag are kept.
+    /// Back to the initial body at t = 0; clears the accumulator, the string and a divergence
+    /// halt. Settings, the spring and the paused flag are kept.
     pub fn reset(&mut self) {
         self.body = self.initial;
         self.time_origin = 0.0;
         self.steps_origin = 0;
         self.steps = 0;
         self.accumulator = 0.0;
-        self.forces.applied.clear();
         self.string = None;
         self.halted = None;
     }
@@ -191,19 +189,13 @@ impl Simulation {
     pub fn set_string(&mut self, string: Option<SoftString>) {
         self.string = string;
     }
+    /// The soft string, if attached (what the next step will apply).
+    pub fn string(&self) -> Option<&SoftString> {
+        self.string.as_ref()
+    }
     /// The soft string, to move its target.
     pub fn string_mut(&mut self) -> Option<&mut SoftString> {
         self.string.as_mut()
-    }
-    /// Applies force `f` at world point `x` during the next step only.
-    ///
-    /// # Errors
-    /// Non-finite input.
-    pub fn apply_force_at(&mut self, x: Point3<f64>, f: Vector3<f64>) -> Result<(), BodyError> {
-        check_finite_vec(&x.coords, "force point")?;
-        check_finite_vec(&f, "force")?;
-        self.forces.applied.push((x, f));
-        Ok(())
     }
     /// The poke: impulse `J` at world point `x`, now (`Δp = J`, `ΔL = (x − r) × J`).
     ///
@@ -220,6 +212,21 @@ impl Simulation {
     /// A negative or non-finite `frame_dt`, or divergence (then every later call returns the
     /// same error until [`Simulation::reset`]).
     pub fn advance(&mut self, frame_dt: f64) -> Result<Advance, SimError> {
+        self.advance_with(frame_dt, |_| {})
+    }
+
+    /// [`Simulation::advance`], calling `on_step(self)` after every completed step, so a caller
+    /// can record diagnostics at every step rather than once per frame. The steps, accumulator
+    /// and catch-up cap are exactly those of `advance` (which is this with a no-op callback).
+    ///
+    /// # Errors
+    /// As [`Simulation::advance`]. A step that diverges mid-frame returns its error after the
+    /// callbacks of the steps before it have run; the failed step gets no callback.
+    pub fn advance_with(
+        &mut self,
+        frame_dt: f64,
+        mut on_step: impl FnMut(&Simulation),
+    ) -> Result<Advance, SimError> {
         if let Some(e) = &self.halted {
             return Err(e.clone());
         }
@@ -240,6 +247,7 @@ impl Simulation {
                 self.step()?;
                 self.accumulator -= dt;
                 steps += 1;
+                on_step(self);
             }
         }
         let mut dropped = 0.0;
@@ -247,11 +255,7 @@ impl Simulation {
             dropped = (self.accumulator / dt).floor() * dt;
             self.accumulator -= dropped;
         }
-        Ok(Advance {
-            steps,
-            dropped,
-            alpha: (self.accumulator / dt).clamp(0.0, 1.0),
-        })
+        Ok(Advance { steps, dropped })
     }
 
     /// Runs exactly one step of `dt` (also while paused: single-stepping).
@@ -275,7 +279,6 @@ impl Simulation {
             .integrator
             .step(&mut b, &self.forces, h, self.settings.model);
         self.settings.damping.apply(&mut b, 0.5 * h);
-        self.forces.applied.clear();
         if let Some((quantity, value)) = divergence(&b) {
             let e = SimError::Diverged {
                 time: self.time() + h,
@@ -294,8 +297,7 @@ impl Simulation {
     /// Diagnostics of the current state.
     pub fn diagnostics(&self) -> Diagnostics {
         let b = &self.body;
-        let kt = b.kinetic_translational();
-        let kr = b.kinetic_rotational();
+        let kinetic = b.kinetic_translational() + b.kinetic_rotational();
         let ug = gravity_potential(b, &self.settings.gravity);
         let us = self.forces.spring.as_ref().map_or(0.0, |s| s.potential(b))
             + self.string.as_ref().map_or(0.0, |s| s.potential(b));
@@ -306,15 +308,11 @@ impl Simulation {
             omega_world: b.omega_world(),
             angular_momentum: l,
             angular_momentum_norm: l.norm(),
-            momentum: b.momentum,
             orientation: b.orientation,
-            kinetic_translational: kt,
-            kinetic_rotational: kr,
             potential_gravity: ug,
-            potential_spring: us,
-            kinetic: kt + kr,
+            kinetic,
             potential: ug + us,
-            energy: kt + kr + ug + us,
+            energy: kinetic + ug + us,
         }
     }
 }
@@ -394,6 +392,109 @@ mod tests {
         s.reset();
         assert_eq!((s.steps(), s.time()), (0, 0.0));
         assert_eq!(s.body(), &sim().body);
+    }
+
+    #[test]
+    fn advance_with_reports_every_step_of_a_capped_frame() {
+        let s0 = sim();
+        let dt = s0.settings().dt;
+        assert_eq!(s0.settings().max_catch_up_steps, 16);
+        let mut s = s0.clone();
+        let mut seen = Vec::new();
+        let a = s
+            .advance_with(20.0 * dt, |sim| {
+                seen.push((*sim.body(), sim.steps(), sim.time()));
+            })
+            .expect("stable");
+        assert_eq!(a.steps, 16);
+        assert_eq!(seen.len(), 16);
+        assert!(
+            (a.dropped - 4.0 * dt).abs() <= 1e-12 * 4.0 * dt,
+            "{}",
+            a.dropped
+        );
+        assert_eq!(s.time(), 16.0 * dt);
+        // The callback sees each state as it is reached, identical to plain single steps.
+        let mut reference = s0.clone();
+        for (i, (body, steps, time)) in seen.iter().enumerate() {
+            reference.step().expect("stable");
+            assert_eq!(*steps, i as u64 + 1);
+            assert_eq!(time.to_bits(), reference.time().to_bits());
+            assert_eq!(
+                body.position.map(f64::to_bits),
+                reference.body.position.map(f64::to_bits)
+            );
+            assert_eq!(
+                body.momentum.map(f64::to_bits),
+                reference.body.momentum.map(f64::to_bits)
+            );
+            assert_eq!(
+                body.orientation.coords.map(f64::to_bits),
+                reference.body.orientation.coords.map(f64::to_bits)
+            );
+            assert_eq!(
+                body.angular_momentum.map(f64::to_bits),
+                reference.body.angular_momentum.map(f64::to_bits)
+            );
+        }
+        // advance is advance_with without the callback: same steps, drop and state.
+        let mut plain = s0.clone();
+        assert_eq!(plain.advance(20.0 * dt), Ok(a));
+        assert_eq!(plain.body(), s.body());
+    }
+
+    #[test]
+    fn advance_with_reports_the_good_steps_before_a_divergence() {
+        // A plain spring far too stiff for the step diverges after some steps; find how many
+        // succeed by single-stepping a clone, then run them all in one frame.
+        let mut s = sim();
+        s.set_settings(Settings {
+            max_catch_up_steps: 10_000,
+            ..Settings::default()
+        })
+        .expect("valid");
+        let grabbed = s.body().point_to_world(&Point3::new(0.5, 0.0, 0.0));
+        let k = (2.0 * std::f64::consts::PI * 3000.0f64).powi(2);
+        let spring = Spring::new(grabbed, Point3::new(0.5, 0.0, 0.0), k, 0.0).expect("valid");
+        s.set_spring(Some(spring));
+        let mut probe = s.clone();
+        let good = (0..10_000).take_while(|_| probe.step().is_ok()).count();
+        assert!(good > 0 && good < 10_000, "{good}");
+        let mut calls = 0;
+        let result = s.advance_with(10_000.0 * s.settings().dt, |_| calls += 1);
+        assert!(
+            matches!(result, Err(SimError::Diverged { .. })),
+            "{result:?}"
+        );
+        assert_eq!(calls, good);
+        assert_eq!(s.steps(), good as u64);
+        assert_eq!(s.body(), probe.body());
+    }
+
+    #[test]
+    fn string_is_readable_and_cleared_by_reset() {
+        let mut s = sim();
+        assert!(s.string().is_none());
+        let string = SoftString::new(
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(0.5, 0.0, 0.0),
+            5.0,
+            1.0,
+            10.0,
+        )
+        .expect("valid");
+        s.set_string(Some(string));
+        assert_eq!(s.string(), Some(&string));
+        s.string_mut()
+            .expect("attached")
+            .set_target(Point3::new(2.0, 0.0, 0.0))
+            .expect("finite");
+        assert_eq!(
+            s.string().map(SoftString::target),
+            Some(Point3::new(2.0, 0.0, 0.0))
+        );
+        s.reset();
+        assert!(s.string().is_none());
     }
 
     #[test]

@@ -22,17 +22,19 @@ fn default_integrator_canonical_case() {
     let e0 = d[0].energy;
     // E exactly ½ Σ Iᵢωᵢ²; L = I ω.
     assert!((e0 - 0.5 * (1e-6 + 200.0 + 3e-6)).abs() < 1e-12);
+    // README: max |ΔE|/E 7.8e-14, |L| and world L drift 0, period error −3.4e-5; the bounds are
+    // about 10× that (world L: one rounding), so a truncated Newton solve fails them.
     for s in &d {
-        assert!(((s.energy - e0) / e0).abs() < 1e-9, "E at t = {}", s.time);
-        assert!(((s.angular_momentum_norm - l0.norm()) / l0.norm()).abs() < 1e-10);
-        assert!((s.angular_momentum - l0).norm() / l0.norm() < 1e-10);
+        assert!(((s.energy - e0) / e0).abs() < 1e-12, "E at t = {}", s.time);
+        assert!(((s.angular_momentum_norm - l0.norm()) / l0.norm()).abs() <= f64::EPSILON);
+        assert!((s.angular_momentum - l0).norm() / l0.norm() <= f64::EPSILON);
     }
     let z = crossings(&d, 1);
     assert_eq!(z.len(), 17, "reversals of ω₂ in 60 s");
     let period = 2.0 * (z[16] - z[0]) / 16.0;
     let exact = flip_period(MOMENTS, [0.001, 20.0, 0.003]);
     assert!(
-        ((period - exact) / exact).abs() < 1e-3,
+        ((period - exact) / exact).abs() < 3.4e-4,
         "period {period} vs 4K/λ = {exact}"
     );
 }
@@ -80,26 +82,37 @@ fn coarse_step_still_flips_17_times() {
     );
     let d = run(&mut sim, 60.0);
     let e0 = d[0].energy;
-    assert!(d.iter().all(|s| ((s.energy - e0) / e0).abs() < 1e-9));
+    // Measured 1.8e-14: at any step the midpoint rule keeps E to round-off.
+    assert!(d.iter().all(|s| ((s.energy - e0) / e0).abs() < 1e-12));
     assert_eq!(crossings(&d, 1).len(), 17);
 }
 
 #[test]
 fn structure_preserving_integrators_get_the_flip() {
-    for integrator in [Integrator::Splitting, Integrator::Exact] {
+    // README: splitting period error +2.9e-5 (E bounded at 1.6e-4); exact +7.2e-9 and E 9.9e-14.
+    // Bounds about 10× those; world L is never touched by either (one rounding allowed).
+    for (integrator, period_tol, energy_tol) in [
+        (Integrator::Splitting, 3e-4, 1e-3),
+        (Integrator::Exact, 7e-8, 1e-12),
+    ] {
         let mut sim = simulation(MOMENTS, OMEGA0, integrator, RotationModel::Full, DT);
         let d = run(&mut sim, 60.0);
         let l0 = d[0].angular_momentum;
+        let e0 = d[0].energy;
         assert!(
             d.iter()
-                .all(|s| (s.angular_momentum - l0).norm() < 1e-10 * l0.norm())
+                .all(|s| (s.angular_momentum - l0).norm() <= f64::EPSILON * l0.norm())
+        );
+        assert!(
+            d.iter().all(|s| ((s.energy - e0) / e0).abs() < energy_tol),
+            "{integrator}"
         );
         let z = crossings(&d, 1);
         assert_eq!(z.len(), 17, "{integrator}");
         let period = 2.0 * (z[16] - z[0]) / 16.0;
         let exact = flip_period(MOMENTS, [0.001, 20.0, 0.003]);
         assert!(
-            ((period - exact) / exact).abs() < 1e-3,
+            ((period - exact) / exact).abs() < period_tol,
             "{integrator}: {period} vs {exact}"
         );
     }

@@ -73,7 +73,7 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
         MassSpec::Density(_) => analysis.properties,
     };
     for w in &analysis.warnings {
-        eprintln!("warning: {file}: {w}");
+        eprintln!("warning: {file}: {}", super::report::warning_text(w));
     }
     let options = ExportOptions {
         format: args.format,

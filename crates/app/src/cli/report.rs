@@ -2,14 +2,15 @@
 
 use std::fmt::Write as _;
 
-use massprops::{Analysis, Comparison, Degeneracy, MassProperties, Method};
+use massprops::{Analysis, Comparison, Degeneracy, MassProperties, Method, Warning};
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde_json::{Value, json};
 
 use crate::export::TENSOR_CONVENTION;
 
 /// Version of the JSON schema printed by `props --json`; bumped on any incompatible change.
-pub const SCHEMA_VERSION: u32 = 1;
+/// 2: each warning is an object `{code, message, …its data}` instead of a sentence.
+pub const SCHEMA_VERSION: u32 = 2;
 
 fn rows(m: &Matrix3<f64>) -> Value {
     json!([
@@ -105,8 +106,82 @@ pub fn json(file: &str, scale: f64, a: &Analysis) -> Value {
             "nonplanar_faces": d.nonplanar_faces,
             "flipped": a.flipped,
         },
-        "warnings": a.warnings,
+        "warnings": a.warnings.iter().map(warning_json).collect::<Vec<_>>(),
     })
+}
+
+/// The command line's wording of a massprops warning (indices count from 0, as everywhere).
+pub fn warning_text(w: &Warning) -> String {
+    let join = |v: &[usize]| {
+        v.iter()
+            .map(usize::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    match w {
+        Warning::OpenMesh {
+            boundary_edges,
+            examples,
+        } => {
+            let examples: Vec<String> = examples.iter().map(|(a, b)| format!("{a}-{b}")).collect();
+            format!(
+                "the mesh is open: {boundary_edges} boundary edge(s) (e.g. between vertices {}, \
+                 counting from 0); a solid's volume is not defined by an open surface and these \
+                 numbers depend on where the holes are. Close the mesh, or use --method shell for \
+                 a sheet",
+                examples.join(", ")
+            )
+        }
+        Warning::NonManifoldEdges { count } => format!(
+            "{count} non-manifold edge(s) (shared by more than two faces): touching or \
+             overlapping parts are counted once each"
+        ),
+        Warning::InconsistentWinding { edges } => format!(
+            "{edges} edge(s) where neighbouring faces wind in opposite senses: some faces are \
+             flipped, and the volume method counts them as negative volume"
+        ),
+        Warning::Flipped => "the faces wind clockwise seen from outside (negative signed \
+                             volume): the result was flipped to that of the outward-wound mesh"
+            .to_owned(),
+        Warning::DegenerateFaces { count, examples } => format!(
+            "{count} degenerate face(s) of zero area (e.g. face {}, counting from 0); they \
+             contribute nothing",
+            join(examples)
+        ),
+        Warning::NonPlanarFaces { count, examples } => format!(
+            "{count} non-planar polygon(s) (e.g. face {}, counting from 0); each is integrated as \
+             the polygon projected onto its best-fit plane",
+            join(examples)
+        ),
+        // massprops may add warnings; their code still names them.
+        other => format!("{} (see the massprops documentation)", other.code()),
+    }
+}
+
+/// A warning in JSON: `{"code", "message", …}` plus the variant's data under the names of its
+/// fields (vertex pairs as two-element arrays).
+fn warning_json(w: &Warning) -> Value {
+    let mut object = json!({ "code": w.code(), "message": warning_text(w) });
+    let data = match w {
+        Warning::OpenMesh {
+            boundary_edges,
+            examples,
+        } => json!({
+            "boundary_edges": boundary_edges,
+            "examples": examples.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
+        }),
+        Warning::NonManifoldEdges { count } => json!({ "count": count }),
+        Warning::InconsistentWinding { edges } => json!({ "edges": edges }),
+        Warning::DegenerateFaces { count, examples }
+        | Warning::NonPlanarFaces { count, examples } => {
+            json!({ "count": count, "examples": examples })
+        }
+        _ => json!({}),
+    };
+    if let (Some(object), Value::Object(data)) = (object.as_object_mut(), data) {
+        object.extend(data);
+    }
+    object
 }
 
 /// Significant digits of the human table (JSON keeps every digit).
@@ -156,7 +231,13 @@ fn significant(v: f64, digits: usize) -> String {
 
 fn matrix_lines(out: &mut String, m: &Matrix3<f64>) {
     let largest = m.amax();
-    let entry = |v: f64| num(if v.abs() < TABLE_ZERO * largest { 0.0 } else { v });
+    let entry = |v: f64| {
+        num(if v.abs() < TABLE_ZERO * largest {
+            0.0
+        } else {
+            v
+        })
+    };
     for r in 0..3 {
         let _ = writeln!(
             out,
@@ -301,7 +382,7 @@ pub fn table(file: &str, scale: f64, a: &Analysis) -> String {
     } else {
         let _ = writeln!(s, "\nWarnings:");
         for w in &a.warnings {
-            let _ = writeln!(s, "  - {w}");
+            let _ = writeln!(s, "  - {}", warning_text(w));
         }
     }
     s
@@ -325,12 +406,18 @@ mod tests {
 
     #[test]
     fn round_off_beside_large_entries_prints_as_zero() {
-        let m = Matrix3::new(7e-11, -4.9e-27, 0.0, -4.9e-27, 7e-11, 2e-13, 0.0, 2e-13, 5e-11);
+        let m = Matrix3::new(
+            7e-11, -4.9e-27, 0.0, -4.9e-27, 7e-11, 2e-13, 0.0, 2e-13, 5e-11,
+        );
         let mut out = String::new();
         matrix_lines(&mut out, &m);
         let rows: Vec<Vec<&str>> = out
             .lines()
-            .map(|l| l.trim_matches(|c| c == ' ' || c == '[' || c == ']').split_whitespace().collect())
+            .map(|l| {
+                l.trim_matches(|c| c == ' ' || c == '[' || c == ']')
+                    .split_whitespace()
+                    .collect()
+            })
             .collect();
         assert_eq!(rows[0], ["7e-11", "0", "0"]);
         // 2e-13 is 3e-3 of the largest entry: a real product of inertia, kept.

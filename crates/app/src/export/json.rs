@@ -6,8 +6,8 @@
 
 use serde_json::json;
 
-use super::frames::Converted;
 use super::TENSOR_CONVENTION;
+use super::frames::Converted;
 
 /// Version of this export schema; bumped on any incompatible change.
 pub const SCHEMA_VERSION: u32 = 1;

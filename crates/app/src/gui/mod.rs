@@ -13,8 +13,8 @@ use egui::Key;
 pub mod dialogs;
 pub mod panels;
 pub mod view3d;
+pub mod warnings;
 
-use crate::cli::CliError;
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Lab};
 use dialogs::{Dialog, DialogPurpose};
@@ -368,7 +368,7 @@ impl eframe::App for LabApp {
 ///
 /// # Errors
 /// No window or GL context could be created (no display, no OpenGL 3).
-pub fn run(args: &GuiArgs) -> Result<(), CliError> {
+pub fn run(args: &GuiArgs) -> Result<(), eframe::Error> {
     let bench = args.bench_frames.map(|frames| Bench {
         frames: frames.max(1),
         hide_plots: args.bench_no_plots,
@@ -425,5 +425,4 @@ pub fn run(args: &GuiArgs) -> Result<(), CliError> {
             Ok(Box::new(app))
         }),
     )
-    .map_err(|e| CliError::Runtime(format!("cannot start the app: {e}")))
 }

@@ -24,7 +24,11 @@ pub const SAMPLES: [(&str, &str, &str); 7] = [
         "tennis_racket.obj",
         include_str!("../../../../assets/tennis_racket.obj"),
     ),
-    ("Book", "book.obj", include_str!("../../../../assets/book.obj")),
+    (
+        "Book",
+        "book.obj",
+        include_str!("../../../../assets/book.obj"),
+    ),
     (
         "Hammer",
         "hammer.obj",
@@ -35,7 +39,11 @@ pub const SAMPLES: [(&str, &str, &str); 7] = [
         "l_bracket.obj",
         include_str!("../../../../assets/l_bracket.obj"),
     ),
-    ("Cube", "cube.obj", include_str!("../../../../assets/cube.obj")),
+    (
+        "Cube",
+        "cube.obj",
+        include_str!("../../../../assets/cube.obj"),
+    ),
     (
         "Torus",
         "torus.obj",

@@ -40,10 +40,54 @@ impl Level {
             .unwrap_or(Level::Portable)
     }
 
-    /// Every level this CPU supports, `Portable` first.
+    /// Every level this CPU supports, `Portable` first; prints the others to stderr, so a test
+    /// run says which kernels it did not check.
     #[cfg(test)]
     pub(crate) fn available() -> Vec<Level> {
+        for (level, why) in Self::unavailable() {
+            eprintln!("not tested here: {level:?} ({why})");
+        }
         Self::ALL.into_iter().filter(|l| l.is_supported()).collect()
+    }
+
+    /// Every level this CPU lacks, each with the reason, for tests to say what they did not
+    /// cover (a test that only loops over [`Level::available`] passes silently without them).
+    #[cfg(test)]
+    pub(crate) fn unavailable() -> Vec<(Level, String)> {
+        Self::ALL
+            .into_iter()
+            .filter(|l| !l.is_supported())
+            .map(|l| (l, l.missing_features()))
+            .collect()
+    }
+
+    /// Why this CPU cannot run `self`: the features it lacks.
+    #[cfg(test)]
+    fn missing_features(self) -> String {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let needed: &[&str] = match self {
+                Level::Portable => &[],
+                Level::Avx2 => &["avx2", "fma"],
+                Level::Avx512 => &["avx2", "fma", "avx512f", "avx512vl", "avx512dq"],
+            };
+            // `is_x86_feature_detected!` takes literals only, hence the match.
+            let has = |f: &str| match f {
+                "avx2" => std::arch::is_x86_feature_detected!("avx2"),
+                "fma" => std::arch::is_x86_feature_detected!("fma"),
+                "avx512f" => std::arch::is_x86_feature_detected!("avx512f"),
+                "avx512vl" => std::arch::is_x86_feature_detected!("avx512vl"),
+                "avx512dq" => std::arch::is_x86_feature_detected!("avx512dq"),
+                _ => false,
+            };
+            let lacking: Vec<&str> = needed.iter().copied().filter(|f| !has(f)).collect();
+            format!("CPU lacks {}", lacking.join(", "))
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            let _ = self;
+            "not an x86-64 CPU".to_owned()
+        }
     }
 
     const ALL: [Level; 3] = [Level::Portable, Level::Avx2, Level::Avx512];
@@ -525,5 +569,26 @@ mod x86 {
             let high = _mm256_maskz_loadu_pd(0b0111, q.coords.as_ptr());
             _mm512_insertf64x4::<1>(_mm512_castpd256_pd512(low), high)
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_level_is_either_available_or_reported_missing() {
+        let available = Level::available();
+        let unavailable = Level::unavailable();
+        assert_eq!(available.first(), Some(&Level::Portable));
+        for level in Level::ALL {
+            let missing = unavailable.iter().find(|(l, _)| *l == level);
+            assert_ne!(available.contains(&level), missing.is_some(), "{level:?}");
+            if let Some((_, why)) = missing {
+                // Names what is lacking: a bare "CPU lacks " would tell the reader nothing.
+                assert!(!why.ends_with("lacks "), "{level:?}: {why}");
+            }
+        }
+        assert_eq!(available.len() + unavailable.len(), Level::ALL.len());
     }
 }

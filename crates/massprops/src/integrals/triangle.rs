@@ -10,9 +10,9 @@
 
 use nalgebra::Point3;
 
-use super::simd::{Kernel, Level, Real, prefetch};
 #[cfg(feature = "parallel")]
 use super::parallel;
+use super::simd::{Kernel, Level, Real, prefetch};
 use super::{BLOCK, compensated_total};
 
 /// Final factors of the tetrahedron sums: 1/6, 1/24, 1/120.

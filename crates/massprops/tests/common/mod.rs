@@ -110,6 +110,22 @@ pub fn tetra_sum(mesh: &PolyMesh) -> (f64, Point3<f64>, Matrix3<f64>) {
     (volume, o + com, central)
 }
 
+/// Unit-density inertia tensor about the origin of a closed mesh, integrated about the origin
+/// itself (no shift theorem): signed tetrahedra (0, p₀, p₁, p₂) over a fan triangulation, each
+/// of covariance det(A)·A·C₀·Aᵀ (see [`tetra_sum`]), and I = tr(C)·E − C.
+pub fn inertia_about_origin(mesh: &PolyMesh) -> Matrix3<f64> {
+    let c0 = Matrix3::new(2.0, 1.0, 1.0, 1.0, 2.0, 1.0, 1.0, 1.0, 2.0) / 120.0;
+    let mut cov = Matrix3::zeros();
+    for f in 0..mesh.face_count() {
+        let pts: Vec<Vector3<f64>> = mesh.face_points(f).map(|p| p.coords).collect();
+        for w in pts[1..].windows(2) {
+            let a = Matrix3::from_columns(&[pts[0], w[0], w[1]]);
+            cov += a * c0 * a.transpose() * a.determinant();
+        }
+    }
+    inertia_from_covariance(&cov)
+}
+
 /// Area, centroid and second area moments ∫x², ∫y², ∫xy (about the origin) of a simple
 /// polygon given counter-clockwise, by the shoelace-type sums over its edges.
 pub struct PolygonMoments {

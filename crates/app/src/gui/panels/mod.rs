@@ -42,11 +42,7 @@ impl Default for PanelState {
 
 /// The Run / Pause button (in the side panel and over the plots).
 pub(crate) fn pause_button(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
-    let label = if lab.is_paused() {
-        "Run"
-    } else {
-        "Pause"
-    };
+    let label = if lab.is_paused() { "Run" } else { "Pause" };
     if ui.button(label).clicked() {
         commands.push(Command::TogglePause);
     }

@@ -190,12 +190,7 @@ fn error_text(text: String, large: bool) -> RichText {
     }
 }
 
-fn motion_section(
-    ui: &mut egui::Ui,
-    lab: &Lab,
-    commands: &mut Vec<Command>,
-    s: &mut AppSettings,
-) {
+fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: &mut AppSettings) {
     egui::CollapsingHeader::new("Motion")
         .default_open(true)
         .show(ui, |ui| {
@@ -292,7 +287,10 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                 " m/s",
             );
             let primary = lab.primary();
-            ui.small(format!("J = {:.4e} N·s", primary.poke_impulse(lab.settings())));
+            ui.small(format!(
+                "J = {:.4e} N·s",
+                primary.poke_impulse(lab.settings())
+            ));
             number(
                 ui,
                 "String frequency",
@@ -350,14 +348,10 @@ fn diagnostics_section(ui: &mut egui::Ui, lab: &Lab) {
                 d.surface_area
             ));
         }
-        if a.flipped {
-            ui.colored_label(
-                Color32::YELLOW,
-                "faces wound inwards: results are for the flipped mesh",
-            );
-        }
+        // `Flipped` is among the warnings, so it is said once.
         for w in &a.warnings {
-            ui.colored_label(Color32::YELLOW, format!("⚠ {w}"));
+            let text = crate::gui::warnings::warning_text(w);
+            ui.add(egui::Label::new(RichText::new(text).color(Color32::YELLOW)).wrap());
         }
     });
 }

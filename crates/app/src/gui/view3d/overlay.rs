@@ -256,9 +256,8 @@ fn equivalent(o: &mut Overlay, c: &Context<'_>) {
     let principal = body.orientation();
     let to_world = |p: Vector3<f64>| c.com + principal * p;
     if c.view.equivalent == Equivalent::Box {
-        let corner = |k: usize| {
-            Vector3::from_fn(|a, _| if k >> a & 1 == 0 { -half[a] } else { half[a] })
-        };
+        let corner =
+            |k: usize| Vector3::from_fn(|a, _| if k >> a & 1 == 0 { -half[a] } else { half[a] });
         for (a, b) in cube_edges() {
             o.line(
                 to_world(corner(a)),
@@ -315,7 +314,13 @@ fn center_of_mass(o: &mut Overlay, c: &Context<'_>) {
 fn omega_arrow(o: &mut Overlay, c: &Context<'_>) {
     if c.view.omega_arrow {
         let w = c.specimen.sim().body().omega_world();
-        o.arrow(c.com, c.scaled(w, c.rate()), OMEGA_COLOR, "ω", Align2::LEFT_TOP);
+        o.arrow(
+            c.com,
+            c.scaled(w, c.rate()),
+            OMEGA_COLOR,
+            "ω",
+            Align2::LEFT_TOP,
+        );
     }
 }
 
@@ -325,8 +330,8 @@ fn l_arrow(o: &mut Overlay, c: &Context<'_>) {
     }
     // Without torque about the centre of mass (gravity acts at it) L is conserved: say so where
     // the user sees the arrow stand still.
-    let torque_free = c.lab.settings().physics.angular_damping == 0.0
-        && c.specimen.string_view().is_none();
+    let torque_free =
+        c.lab.settings().physics.angular_damping == 0.0 && c.specimen.string_view().is_none();
     let label = if torque_free {
         "L (fixed: no torque)"
     } else {
