@@ -171,12 +171,40 @@ fn book_mass_option_scale_and_methods() {
 }
 
 #[test]
-fn human_table_states_the_convention_and_full_precision() {
+fn human_table_has_ten_digits_and_json_every_digit() {
     let out = run(&["props", "assets/book.obj"]);
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("off-diagonals = -sum(m*x*y)"));
-    assert!(text.contains("151.66666666666666"), "{text}");
+    // I_xx = 28·65/12 = 151.666…: 10 significant digits in the table, all 17 in the JSON.
+    assert!(text.contains(" 151.6666667 "), "{text}");
+    assert!(!text.contains("151.66666666"), "{text}");
+    let j = props_json(&["assets/book.obj"]);
+    assert_eq!(f(&j["inertia_com"][0][0]), 151.66666666666666);
+    // The book's axes are the mesh axes: round-off off the diagonal prints as 0.
+    let rows: Vec<&str> = text
+        .lines()
+        .filter(|l| l.trim_start().starts_with('['))
+        .collect();
+    assert!(rows[0].contains(" 0 "), "{}", rows[0]);
+}
+
+/// A given mass is reported as given, in the table and the JSON (ρ·V with ρ = m/V would not be).
+#[test]
+fn given_mass_is_reported_exactly() {
+    for mass in ["0.2", "0.1", "3.3"] {
+        let out = run(&["props", "assets/t_handle.obj", "--mass", mass]);
+        let text = String::from_utf8_lossy(&out.stdout);
+        let line = text
+            .lines()
+            .find(|l| l.trim_start().starts_with("mass "))
+            .expect("mass line");
+        assert_eq!(line.split_whitespace().nth(1), Some(mass), "{line}");
+        let j = props_json(&["assets/t_handle.obj", "--mass", mass]);
+        assert_eq!(f(&j["mass"]), mass.parse::<f64>().expect("number"));
+        let shell = props_json(&["assets/t_handle.obj", "--mass", mass, "--method", "shell"]);
+        assert_eq!(f(&shell["mass"]), mass.parse::<f64>().expect("number"));
+    }
 }
 
 #[test]

@@ -11,9 +11,13 @@ use inertia_lab::gui::LabApp;
 use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassSpec};
 
 fn harness() -> Harness<'static, LabApp> {
+    harness_of_size([1280.0, 800.0])
+}
+
+fn harness_of_size(size: [f32; 2]) -> Harness<'static, LabApp> {
     let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
     Harness::builder()
-        .with_size([1280.0, 800.0])
+        .with_size(size)
         .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app)
 }
 
@@ -136,7 +140,8 @@ fn samples_load_and_help_opens_with_f1() {
 /// Edits in two panels in the same frame both survive (the panels share one settings draft).
 #[test]
 fn reset_settings_spin_presets_and_reset_from_the_panel() {
-    let mut h = harness();
+    // Tall enough that "Reset settings", at the bottom of the side panel, is on screen.
+    let mut h = harness_of_size([1280.0, 1400.0]);
     frames(&mut h, 2);
     h.get_by_label("Spin axis 3").click();
     frames(&mut h, 2);

@@ -150,7 +150,12 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
                 MassSpec::Density(d) => d,
                 MassSpec::Mass(m) => m / area,
             };
-            let p = unit.with_mass(sigma * area)?;
+            // A given mass is kept exactly (σ·area would round it: 0.2 → 0.20000000000000004).
+            let mass = match spec {
+                MassSpec::Density(d) => d * area,
+                MassSpec::Mass(m) => m,
+            };
+            let p = unit.with_mass(mass)?;
             (p, Some(sigma), solid.as_ref().is_ok_and(|s| s.flipped))
         }
         // With the mass given, the approximations use no volume (nor a density found from it):
@@ -169,7 +174,11 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
                 MassSpec::Density(d) => d,
                 MassSpec::Mass(m) => m / solid.volume,
             };
-            let exact = solid.with_density(density)?;
+            let mut exact = solid.with_density(density)?;
+            if let MassSpec::Mass(m) = spec {
+                // Kept exactly: ρ·V with ρ = m/V would round it (0.2 → 0.20000000000000004).
+                exact = exact.with_mass(m)?;
+            }
             let p = match method {
                 Method::Volume => exact,
                 _ => approximation(mesh, method, exact.mass)?,

@@ -205,8 +205,11 @@ proptest! {
     ) {
         let m = body.moments();
         // The period scales as 1/|ω|: find it at |ω| = 1, then spin at the rate giving `period`.
-        let t1 = torque_free_period(&m, &spun(body, spin, 1.0).angular_momentum_principal());
-        let t1 = t1.expect("neither steady nor on the separatrix");
+        let l1 = spun(body, spin, 1.0).angular_momentum_principal();
+        // Where one rounding of the state moves the motion by more than 1e-6 (a needle drawn
+        // 1e-9 from the separatrix) the state does not define which side it is on: skip.
+        prop_assume!(EPS * condition(&l1, &m) < 1e-6);
+        let t1 = torque_free_period(&m, &l1).expect("neither steady nor on the separatrix");
         let body = spun(body, spin, t1 / period);
         let l0 = body.angular_momentum_principal();
         let t = torque_free_period(&m, &l0).expect("generic motion");

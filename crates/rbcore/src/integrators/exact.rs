@@ -250,20 +250,8 @@ pub(crate) fn free_rotor(body: &mut Body, h: f64) {
         super::midpoint_cayley::free_rotor(body, h);
         return;
     };
-    // Reference axis: the extreme axis L comes least close to, since θ, φ and the quadrature of
-    // ψ̇ lose accuracy where L passes near it. L is closest to either where it crosses their
-    // plane (cn = ±1, dn = 1), at components I·A₁ on the cn axis and I·A₃ on the dn axis. Mostly
-    // that makes the cn axis the reference (the opposite extreme to the one L circles), but near
-    // the separatrix of a nearly oblate (I₁ ≈ I₂) or prolate (I₂ ≈ I₃) top L sweeps past the cn
-    // axis and the dn axis is the farther one.
-    let [cn_axis, _, dn_axis] = motion.axes;
-    let a = if body.moments[cn_axis] * motion.amplitude[0]
-        <= body.moments[dn_axis] * motion.amplitude[2]
-    {
-        cn_axis
-    } else {
-        dn_axis
-    };
+    // Reference axis: the major one (index 2) when motion circles the minor axis, else the minor.
+    let a = if motion.axes[0] == 2 { 2 } else { 0 };
     let (b, c) = ((a + 1) % 3, (a + 2) % 3);
     let permute = |v: &Vector3<f64>| Vector3::new(v[b], v[c], v[a]);
     // Π: principal → permuted coordinates, a proper (cyclic) rotation.
