@@ -301,3 +301,572 @@ fn committed_assets_match_their_generator() {
         );
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Bodies written by the tests, with closed-form mass properties.
+
+type V3 = [f64; 3];
+type M3 = [[f64; 3]; 3];
+
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn norm(a: V3) -> f64 {
+    dot(a, a).sqrt()
+}
+
+fn vec3(v: &Value) -> V3 {
+    [0, 1, 2].map(|k| f(&v[k]))
+}
+
+fn mat3(v: &Value) -> M3 {
+    [0, 1, 2].map(|r| vec3(&v[r]))
+}
+
+/// Distance from `a` to the nearer of `b` and `−b`.
+fn up_to_sign(a: V3, b: V3) -> f64 {
+    norm(sub(a, b)).min(norm([a[0] + b[0], a[1] + b[1], a[2] + b[2]]))
+}
+
+/// An OBJ of `vertices` and `faces` (0-based here, 1-based in the file), every digit kept.
+fn obj(vertices: &[V3], faces: &[Vec<usize>]) -> String {
+    let mut s = String::new();
+    for v in vertices {
+        s += &format!("v {:?} {:?} {:?}\n", v[0], v[1], v[2]);
+    }
+    for face in faces {
+        let idx: Vec<String> = face.iter().map(|i| (i + 1).to_string()).collect();
+        s += &format!("f {}\n", idx.join(" "));
+    }
+    s
+}
+
+/// The six outward-wound quads of a box whose corners are numbered as in [`box_corners`].
+fn box_faces() -> Vec<Vec<usize>> {
+    vec![
+        vec![0, 3, 2, 1],
+        vec![0, 1, 5, 4],
+        vec![1, 2, 6, 5],
+        vec![2, 3, 7, 6],
+        vec![3, 0, 4, 7],
+        vec![4, 5, 6, 7],
+    ]
+}
+
+/// Corners of the box [0, a] × [0, b] × [0, c] shifted by −`centre`: bottom ring counter-clockwise
+/// seen from +z, then the top ring.
+fn box_corners(size: V3, centre: V3) -> Vec<V3> {
+    let [a, b, c] = size;
+    [
+        [0.0, 0.0, 0.0],
+        [a, 0.0, 0.0],
+        [a, b, 0.0],
+        [0.0, b, 0.0],
+        [0.0, 0.0, c],
+        [a, 0.0, c],
+        [a, b, c],
+        [0.0, b, c],
+    ]
+    .iter()
+    .map(|p| sub(*p, centre))
+    .collect()
+}
+
+/// Inertia of a solid box of mass `m` and edges `d` about its centre, axes along its edges.
+fn box_inertia(m: f64, d: V3) -> M3 {
+    let [a, b, c] = d.map(|x| x * x);
+    [
+        [m * (b + c) / 12.0, 0.0, 0.0],
+        [0.0, m * (a + c) / 12.0, 0.0],
+        [0.0, 0.0, m * (a + b) / 12.0],
+    ]
+}
+
+/// m(|d|²E − d dᵀ): a point mass m at d, about the origin (off-diagonals −m·x·y).
+fn point_inertia(m: f64, d: V3) -> M3 {
+    let n2 = dot(d, d);
+    std::array::from_fn(|r| {
+        std::array::from_fn(|c| m * (if r == c { n2 } else { 0.0 } - d[r] * d[c]))
+    })
+}
+
+fn add(a: M3, b: M3) -> M3 {
+    std::array::from_fn(|r| std::array::from_fn(|c| a[r][c] + b[r][c]))
+}
+
+/// Principal moments (ascending) and unit axes of a tensor with no xz or yz products: the xy
+/// block in closed form, z on its own.
+fn principal_of_plate(i: M3) -> [(f64, V3); 3] {
+    let scale = i[0][0].abs().max(i[1][1].abs()).max(i[2][2].abs());
+    assert!(i[0][2].abs() + i[1][2].abs() < 1e-13 * scale, "{i:?}");
+    let (a, b, c) = (i[0][0], i[0][1], i[1][1]);
+    let (mean, half) = ((a + c) / 2.0, ((a - c) / 2.0).hypot(b));
+    assert!(b != 0.0, "the xy block is already diagonal");
+    let axis = |l: f64| {
+        // (b, λ − a) or (λ − c, b): the better conditioned of the two.
+        let (u, v) = if (l - a).abs() > (l - c).abs() {
+            (b, l - a)
+        } else {
+            (l - c, b)
+        };
+        let n = u.hypot(v);
+        [u / n, v / n, 0.0]
+    };
+    let mut p = [
+        (mean - half, axis(mean - half)),
+        (mean + half, axis(mean + half)),
+        (i[2][2], [0.0, 0.0, 1.0]),
+    ];
+    p.sort_by(|x, y| x.0.total_cmp(&y.0));
+    p
+}
+
+/// Angle in degrees between two axes, 0 to 90 (the sign of an axis is free).
+fn axis_angle_deg(a: V3, b: V3) -> f64 {
+    norm(cross(a, b)).atan2(dot(a, b).abs()).to_degrees()
+}
+
+/// An L-shaped prism moved off the origin: the arm [0, 5] × [0, 1] and the arm [0, 1] × [1, 3],
+/// 2 thick, shifted by (10, −5, 2); its hexagonal caps are non-convex polygons. Density 1.
+struct LPrism {
+    file: TempFile,
+    vertices: Vec<V3>,
+    mass: f64,
+    com: V3,
+    inertia: M3,
+}
+
+const L_SHIFT: V3 = [10.0, -5.0, 2.0];
+
+fn l_prism() -> LPrism {
+    let outline = [
+        [0.0, 0.0],
+        [5.0, 0.0],
+        [5.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 3.0],
+        [0.0, 3.0],
+    ];
+    let mut vertices = Vec::new();
+    for z in [0.0, 2.0] {
+        for [x, y] in outline {
+            vertices.push([x + L_SHIFT[0], y + L_SHIFT[1], z + L_SHIFT[2]]);
+        }
+    }
+    let mut faces = vec![vec![5, 4, 3, 2, 1, 0], vec![6, 7, 8, 9, 10, 11]];
+    for i in 0..6 {
+        let j = (i + 1) % 6;
+        faces.push(vec![i, j, j + 6, i + 6]);
+    }
+    let file = TempFile::new("l_prism.obj", obj(&vertices, &faces).as_bytes());
+    // Two boxes: (mass, edges, centre before the shift).
+    let parts = [
+        (10.0, [5.0, 1.0, 2.0], [2.5, 0.5, 1.0]),
+        (4.0, [1.0, 2.0, 2.0], [0.5, 2.0, 1.0]),
+    ];
+    let mass: f64 = parts.iter().map(|p| p.0).sum();
+    let com0: V3 = std::array::from_fn(|k| parts.iter().map(|p| p.0 * p.2[k]).sum::<f64>() / mass);
+    let mut inertia = [[0.0; 3]; 3];
+    for (m, d, c) in parts {
+        inertia = add(
+            inertia,
+            add(box_inertia(m, d), point_inertia(m, sub(c, com0))),
+        );
+    }
+    let com = std::array::from_fn(|k| com0[k] + L_SHIFT[k]);
+    LPrism {
+        file,
+        vertices,
+        mass,
+        com,
+        inertia,
+    }
+}
+
+fn assert_matrix_close(name: &str, got: M3, expected: M3, rel: f64) {
+    let scale = expected
+        .iter()
+        .flatten()
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    for r in 0..3 {
+        for c in 0..3 {
+            assert!(
+                (got[r][c] - expected[r][c]).abs() <= rel * scale,
+                "{name}[{r}][{c}]: {got:?} vs {expected:?}"
+            );
+        }
+    }
+}
+
+/// What `props` should report for one approximation of the L prism, computed here.
+struct Expected {
+    center: V3,
+    inertia: M3,
+    principal: [(f64, V3); 3],
+}
+
+/// The bounding-box cuboid [10, 15] × [−5, −2] × [2, 4] and the twelve vertex masses of the L
+/// prism, each at the prism's mass.
+fn l_prism_approximations(l: &LPrism) -> (Expected, Expected) {
+    let bbox_inertia = box_inertia(l.mass, [5.0, 3.0, 2.0]);
+    let bbox = Expected {
+        center: [12.5, -3.5, 3.0],
+        inertia: bbox_inertia,
+        principal: {
+            let d = [0, 1, 2].map(|k| {
+                (
+                    bbox_inertia[k][k],
+                    std::array::from_fn(|j| f64::from(u8::from(j == k))),
+                )
+            });
+            let mut d: [(f64, V3); 3] = d;
+            d.sort_by(|x, y| x.0.total_cmp(&y.0));
+            d
+        },
+    };
+    let n = l.vertices.len() as f64;
+    let center: V3 = std::array::from_fn(|k| l.vertices.iter().map(|v| v[k]).sum::<f64>() / n);
+    let inertia = l.vertices.iter().fold([[0.0; 3]; 3], |acc, v| {
+        add(acc, point_inertia(l.mass / n, sub(*v, center)))
+    });
+    let points = Expected {
+        center,
+        inertia,
+        principal: principal_of_plate(inertia),
+    };
+    (bbox, points)
+}
+
+#[test]
+fn approximations_of_an_off_centre_l_prism_match_closed_forms() {
+    let l = l_prism();
+    let j = props_json(&[l.file.path()]);
+    assert!(close(f(&j["mass"]), l.mass, 1e-13));
+    assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0), "{j}");
+    let com = vec3(&j["center_of_mass"]);
+    for k in 0..3 {
+        assert!((com[k] - l.com[k]).abs() < 1e-12, "{com:?} vs {:?}", l.com);
+    }
+    assert_matrix_close("inertia_com", mat3(&j["inertia_com"]), l.inertia, 1e-12);
+    assert_eq!(j["principal_degeneracy"], "distinct");
+    let exact = principal_of_plate(l.inertia);
+    let moments = vec3(&j["principal_moments"]);
+    for i in 0..3 {
+        assert!(
+            close(moments[i], exact[i].0, 1e-12),
+            "{moments:?} vs {exact:?}"
+        );
+    }
+    // 12 corners, 2 hexagons (4 triangles each) + 6 quads, 18 edges: V − E + F = 2.
+    let mesh = &j["mesh"];
+    assert_eq!(
+        [
+            &mesh["vertices"],
+            &mesh["faces"],
+            &mesh["triangles"],
+            &mesh["edges"]
+        ],
+        [12, 8, 20, 18]
+    );
+    // The bounding box, exactly: integer coordinates.
+    assert_eq!(vec3(&j["bounding_box"]["min"]), [10.0, -5.0, 2.0]);
+    assert_eq!(vec3(&j["bounding_box"]["max"]), [15.0, -2.0, 4.0]);
+
+    let (bbox, points) = l_prism_approximations(&l);
+    for (name, e) in [("bbox", &bbox), ("points", &points)] {
+        let a = &j["approximations"][name];
+        let center = vec3(&a["center"]);
+        for k in 0..3 {
+            assert!(
+                (center[k] - e.center[k]).abs() < 1e-12,
+                "{name} centre {center:?}"
+            );
+        }
+        assert_matrix_close(name, mat3(&a["inertia"]), e.inertia, 1e-12);
+        let pm = vec3(&a["principal_moments"]);
+        let err = vec3(&a["principal_moment_error"]);
+        let angles = &a["principal_axis_angle_deg"];
+        for i in 0..3 {
+            assert!(
+                close(pm[i], e.principal[i].0, 1e-12),
+                "{name} moments {pm:?}"
+            );
+            let expected_err = (e.principal[i].0 - exact[i].0) / exact[i].0;
+            assert!(
+                (err[i] - expected_err).abs() < 1e-12,
+                "{name} moment error {i}: {} vs {expected_err}",
+                err[i]
+            );
+            let expected_angle = axis_angle_deg(e.principal[i].1, exact[i].1);
+            let angle = f(&angles[i]);
+            assert!(
+                (angle - expected_angle).abs() < 1e-9,
+                "{name} axis angle {i}: {angle} vs {expected_angle}"
+            );
+        }
+        // The top-level tensors are the same approximations.
+        let top = if name == "bbox" {
+            "inertia_bbox"
+        } else {
+            "inertia_points"
+        };
+        assert_matrix_close(top, mat3(&j[top]), e.inertia, 1e-12);
+    }
+    // Sanity of the body chosen: the errors and angles are not trivially zero.
+    assert!(f(&j["approximations"]["bbox"]["principal_axis_angle_deg"][0]) > 10.0);
+    assert!(f(&j["approximations"]["points"]["principal_moment_error"][0]) > 1.0);
+}
+
+/// Numbers on the table line that starts with `label` (after trimming), `%`, `°` and `,` dropped.
+fn table_numbers(section: &str, label: &str) -> Vec<f64> {
+    let line = section
+        .lines()
+        .find_map(|l| l.trim_start().strip_prefix(label))
+        .unwrap_or_else(|| panic!("a line {label:?} in\n{section}"));
+    line.split([' ', ','])
+        .filter(|w| !w.is_empty())
+        .map(|w| {
+            let w = w.trim_end_matches(['%', '°']);
+            w.parse()
+                .unwrap_or_else(|_| panic!("number {w:?} in {line:?}"))
+        })
+        .collect()
+}
+
+#[test]
+fn table_approximation_section_of_the_l_prism_matches_closed_forms() {
+    let l = l_prism();
+    let out = run(&["props", l.file.path()]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    let exact = principal_of_plate(l.inertia);
+    let (bbox, points) = l_prism_approximations(&l);
+    let bbox_head = "bounding-box cuboid (about the box centre)";
+    let points_head = "vertex point masses (about their centre)";
+    let start = text.find(bbox_head).unwrap_or_else(|| panic!("{text}"));
+    let middle = text.find(points_head).unwrap_or_else(|| panic!("{text}"));
+    let end = text.find("\nMesh:").unwrap_or_else(|| panic!("{text}"));
+    for (section, e) in [(&text[start..middle], &bbox), (&text[middle..end], &points)] {
+        // 10 significant digits: half a unit in the 10th digit.
+        let pm = table_numbers(section, "principal moments");
+        assert_eq!(pm.len(), 3, "{section}");
+        for i in 0..3 {
+            assert!(close(pm[i], e.principal[i].0, 5.1e-10), "{section}");
+        }
+        // Percent with two decimals.
+        let err = table_numbers(section, "moment error");
+        assert_eq!(err.len(), 3, "{section}");
+        for i in 0..3 {
+            let expected = 100.0 * (e.principal[i].0 - exact[i].0) / exact[i].0;
+            assert!(
+                (err[i] - expected).abs() <= 0.005 + 1e-9,
+                "{i}: {expected}\n{section}"
+            );
+        }
+        // Degrees with three decimals.
+        let angles = table_numbers(section, "axis angles");
+        assert_eq!(angles.len(), 3, "{section}");
+        for i in 0..3 {
+            let expected = axis_angle_deg(e.principal[i].1, exact[i].1);
+            assert!(
+                (angles[i] - expected).abs() <= 0.0005 + 1e-9,
+                "{i}: {expected}\n{section}"
+            );
+        }
+        let offset = table_numbers(section, "centre offset");
+        assert!(
+            close(offset[0], norm(sub(e.center, l.com)), 5.1e-10),
+            "{section}"
+        );
+    }
+}
+
+/// 30° about z, then 40° about x: the rotation matrix Rx(40°)·Rz(30°).
+fn rotation_30z_40x() -> M3 {
+    let (a, b) = (30f64.to_radians(), 40f64.to_radians());
+    let rz = [
+        [a.cos(), -a.sin(), 0.0],
+        [a.sin(), a.cos(), 0.0],
+        [0.0, 0.0, 1.0],
+    ];
+    let rx = [
+        [1.0, 0.0, 0.0],
+        [0.0, b.cos(), -b.sin()],
+        [0.0, b.sin(), b.cos()],
+    ];
+    std::array::from_fn(|r| std::array::from_fn(|c| (0..3).map(|k| rx[r][k] * rz[k][c]).sum()))
+}
+
+#[test]
+fn principal_axes_rows_are_the_rotated_box_edges_in_ascending_moment_order() {
+    // A 1 × 2 × 3 box centred at the origin, rotated by R and moved to t. Mass 6 (density 1):
+    // I = m(b² + c²)/12 about its 1-edge = 6.5, about its 2-edge = 5, about its 3-edge = 2.5.
+    let r = rotation_30z_40x();
+    let t = [0.3, -0.7, 1.1];
+    let corners: Vec<V3> = box_corners([1.0, 2.0, 3.0], [0.5, 1.0, 1.5])
+        .iter()
+        .map(|p| std::array::from_fn(|k| dot(r[k], *p) + t[k]))
+        .collect();
+    let file = TempFile::new("rotated_box.obj", obj(&corners, &box_faces()).as_bytes());
+    let j = props_json(&[file.path()]);
+    assert!(close(f(&j["mass"]), 6.0, 1e-13));
+    assert_eq!(j["principal_degeneracy"], "distinct");
+    let moments = vec3(&j["principal_moments"]);
+    for (m, expected) in moments.iter().zip([2.5, 5.0, 6.5]) {
+        assert!(close(*m, expected, 1e-12), "{moments:?}");
+    }
+    // Column k of R is the box's k-edge in mesh axes; ascending moments: 3-edge, 2-edge, 1-edge.
+    let edge = |k: usize| [r[0][k], r[1][k], r[2][k]];
+    let expected = [edge(2), edge(1), edge(0)];
+    let axes = mat3(&j["principal_axes"]);
+    for i in 0..3 {
+        assert!(
+            up_to_sign(axes[i], expected[i]) < 1e-12,
+            "row {i} = {:?}, expected ±{:?}",
+            axes[i],
+            expected[i]
+        );
+        assert!((norm(axes[i]) - 1.0).abs() < 1e-14);
+    }
+    // Right-handed: row0 × row1 = row2 (not merely ±).
+    let c = cross(axes[0], axes[1]);
+    assert!(norm(sub(c, axes[2])) < 1e-12, "{c:?} vs {:?}", axes[2]);
+    // Columns are not the axes: a rows/columns mix-up would fail the checks above.
+    for i in 0..3 {
+        let column = [axes[0][i], axes[1][i], axes[2][i]];
+        assert!(
+            up_to_sign(column, expected[i]) > 0.1,
+            "column {i} = {column:?}"
+        );
+    }
+    // The same axes reassemble the tensor: I = Σ Iᵢ aᵢ aᵢᵀ.
+    let tensor = mat3(&j["inertia_com"]);
+    let rebuilt: M3 = std::array::from_fn(|p| {
+        std::array::from_fn(|q| (0..3).map(|i| moments[i] * axes[i][p] * axes[i][q]).sum())
+    });
+    assert_matrix_close("inertia_com", tensor, rebuilt, 1e-12);
+}
+
+#[test]
+fn principal_degeneracy_names_equal_moments() {
+    let write_box = |size: V3| {
+        TempFile::new(
+            "box.obj",
+            obj(&box_corners(size, [0.0; 3]), &box_faces()).as_bytes(),
+        )
+    };
+    // 1 × 2 × 3: m/12·(13, 10, 5), distinct. 2 × 2 × 1: m/12·(5, 5, 8), I1 = I2.
+    // 1 × 1 × 3: m/12·(10, 10, 2), I2 = I3. Unit cube: I1 = I2 = I3.
+    let distinct = write_box([1.0, 2.0, 3.0]);
+    let flat = write_box([2.0, 2.0, 1.0]);
+    let long = write_box([1.0, 1.0, 3.0]);
+    for (file, name) in [
+        (distinct.path(), "distinct"),
+        ("assets/l_bracket.obj", "distinct"),
+        (flat.path(), "I1=I2"),
+        ("assets/torus.obj", "I1=I2"),
+        (long.path(), "I2=I3"),
+        ("assets/cube.obj", "I1=I2=I3"),
+    ] {
+        let j = props_json(&[file]);
+        assert_eq!(j["principal_degeneracy"], name, "{file}");
+        // Only a unique axis gets an angle; the others are null.
+        let angles = &j["approximations"]["bbox"]["principal_axis_angle_deg"];
+        let unique = match name {
+            "distinct" => [true; 3],
+            "I1=I2" => [false, false, true],
+            "I2=I3" => [true, false, false],
+            _ => [false; 3],
+        };
+        for i in 0..3 {
+            assert_eq!(angles[i].is_number(), unique[i], "{file}: {angles}");
+        }
+    }
+    let text = String::from_utf8_lossy(&run(&["props", "assets/torus.obj"]).stdout).into_owned();
+    assert!(
+        text.contains("n/a (equal moments), n/a (equal moments), "),
+        "{text}"
+    );
+}
+
+#[test]
+fn conventions_object_states_the_documented_conventions() {
+    let j = props_json(&["assets/book.obj"]);
+    let c = j["conventions"].as_object().expect("an object");
+    let mut keys: Vec<&str> = c.keys().map(String::as_str).collect();
+    keys.sort_unstable();
+    assert_eq!(
+        keys,
+        ["density", "frame", "principal_axes", "tensor", "units"]
+    );
+    let text = |k: &str| c[k].as_str().unwrap_or_else(|| panic!("{k} is text"));
+    // README, Conventions: I = ∑m(|r|²E − r rᵀ), off-diagonals −∑m·x·y.
+    assert_eq!(
+        text("tensor"),
+        "inertia tensor I = sum m(|r|^2 E - r r^T): diagonal = moments, off-diagonals = -sum(m*x*y)"
+    );
+    assert_eq!(
+        text("frame"),
+        "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin"
+    );
+    assert_eq!(
+        text("units"),
+        "lengths in the mesh unit times scale; mass in the unit of density times length^3"
+    );
+    assert_eq!(text("density"), "mass per volume");
+    assert_eq!(
+        text("principal_axes"),
+        "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set"
+    );
+    // A shell's density is per area.
+    let shell = props_json(&["assets/book.obj", "--method", "shell"]);
+    assert_eq!(shell["conventions"]["density"], "mass per area");
+}
+
+#[test]
+fn mesh_counts_of_a_closed_and_an_open_cube_of_quads() {
+    let corners = box_corners([1.0, 1.0, 1.0], [0.0; 3]);
+    let closed = TempFile::new("cube.obj", obj(&corners, &box_faces()).as_bytes());
+    let j = props_json(&[closed.path()]);
+    let mesh = &j["mesh"];
+    // 8 corners, 6 quads = 12 triangles, 12 edges (V − E + F = 2).
+    assert_eq!(mesh["vertices"], 8);
+    assert_eq!(mesh["faces"], 6);
+    assert_eq!(mesh["triangles"], 12);
+    assert_eq!(mesh["edges"], 12);
+    assert_eq!(mesh["closed"], true);
+    assert_eq!(mesh["consistently_oriented"], true);
+    assert_eq!(mesh["open_edges"], 0);
+    assert!(close(f(&j["surface_area"]), 6.0, 1e-15));
+    assert_eq!(vec3(&j["bounding_box"]["min"]), [0.0; 3]);
+    assert_eq!(vec3(&j["bounding_box"]["max"]), [1.0; 3]);
+
+    // Without its top: 5 quads = 10 triangles, still 12 edges of which the top 4 are open; the
+    // remaining faces still wind consistently.
+    let mut faces = box_faces();
+    faces.pop();
+    let open = TempFile::new("open_cube.obj", obj(&corners, &faces).as_bytes());
+    let j = props_json(&[open.path()]);
+    let mesh = &j["mesh"];
+    assert_eq!(mesh["vertices"], 8);
+    assert_eq!(mesh["faces"], 5);
+    assert_eq!(mesh["triangles"], 10);
+    assert_eq!(mesh["edges"], 12);
+    assert_eq!(mesh["closed"], false);
+    assert_eq!(mesh["consistently_oriented"], true);
+    assert_eq!(mesh["open_edges"], 4);
+    assert!(close(f(&j["surface_area"]), 5.0, 1e-15));
+}

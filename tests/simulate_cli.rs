@@ -195,3 +195,241 @@ fn bad_input_gets_the_documented_exit_codes() {
         assert!(out.stdout.is_empty(), "{args:?}");
     }
 }
+
+/// One row of the `--compare` table.
+#[derive(Debug)]
+struct CompareRow {
+    flips: u32,
+    /// `None` where the table says n/a.
+    period_error: Option<f64>,
+    energy_error: f64,
+    omega_error: f64,
+}
+
+/// The `--compare` table by integrator name, and the reference period it prints.
+fn compare_table(text: &str) -> (Vec<(String, CompareRow)>, f64) {
+    let period = text
+        .lines()
+        .find_map(|l| l.strip_prefix("flip period 4K(k)/lambda = "))
+        .and_then(|l| l.trim_end().strip_suffix(" s"))
+        .unwrap_or_else(|| panic!("the reference period in\n{text}"))
+        .parse()
+        .expect("a number");
+    let mut lines = text.lines().skip_while(|l| !l.starts_with("integrator "));
+    lines.next().expect("the header");
+    let rows = lines
+        .take_while(|l| !l.starts_with('('))
+        .map(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            assert_eq!(w.len(), 6, "{l}");
+            let num = |s: &str| -> f64 { s.parse().unwrap_or_else(|_| panic!("{s:?} in {l}")) };
+            let row = CompareRow {
+                flips: w[2].parse().expect("a count"),
+                period_error: (w[3] != "n/a").then(|| num(w[3])),
+                energy_error: num(w[4]),
+                omega_error: num(w[5]),
+            };
+            (w[0].to_owned(), row)
+        })
+        .collect();
+    (rows, period)
+}
+
+/// Complete elliptic integral of the first kind from the complementary modulus k′:
+/// K = π / (2·AGM(1, k′)).
+fn elliptic_k_from_complement(kp: f64) -> f64 {
+    let (mut a, mut b) = (1.0_f64, kp);
+    while (a - b).abs() > 1e-16 * a {
+        (a, b) = ((a + b) / 2.0, (a * b).sqrt());
+    }
+    std::f64::consts::PI / (2.0 * a)
+}
+
+/// README's Dynamics table (I = 1, 2, 3; ω₀ = 0.001, 10, 0.001; dt = 1/240; 60 s), within
+/// bounds that leave room for round-off but not for a different integrator's behaviour; and the
+/// reference period against the torque-free closed form.
+#[test]
+fn compare_table_meets_the_readme_figures() {
+    let out = simulate(&["--compare"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let (rows, period) = compare_table(&text);
+    let names: Vec<&str> = rows.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "midpoint-cayley",
+            "splitting",
+            "rk4",
+            "euler",
+            "midpoint",
+            "exact",
+            "engine-style",
+            "implicit-euler"
+        ],
+        "{text}"
+    );
+    let row = |name: &str| &rows.iter().find(|(n, _)| n == name).expect("a row").1;
+
+    // T = 4K(k)/λ for L² > 2E·I₂ (Landau & Lifshitz §37), with
+    // λ² = (I₃ − I₂)(L² − 2E·I₁)/(I₁I₂I₃) and
+    // k′² = 1 − k² = (I₃ − I₁)(I₃(I₃ − I₂)ω₃² − I₁(I₂ − I₁)ω₁²) / ((I₃ − I₂)(L² − 2E·I₁)),
+    // written without the cancellation of L² against 2E·I₂.
+    let (i1, i2, i3) = (1.0, 2.0, 3.0);
+    let (w1, w2, w3): (f64, f64, f64) = (0.001, 10.0, 0.001);
+    let l2_minus_2e_i1 = i2 * (i2 - i1) * w2 * w2 + i3 * (i3 - i1) * w3 * w3;
+    let lambda = ((i3 - i2) * l2_minus_2e_i1 / (i1 * i2 * i3)).sqrt();
+    let kp2 = (i3 - i1) * (i3 * (i3 - i2) * w3 * w3 - i1 * (i2 - i1) * w1 * w1)
+        / ((i3 - i2) * l2_minus_2e_i1);
+    let expected_period = 4.0 * elliptic_k_from_complement(kp2.sqrt()) / lambda;
+    // Printed with 9 decimals.
+    assert!(
+        (period - expected_period).abs() < 1e-9,
+        "{period} vs {expected_period}"
+    );
+    // 60 s of half-periods: 17 reversals of ω₂ for the accurate integrators.
+    assert_eq!((60.0 / (expected_period / 2.0)).round(), 17.0);
+
+    // The structure-preserving default and the exact flow: 17 flips at the right period, energy
+    // to round-off.
+    for name in ["midpoint-cayley", "exact"] {
+        let r = row(name);
+        assert_eq!(r.flips, 17, "{name}: {r:?}");
+        let p = r.period_error.expect("a period");
+        assert!(p.abs() < 1e-4, "{name}: {r:?}");
+        assert!(r.energy_error < 1e-12, "{name}: {r:?}");
+    }
+    assert!(row("exact").period_error.expect("a period").abs() < 1e-7);
+    assert!(row("midpoint-cayley").omega_error < 0.2);
+    let splitting = row("splitting");
+    assert_eq!(splitting.flips, 17, "{splitting:?}");
+    assert!(splitting.period_error.expect("a period").abs() < 1e-4);
+    assert!(splitting.energy_error < 1e-3 && splitting.omega_error < 0.2);
+    // Explicit Euler gains energy and flips far too often, too fast.
+    let euler = row("euler");
+    assert!(euler.energy_error > 0.1, "{euler:?}");
+    assert!(euler.flips > 50, "{euler:?}");
+    assert!(euler.period_error.expect("a period") < -0.5, "{euler:?}");
+    // RK4 keeps energy well but its period drifts by percents.
+    let rk4 = row("rk4");
+    assert!(rk4.energy_error < 1e-6, "{rk4:?}");
+    assert!(rk4.period_error.expect("a period").abs() > 1e-2, "{rk4:?}");
+    // The explicit midpoint rule flips too often.
+    assert!(row("midpoint").flips > 17);
+    // Engine-style: energy kept by the |L| rescale, but flips too slowly.
+    let engine = row("engine-style");
+    assert!(engine.flips < 17, "{engine:?}");
+    assert!(engine.period_error.expect("a period") > 0.1, "{engine:?}");
+    assert!(engine.energy_error < 1e-6, "{engine:?}");
+    // Implicit Euler damps energy heavily.
+    let implicit = row("implicit-euler");
+    assert!(implicit.energy_error > 0.1, "{implicit:?}");
+    // Out of phase with the exact flow (ω₂ = ±10): errors near 2|ω₂|.
+    for name in ["rk4", "euler", "midpoint", "engine-style"] {
+        assert!(row(name).omega_error > 10.0, "{name}: {:?}", row(name));
+    }
+}
+
+#[test]
+fn compare_with_the_textbook_model_never_flips() {
+    let out = simulate(&["--compare", "--model", "textbook", "--duration", "20"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("textbook model"), "{text}");
+    let (rows, _) = compare_table(&text);
+    assert_eq!(rows.len(), 8, "{text}");
+    // With the full model 20 s holds five half-periods of 3.55 s; without ω × Iω, none.
+    for (name, r) in &rows {
+        assert_eq!(r.flips, 0, "{name}: {r:?}");
+        assert!(r.period_error.is_none(), "{name}: {r:?}");
+    }
+}
+
+/// Hamilton quaternion (w, x, y, z) → rotation matrix, rows.
+fn rotation(w: f64, x: f64, y: f64, z: f64) -> [[f64; 3]; 3] {
+    [
+        [
+            1.0 - 2.0 * (y * y + z * z),
+            2.0 * (x * y - w * z),
+            2.0 * (x * z + w * y),
+        ],
+        [
+            2.0 * (x * y + w * z),
+            1.0 - 2.0 * (x * x + z * z),
+            2.0 * (y * z - w * x),
+        ],
+        [
+            2.0 * (x * z - w * y),
+            2.0 * (y * z + w * x),
+            1.0 - 2.0 * (x * x + y * y),
+        ],
+    ]
+}
+
+fn apply(r: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|i| r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2])
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3).map(|i| (a[i] - b[i]).powi(2)).sum::<f64>().sqrt()
+}
+
+/// The CSV's quaternion is the Hamilton rotation taking the principal body frame to world:
+/// it carries body ω to world ω, and world L is R·diag(I)·ω_body.
+#[test]
+fn csv_quaternion_takes_the_principal_frame_to_world() {
+    let inertia = [0.5, 1.7, 2.9];
+    let out = simulate(&[
+        "--inertia",
+        "0.5,1.7,2.9",
+        "--omega",
+        "1.3,-2.1,0.7",
+        "--duration",
+        "3",
+        "--every",
+        "30",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r = rows(&String::from_utf8_lossy(&out.stdout));
+    assert_eq!(r.len(), 25);
+    let (mut turned, mut conjugate_differs) = (false, false);
+    for row in &r {
+        let rot = rotation(row[10], row[11], row[12], row[13]);
+        let body = [row[1], row[2], row[3]];
+        let world = [row[4], row[5], row[6]];
+        let l = [row[7], row[8], row[9]];
+        let wn = world.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let ln = l.iter().map(|x| x * x).sum::<f64>().sqrt();
+        assert!(
+            distance(apply(&rot, body), world) < 1e-12 * wn,
+            "t = {}: R·ω_body {:?} vs ω_world {world:?}",
+            row[0],
+            apply(&rot, body)
+        );
+        let l_body = std::array::from_fn(|i| inertia[i] * body[i]);
+        assert!(
+            distance(apply(&rot, l_body), l) < 1e-12 * ln,
+            "t = {}: R·I·ω_body {:?} vs L {l:?}",
+            row[0],
+            apply(&rot, l_body)
+        );
+        // The opposite convention (world → body) must not fit: Rᵀ·ω_body ≠ ω_world.
+        let transpose: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| rot[j][i]));
+        conjugate_differs |= distance(apply(&transpose, body), world) > 0.1 * wn;
+        turned |= row[10].abs() < 0.5;
+    }
+    assert!(turned, "the body never turned far from its start");
+    assert!(conjugate_differs, "R and Rᵀ agree on every row");
+}

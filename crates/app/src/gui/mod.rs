@@ -22,6 +22,10 @@ use panels::PanelState;
 use view3d::View3d;
 use view3d::scene::Scene;
 
+/// Default width of the side panel (points): the mass-properties table fits, and at 1280×800
+/// the 3D toolbar and the plot controls still fit in one row beside it.
+const SIDE_PANEL_WIDTH: f32 = 340.0;
+
 /// Key under which the settings are stored.
 const SETTINGS_KEY: &str = "inertia-lab-settings";
 
@@ -160,10 +164,13 @@ impl LabApp {
                 }
             });
         });
+        // A fixed width the user can drag; content wraps or truncates to it (a long file name or
+        // diagnostics line must not widen the panel over the 3D view).
         egui::Panel::left("side")
             .resizable(true)
-            .default_size(360.0)
-            .max_size(520.0)
+            .default_size(SIDE_PANEL_WIDTH)
+            .min_size(260.0)
+            .max_size(640.0)
             .show(ui, |ui| {
                 panels::side::show(ui, &self.lab, &mut draft, &mut self.panels, &mut commands);
             });

@@ -42,7 +42,8 @@ pub fn show(
     commands: &mut Vec<Command>,
 ) {
     let history = lab.primary().history();
-    ui.horizontal(|ui| {
+    // Wraps within the plot panel in a narrow window: every control stays reachable.
+    ui.horizontal_wrapped(|ui| {
         super::pause_button(ui, lab, commands);
         ui.checkbox(&mut state.follow, "Follow");
         number(
@@ -63,6 +64,19 @@ pub fn show(
         );
         ui.separator();
         ui.label(drift_text(lab));
+        let dropped = lab.primary().dropped();
+        // Shown from 5 ms on: the label says hundredths of a second.
+        if dropped >= 0.005 {
+            ui.colored_label(
+                Color32::from_rgb(255, 170, 60),
+                format!("skipped {dropped:.2} s"),
+            )
+            .on_hover_text(
+                "The frames came too slowly for the time step: simulated time beyond \
+                     the catch-up limit was skipped (a larger step or a smaller time scale \
+                     keeps up).",
+            );
+        }
         ui.separator();
         let l = ui.label("CSV");
         ui.add(egui::TextEdit::singleline(&mut state.csv_path).desired_width(120.0))

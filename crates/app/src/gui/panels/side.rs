@@ -20,8 +20,12 @@ pub fn show(
     state: &mut PanelState,
     commands: &mut Vec<Command>,
 ) {
+    // Shortened so that the panel keeps its width whatever the file is called (egui's own
+    // truncation still let the first frame's full-width text widen a resizable panel).
+    let name = &lab.primary().body().name;
+    ui.heading(elide(name, HEADING_CHARS))
+        .on_hover_text(name.as_str());
     egui::ScrollArea::vertical().show(ui, |ui| {
-        ui.heading(format!("Inertia Lab — {}", lab.primary().body().name));
         body_section(ui, lab, state, commands, s);
         table_section(ui, lab, s);
         motion_section(ui, lab, commands, s);
@@ -32,6 +36,22 @@ pub fn show(
             commands.push(Command::ResetSettings);
         }
     });
+}
+
+/// Longest body name shown whole in the heading (fits the default panel width).
+const HEADING_CHARS: usize = 28;
+
+/// `text` shortened to at most `max` characters by an ellipsis in the middle, keeping the start
+/// and the end (where file names differ).
+fn elide(text: &str, max: usize) -> String {
+    let n = text.chars().count();
+    if n <= max {
+        return text.to_owned();
+    }
+    let keep = max.saturating_sub(1);
+    let head: String = text.chars().take(keep - keep / 2).collect();
+    let tail: String = text.chars().skip(n - keep / 2).collect();
+    format!("{head}…{tail}")
 }
 
 fn body_section(
@@ -72,10 +92,18 @@ fn body_section(
                 }
             });
             if let Some(l) = lab.loading() {
+                // A horizontal row does not wrap: a long path there would widen the panel for
+                // good (a resizable panel keeps its widest width), so the name is shortened.
+                let name = l.path.file_name().map_or_else(
+                    || l.path.display().to_string(),
+                    |n| n.to_string_lossy().into_owned(),
+                );
                 ui.horizontal(|ui| {
                     ui.spinner();
-                    ui.label(format!("{}: {}", l.path.display(), l.stage));
+                    ui.label(elide(&name, HEADING_CHARS))
+                        .on_hover_text(l.path.display().to_string());
                 });
+                ui.label(format!("{}…", l.stage));
                 ui.add(egui::ProgressBar::new(l.fraction).show_percentage());
             }
             number(ui, "Size ×", &mut s.body.scale, 1e-3..=1e3, 0.01, "");
@@ -354,4 +382,19 @@ fn diagnostics_section(ui: &mut egui::Ui, lab: &Lab) {
             ui.add(egui::Label::new(RichText::new(text).color(Color32::YELLOW)).wrap());
         }
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::elide;
+
+    #[test]
+    fn long_names_lose_their_middle() {
+        assert_eq!(elide("T-handle", 28), "T-handle");
+        let long = "scanned_turbine_blade_with_holes_final.obj";
+        let short = elide(long, 28);
+        assert_eq!(short.chars().count(), 28);
+        assert_eq!(short, "scanned_turbin…les_final.obj");
+        assert_eq!(elide("αβγδε", 3), "α…ε");
+    }
 }
