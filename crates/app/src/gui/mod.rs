@@ -242,11 +242,6 @@ impl LabApp {
         });
     }
 
-    /// Whether a file dialog is open.
-    pub fn dialog_open(&self) -> bool {
-        self.dialog.is_some()
-    }
-
     fn shortcuts(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
         if ctx.input(|i| i.key_pressed(Key::F1)) {
             self.panels.help_open = !self.panels.help_open;

@@ -38,11 +38,6 @@ impl Placement {
         self.rotation.inverse_transform_vector(v) / self.scale
     }
 
-    /// Mesh direction → world (rotation only: a direction has no scale).
-    pub fn direction_to_world(&self, v: &Vector3<f64>) -> Vector3<f64> {
-        self.rotation * v
-    }
-
     /// The transform as a homogeneous matrix, for the renderer.
     pub fn matrix(&self) -> Matrix4<f64> {
         Matrix4::new_translation(&self.position.coords)
@@ -93,7 +88,5 @@ mod tests {
         for t in [0.0, 0.7, 3.0] {
             assert!((p.to_world(&(om + dm * t)) - (o + d * t)).norm() < 1e-12);
         }
-        let v = Vector3::new(0.0, 0.0, 1.0);
-        assert!((p.direction_to_world(&v).norm() - 1.0).abs() < 1e-15);
     }
 }

@@ -315,10 +315,6 @@ impl Specimen {
     pub fn properties(&self, source: InertiaSource) -> &MassProperties {
         &self.props[source_index(source)]
     }
-    /// The inertia source the simulation uses.
-    pub fn source(&self) -> InertiaSource {
-        self.source
-    }
     /// The mass properties the simulation uses.
     pub fn used_properties(&self) -> &MassProperties {
         self.properties(self.source)
