@@ -1,13 +1,12 @@
 //! The frame clock: turns wall-clock time between frames into simulated time for the fixed-step
-//! accumulator in `rbcore::Simulation::advance`, so the physics runs at the same speed whatever
-//! the frame rate.
+//! accumulator in `rbcore::Simulation::advance_with`, so the physics runs at the same speed
+//! whatever the frame rate.
+//!
+//! The clock caps nothing: a slow frame or a stall (window hidden, a debugger) is bounded by
+//! rbcore's catch-up cap, which runs at most its number of steps and reports the rest as
+//! dropped, so the app can say how much simulated time it skipped.
 
 use std::time::{Duration, Instant};
-
-/// Longest frame gap fed to the simulation: after a stall (window hidden, a dialog, a debugger)
-/// the body continues rather than jumping ahead (the simulation's own catch-up cap then bounds
-/// the work per frame).
-pub const MAX_FRAME_GAP: Duration = Duration::from_millis(100);
 
 /// Measures frame gaps and scales them by the time scale.
 #[derive(Debug, Clone, Default)]
@@ -22,13 +21,12 @@ impl FrameClock {
     }
 
     /// Simulated seconds to advance for the frame starting at `now`: the wall-clock gap since the
-    /// previous tick, capped at [`MAX_FRAME_GAP`], times `time_scale` (a non-finite or negative
+    /// previous tick times `time_scale` (a non-finite or negative
     /// scale counts as 0). The first tick after [`FrameClock::stop`] returns 0.
     pub fn tick(&mut self, now: Instant, time_scale: f64) -> f64 {
         let gap = self
             .last
-            .map_or(Duration::ZERO, |last| now.saturating_duration_since(last))
-            .min(MAX_FRAME_GAP);
+            .map_or(Duration::ZERO, |last| now.saturating_duration_since(last));
         self.last = Some(now);
         let scale = if time_scale.is_finite() && time_scale > 0.0 {
             time_scale
@@ -49,14 +47,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn gaps_are_scaled_capped_and_reset_by_stop() {
+    fn gaps_are_scaled_uncapped_and_reset_by_stop() {
         let t0 = Instant::now();
         let mut c = FrameClock::new();
         assert_eq!(c.tick(t0, 1.0), 0.0);
         let t1 = t0 + Duration::from_millis(16);
         assert!((c.tick(t1, 0.5) - 0.008).abs() < 1e-12);
         let t2 = t1 + Duration::from_secs(5);
-        assert!((c.tick(t2, 1.0) - 0.1).abs() < 1e-12);
+        assert!((c.tick(t2, 1.0) - 5.0).abs() < 1e-12);
         c.stop();
         assert_eq!(c.tick(t2 + Duration::from_secs(1), 1.0), 0.0);
         let t3 = t2 + Duration::from_millis(1010);

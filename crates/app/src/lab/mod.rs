@@ -546,6 +546,49 @@ mod tests {
         assert!((sp.sim().time() - f64::from(5 + cap) * dt).abs() < 1e-12);
     }
 
+    /// A frame of 150 ms at dt = 1/240 is 36 steps: the cap's 16 run and the rest is reported,
+    /// not lost in the clock.
+    #[test]
+    fn a_slow_frame_reports_the_time_it_skipped() {
+        let mut lab = lab();
+        let s = lab.primary().sim().settings().clone();
+        let t0 = Instant::now();
+        lab.frame(t0);
+        lab.frame(t0 + Duration::from_millis(150));
+        let sp = lab.primary();
+        assert_eq!(sp.sim().steps(), u64::from(s.max_catch_up_steps));
+        let expected = 0.150 - f64::from(s.max_catch_up_steps) * s.dt;
+        let dropped = sp.dropped();
+        assert!(
+            dropped <= expected * (1.0 + 1e-9) && dropped >= expected - s.dt * (1.0 + 1e-9),
+            "{dropped} vs {expected}"
+        );
+    }
+
+    /// Settings the attached string cannot take are refused before anything changes.
+    #[test]
+    fn settings_refused_by_the_string_change_nothing() {
+        let mut lab = lab();
+        lab.advance(0.2);
+        let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.0, 0.0);
+        lab.apply(Command::Grab {
+            specimen: PRIMARY,
+            point,
+        });
+        let (placement, props) = (
+            lab.primary().placement(),
+            lab.primary().properties(InertiaSource::BoundingBox).clone(),
+        );
+        lab.apply(settings_with(&lab, |s| {
+            s.body.source = InertiaSource::BoundingBox;
+            s.interaction.string_frequency = -1.0;
+        }));
+        assert!(lab.message().is_some_and(|m| m.error && m.text.contains("string")));
+        assert_eq!(lab.settings().body.source, InertiaSource::Exact);
+        assert_eq!(lab.primary().placement(), placement);
+        assert_eq!(lab.primary().properties(InertiaSource::BoundingBox), &props);
+    }
+
     #[test]
     fn poke_string_and_csv_export() {
         let mut lab = lab();

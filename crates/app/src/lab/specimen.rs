@@ -130,13 +130,30 @@ impl Specimen {
         // Checked before anything changes, so a rejected value leaves the specimen as it was.
         Body::from_principal(used.mass, used.principal.moments, used.principal.rotation)
             .map_err(|e| format!("mass properties rejected: {e}"))?;
-        self.sim
-            .set_settings(new.physics.to_sim())
-            .map_err(|e| format!("setting rejected: {e}"))?;
         // The body frame's origin is the used centre of mass. A new source moves it within the
         // mesh by `shift`: the pose moves with it so the mesh stays where it is on screen (a new
         // size or mass keeps the centre of mass in place and the body grows about it).
         let shift = used.center_of_mass - props[source_index(self.source)].center_of_mass;
+        // The string moves with the body frame's origin; built (and checked) before anything
+        // changes, like the body above.
+        let moved_string = match self.sim.string() {
+            Some(string) => {
+                let i = &new.interaction;
+                let moved = SoftString::new(
+                    string.target(),
+                    string.attachment() - shift,
+                    i.string_frequency,
+                    i.string_damping,
+                    used.mass * i.string_max_accel,
+                )
+                .map_err(|e| format!("string: {e}"))?;
+                Some(moved)
+            }
+            None => None,
+        };
+        self.sim
+            .set_settings(new.physics.to_sim())
+            .map_err(|e| format!("setting rejected: {e}"))?;
         if old.body != new.body {
             let b = self.sim.body_mut();
             let position = b.position() + b.body_orientation() * shift;
@@ -148,17 +165,8 @@ impl Specimen {
         if new.physics != old.physics {
             self.history.mark_disturbance();
         }
-        if let Some(string) = self.sim.string().copied() {
-            let i = &new.interaction;
-            let moved = SoftString::new(
-                string.target(),
-                string.attachment() - shift,
-                i.string_frequency,
-                i.string_damping,
-                used.mass * i.string_max_accel,
-            )
-            .map_err(|e| format!("string: {e}"))?;
-            self.sim.set_string(Some(moved));
+        if moved_string.is_some() {
+            self.sim.set_string(moved_string);
         }
         self.props = props;
         self.source = new.body.source;
