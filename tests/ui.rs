@@ -164,3 +164,65 @@ fn reset_settings_spin_presets_and_reset_from_the_panel() {
     frames(&mut h, 2);
     assert_eq!(h.state().lab().settings(), &AppSettings::default());
 }
+
+/// An open mesh under a long path: while it loads and after, the side panel keeps its width (a
+/// row that cannot wrap used to widen it for good), the 3D toolbar stays one row, and the
+/// warning is shown in the app's words.
+#[test]
+fn a_long_named_open_mesh_keeps_the_layout() {
+    let dir = std::env::temp_dir().join(format!(
+        "inertia-lab-ui-{}-a-folder-whose-name-is-much-longer-than-the-side-panel-is-wide",
+        std::process::id()
+    ));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let torus = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/torus.obj"),
+    )
+    .expect("asset");
+    // Every 50th face left out: an open surface with holes.
+    let mut face = 0;
+    let open: String = torus
+        .lines()
+        .filter(|l| {
+            let is_face = l.starts_with("f ");
+            face += usize::from(is_face);
+            !(is_face && face % 50 == 0)
+        })
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let path = dir.join("scanned_turbine_blade_with_holes_export_v2_final.obj");
+    std::fs::write(&path, open).expect("write");
+
+    let mut h = harness();
+    frames(&mut h, 2);
+    let frame_button = |h: &Harness<'static, LabApp>| h.get_by_label("Frame").rect();
+    let before = frame_button(&h);
+    h.get_by_label("Path").focus();
+    h.get_by_label("Path")
+        .type_text(&path.display().to_string());
+    frames(&mut h, 1);
+    h.get_by_label("Load").click();
+    for _ in 0..500 {
+        h.step();
+        if h.state().lab().loading().is_none() {
+            break;
+        }
+    }
+    frames(&mut h, 3);
+    let lab = h.state().lab();
+    assert!(
+        lab.primary().body().name.starts_with("scanned_turbine"),
+        "{:?}",
+        lab.message()
+    );
+    assert!(!lab.primary().body().analysis.warnings.is_empty());
+    assert!(h.query_by_label_contains("The mesh has holes").is_some());
+    let after = frame_button(&h);
+    assert_eq!(after.min.x, before.min.x, "the side panel kept its width");
+    let axes = h.get_by_label("Principal axes").rect();
+    assert!(
+        (axes.center().y - after.center().y).abs() < 2.0,
+        "the toolbar is one row"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -583,7 +583,10 @@ mod tests {
             s.body.source = InertiaSource::BoundingBox;
             s.interaction.string_frequency = -1.0;
         }));
-        assert!(lab.message().is_some_and(|m| m.error && m.text.contains("string")));
+        assert!(
+            lab.message()
+                .is_some_and(|m| m.error && m.text.contains("string"))
+        );
         assert_eq!(lab.settings().body.source, InertiaSource::Exact);
         assert_eq!(lab.primary().placement(), placement);
         assert_eq!(lab.primary().properties(InertiaSource::BoundingBox), &props);

@@ -64,7 +64,8 @@ fn body_section(
     egui::CollapsingHeader::new("Body")
         .default_open(true)
         .show(ui, |ui| {
-            ui.horizontal(|ui| {
+            // Wrapped: a row wider than the panel would widen it for good.
+            ui.horizontal_wrapped(|ui| {
                 if ui
                     .add_enabled(!state.dialog_open, egui::Button::new("Open mesh…"))
                     .clicked()
@@ -190,7 +191,12 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                     ui.label(fmt(cp.com_offset));
                     ui.end_row();
                 });
-            let c = exact.center_of_mass;
+            // A coordinate below 1e-12 of the body's size is round-off of a zero (as in the
+            // command line's table): shown as 0, not as -5.3e-19.
+            let size = primary.bounding_sphere().1;
+            let c = exact
+                .center_of_mass
+                .map(|x| if x.abs() < 1e-12 * size { 0.0 } else { x });
             ui.add(
                 egui::Label::new(
                     RichText::new(format!(
