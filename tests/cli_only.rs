@@ -1,5 +1,7 @@
 //! The command-line build: `--no-default-features` leaves the desktop app out, and with it every
-//! GUI crate, so servers, CI images and batch jobs build the CLI without a windowing stack.
+//! GUI crate, so servers, CI images and batch jobs build the CLI without a windowing stack. And
+//! the builds that the workspace's own test run never makes (features are unified there) still
+//! compile: the CLI alone, massprops without `io` and `parallel`, rbcore as it depends on it.
 
 use std::process::Command;
 
@@ -55,4 +57,31 @@ fn cli_only_build_has_no_gui_crate_in_its_tree() {
     // The app's own build has them: the check above reads the right tree.
     let app = tree(&[]);
     assert!(app.iter().any(|n| n == "eframe"), "{app:?}");
+}
+
+/// `cargo check` of `args`, in a target folder of its own: features differ from the workspace
+/// build's, and the test run's own build folder may be locked meanwhile.
+fn check(args: &[&str]) {
+    let target =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../target/feature-checks");
+    let out = Command::new(env!("CARGO"))
+        .args(["check", "--offline", "--quiet"])
+        .args(args)
+        .env("CARGO_TARGET_DIR", target)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("cargo runs");
+    assert!(
+        out.status.success(),
+        "cargo check {}:\n{}",
+        args.join(" "),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn builds_without_default_features_compile() {
+    check(&["-p", "inertia-lab", "--no-default-features"]);
+    check(&["-p", "massprops", "--no-default-features"]);
+    check(&["-p", "rbcore"]);
 }

@@ -120,7 +120,7 @@ impl LabApp {
         &self.lab
     }
 
-    /// Records a command as if a panel had (for tests and the command line).
+    /// Applies a command at once (the startup file given on the command line).
     pub fn command(&mut self, c: Command) {
         self.lab.apply(c);
     }

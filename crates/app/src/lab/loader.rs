@@ -55,7 +55,7 @@ pub const SAMPLES: [(&str, &str, &str); 7] = [
 /// and scale (the model rescales them live).
 #[derive(Debug, Clone)]
 pub struct LoadedBody {
-    /// Shown in the title and the panel.
+    /// Shown in the side panel and the messages (the file name, or the sample's label).
     pub name: String,
     /// Render and picking triangles, mesh coordinates.
     pub mesh: TriMesh,

@@ -41,7 +41,7 @@ pub struct View3d {
     followed: Option<Point3<f64>>,
 }
 
-/// The one-line hint under the view (also in the F1 help).
+/// The one-line hint under the view.
 pub const HINT: &str = "Click body: poke · Drag body: string · Drag background: orbit · \
                         Right/middle drag: pan · Wheel: zoom · F: frame · Space: pause · S: step · \
                         R: reset · F1: help";
