@@ -663,8 +663,8 @@ fn table_approximation_section_of_the_l_prism_matches_closed_forms() {
         // 10 significant digits: half a unit in the 10th digit.
         let pm = table_numbers(section, "principal moments");
         assert_eq!(pm.len(), 3, "{section}");
-        for i in 0..3 {
-            assert!(close(pm[i], e.principal[i].0, 5.1e-10), "{section}");
+        for (printed, (expected, _)) in pm.iter().zip(e.principal) {
+            assert!(close(*printed, expected, 5.1e-10), "{section}");
         }
         // Percent with two decimals.
         let err = table_numbers(section, "moment error");

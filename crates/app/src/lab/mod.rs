@@ -551,7 +551,7 @@ mod tests {
     #[test]
     fn a_slow_frame_reports_the_time_it_skipped() {
         let mut lab = lab();
-        let s = lab.primary().sim().settings().clone();
+        let s = *lab.primary().sim().settings();
         let t0 = Instant::now();
         lab.frame(t0);
         lab.frame(t0 + Duration::from_millis(150));
@@ -577,7 +577,7 @@ mod tests {
         });
         let (placement, props) = (
             lab.primary().placement(),
-            lab.primary().properties(InertiaSource::BoundingBox).clone(),
+            *lab.primary().properties(InertiaSource::BoundingBox),
         );
         lab.apply(settings_with(&lab, |s| {
             s.body.source = InertiaSource::BoundingBox;
