@@ -74,14 +74,20 @@ fn canonical_case_writes_a_csv_meeting_the_figures() {
             .map(|i| (row[7 + i] - l0[i]).powi(2))
             .sum::<f64>()
             .sqrt();
-        assert!(dl < 1e-10 * l0n, "world L moved at t = {}", row[0]);
-        assert!(((row[16] - e0) / e0).abs() < 1e-9, "E at t = {}", row[0]);
+        // README: the default integrator keeps world L to round-off (measured 0) and E to
+        // 7.8e-14 over the 60 s; held here to a few ulps and 1e-12 through the CSV.
+        assert!(
+            dl <= 4.0 * f64::EPSILON * l0n,
+            "world L moved at t = {}",
+            row[0]
+        );
+        assert!(((row[16] - e0) / e0).abs() < 1e-12, "E at t = {}", row[0]);
         let qn = (10..14).map(|i| row[i] * row[i]).sum::<f64>();
         assert!((qn - 1.0).abs() < 1e-12);
         // E = T + U and T = ½ ω·L (world frame).
         assert!((row[14] + row[15] - row[16]).abs() < 1e-12 * e0);
         let t = 0.5 * (row[4] * row[7] + row[5] * row[8] + row[6] * row[9]);
-        assert!((t - row[14]).abs() < 1e-9 * e0);
+        assert!((t - row[14]).abs() < 1e-12 * e0);
         if (w[0][2] > 0.0) != (row[2] > 0.0) {
             flips += 1;
         }
@@ -136,7 +142,7 @@ fn mesh_input_runs_and_conserves_energy() {
     assert_eq!(r.len(), 11);
     assert!(
         r.iter()
-            .all(|row| ((row[16] - r[0][16]) / r[0][16]).abs() < 1e-9)
+            .all(|row| ((row[16] - r[0][16]) / r[0][16]).abs() < 1e-12)
     );
 }
 
