@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+
 const BIN: &str = env!("CARGO_BIN_EXE_inertia-lab");
 const HEADER: &str = "t,w1,w2,w3,wx,wy,wz,Lx,Ly,Lz,qw,qx,qy,qz,T,U,E";
 
@@ -13,6 +15,17 @@ fn simulate(args: &[&str]) -> Output {
         .args(args)
         .output()
         .expect("the binary runs")
+}
+
+/// `simulate` with `args`, which must succeed (its stderr is shown if not).
+fn simulate_ok(args: &[&str]) -> Output {
+    let out = simulate(args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
 }
 
 fn temp_csv(name: &str) -> PathBuf {
@@ -38,7 +51,7 @@ fn rows(csv: &str) -> Vec<[f64; 17]> {
 #[test]
 fn canonical_case_writes_a_csv_meeting_the_figures() {
     let path = temp_csv("flip");
-    let out = simulate(&[
+    let out = simulate_ok(&[
         "--inertia",
         "1,2,3",
         "--omega",
@@ -50,11 +63,6 @@ fn canonical_case_writes_a_csv_meeting_the_figures() {
         "--csv",
         path.to_str().expect("utf-8 path"),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let csv = std::fs::read_to_string(&path).expect("CSV written");
     std::fs::remove_file(&path).ok();
     let r = rows(&csv);
@@ -106,8 +114,7 @@ fn canonical_case_writes_a_csv_meeting_the_figures() {
 
 #[test]
 fn stdout_every_and_textbook_model() {
-    let out = simulate(&["--duration", "10", "--every", "240", "--model", "textbook"]);
-    assert!(out.status.success());
+    let out = simulate_ok(&["--duration", "10", "--every", "240", "--model", "textbook"]);
     let r = rows(&String::from_utf8_lossy(&out.stdout));
     assert_eq!(r.len(), 11);
     assert!((r[10][0] - 10.0).abs() < 1e-12);
@@ -123,7 +130,7 @@ fn stdout_every_and_textbook_model() {
 
 #[test]
 fn mesh_input_runs_and_conserves_energy() {
-    let out = simulate(&[
+    let out = simulate_ok(&[
         "--mesh",
         &asset("t_handle.obj"),
         "--mass",
@@ -133,11 +140,6 @@ fn mesh_input_runs_and_conserves_energy() {
         "--every",
         "48",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let r = rows(&String::from_utf8_lossy(&out.stdout));
     assert_eq!(r.len(), 11);
     assert!(
@@ -148,12 +150,7 @@ fn mesh_input_runs_and_conserves_energy() {
 
 #[test]
 fn compare_prints_every_integrator() {
-    let out = simulate(&["--compare", "--duration", "8"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let out = simulate_ok(&["--compare", "--duration", "8"]);
     let text = String::from_utf8_lossy(&out.stdout);
     for name in [
         "midpoint-cayley",
@@ -258,12 +255,7 @@ fn elliptic_k_from_complement(kp: f64) -> f64 {
 /// reference period against the torque-free closed form.
 #[test]
 fn compare_table_meets_the_readme_figures() {
-    let out = simulate(&["--compare"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let out = simulate_ok(&["--compare"]);
     let text = String::from_utf8_lossy(&out.stdout);
     let (rows, period) = compare_table(&text);
     let names: Vec<&str> = rows.iter().map(|(n, _)| n.as_str()).collect();
@@ -344,12 +336,7 @@ fn compare_table_meets_the_readme_figures() {
 
 #[test]
 fn compare_with_the_textbook_model_never_flips() {
-    let out = simulate(&["--compare", "--model", "textbook", "--duration", "20"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let out = simulate_ok(&["--compare", "--model", "textbook", "--duration", "20"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("textbook model"), "{text}");
     let (rows, _) = compare_table(&text);
@@ -361,29 +348,16 @@ fn compare_with_the_textbook_model_never_flips() {
     }
 }
 
-/// Hamilton quaternion (w, x, y, z) → rotation matrix, rows.
-fn rotation(w: f64, x: f64, y: f64, z: f64) -> [[f64; 3]; 3] {
-    [
-        [
-            1.0 - 2.0 * (y * y + z * z),
-            2.0 * (x * y - w * z),
-            2.0 * (x * z + w * y),
-        ],
-        [
-            2.0 * (x * y + w * z),
-            1.0 - 2.0 * (x * x + z * z),
-            2.0 * (y * z - w * x),
-        ],
-        [
-            2.0 * (x * z - w * y),
-            2.0 * (y * z + w * x),
-            1.0 - 2.0 * (x * x + y * y),
-        ],
-    ]
+/// The rotation of the Hamilton quaternion (w, x, y, z), by nalgebra (an implementation
+/// independent of ours).
+fn rotation(w: f64, x: f64, y: f64, z: f64) -> Matrix3<f64> {
+    *UnitQuaternion::from_quaternion(Quaternion::new(w, x, y, z))
+        .to_rotation_matrix()
+        .matrix()
 }
 
-fn apply(r: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
-    std::array::from_fn(|i| r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2])
+fn apply(r: &Matrix3<f64>, v: [f64; 3]) -> [f64; 3] {
+    (r * Vector3::from(v)).into()
 }
 
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
@@ -395,7 +369,7 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 #[test]
 fn csv_quaternion_takes_the_principal_frame_to_world() {
     let inertia = [0.9, 1.7, 2.3];
-    let out = simulate(&[
+    let out = simulate_ok(&[
         "--inertia",
         "0.9,1.7,2.3",
         "--omega",
@@ -405,11 +379,6 @@ fn csv_quaternion_takes_the_principal_frame_to_world() {
         "--every",
         "30",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let r = rows(&String::from_utf8_lossy(&out.stdout));
     assert_eq!(r.len(), 25);
     let (mut turned, mut conjugate_differs) = (false, false);
@@ -434,7 +403,7 @@ fn csv_quaternion_takes_the_principal_frame_to_world() {
             apply(&rot, l_body)
         );
         // The opposite convention (world → body) must not fit: Rᵀ·ω_body ≠ ω_world.
-        let transpose: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| rot[j][i]));
+        let transpose = rot.transpose();
         conjugate_differs |= distance(apply(&transpose, body), world) > 0.1 * wn;
         turned |= row[10].abs() < 0.5;
     }
