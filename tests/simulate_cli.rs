@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
+use serde_json::Value;
 
 const BIN: &str = env!("CARGO_BIN_EXE_inertia-lab");
 const HEADER: &str = "t,w1,w2,w3,wx,wy,wz,Lx,Ly,Lz,qw,qx,qy,qz,T,U,E";
@@ -409,4 +410,100 @@ fn csv_quaternion_takes_the_principal_frame_to_world() {
     }
     assert!(turned, "the body never turned far from its start");
     assert!(conjugate_differs, "R and Rᵀ agree on every row");
+}
+
+/// The torque-free flip period 4K(k)/λ (Landau & Lifshitz §37) on either side of the separatrix,
+/// from the closed forms, with |L|² − 2E·Iⱼ = Σ Iₖ(Iₖ − Iⱼ)ωₖ² so that nothing cancels.
+fn flip_period(i: [f64; 3], w: [f64; 3]) -> f64 {
+    let d = |ij: f64| {
+        (0..3)
+            .map(|k| i[k] * (i[k] - ij) * w[k] * w[k])
+            .sum::<f64>()
+    };
+    let (d1, d2, d3) = (d(i[0]), d(i[1]), d(i[2]));
+    let [i1, i2, i3] = i;
+    let (lambda2, kp2) = if d2 > 0.0 {
+        // The polhode circles axis 3.
+        (
+            (i3 - i2) * d1 / (i1 * i2 * i3),
+            (i3 - i1) * d2 / ((i3 - i2) * d1),
+        )
+    } else {
+        // The polhode circles axis 1: the same with axes 1 and 3 exchanged.
+        (
+            (i2 - i1) * -d3 / (i1 * i2 * i3),
+            (i3 - i1) * -d2 / ((i2 - i1) * -d3),
+        )
+    };
+    4.0 * elliptic_k_from_complement(kp2.sqrt()) / lambda2.sqrt()
+}
+
+fn summary(args: &[&str]) -> Value {
+    let mut all = vec!["--summary"];
+    all.extend_from_slice(args);
+    let out = simulate_ok(&all);
+    serde_json::from_slice(&out.stdout).expect("one JSON object")
+}
+
+/// `--summary` on both sides of the separatrix: the predicted period is 4K(k)/λ, the measured
+/// one agrees to README's period error, and the drifts are README's.
+#[test]
+fn summary_predicts_and_measures_the_flip_on_both_sides_of_the_separatrix() {
+    for (omega, w, axis) in [
+        ("0.001,10,0.001", [0.001, 10.0, 0.001], 3),
+        ("0.01,10,0.001", [0.01, 10.0, 0.001], 1),
+    ] {
+        let s = summary(&["--omega", omega]);
+        assert_eq!(s["schema_version"], 1);
+        assert_eq!(s["integrator"], "midpoint-cayley");
+        assert_eq!(s["steps"], 14_400);
+        assert_eq!(s["polhode_circles_axis"], axis, "{omega}");
+        let predicted = s["flip_period_predicted"].as_f64().expect("a period");
+        let expected = flip_period([1.0, 2.0, 3.0], w);
+        assert!(
+            ((predicted - expected) / expected).abs() < 1e-12,
+            "{omega}: {predicted} vs {expected}"
+        );
+        let measured = s["flip_period_measured"].as_f64().expect("measured");
+        assert!(
+            ((measured - expected) / expected).abs() < 3.4e-4,
+            "{omega}: measured {measured} vs {expected}"
+        );
+        // ω₂ starts at its largest and crosses zero at T/4, 3T/4, …: the reversals in 60 s.
+        let flips = ((60.0 - expected / 4.0) / (expected / 2.0)).floor() + 1.0;
+        assert_eq!(s["flips"].as_f64(), Some(flips), "{omega}");
+        assert!(s["energy_drift_max_rel"].as_f64().expect("a number") < 1e-12);
+        assert!(s["L_drift_max_rel"].as_f64().expect("a number") <= 4.0 * f64::EPSILON);
+    }
+}
+
+/// Where ω₂ never reverses, nothing is predicted or measured; the textbook model keeps the
+/// physical prediction but never flips (the lesson of the textbook model).
+#[test]
+fn summary_says_when_nothing_flips() {
+    let steady = summary(&["--omega", "5,0,0", "--duration", "5"]);
+    assert!(steady["flip_period_predicted"].is_null(), "{steady}");
+    assert!(steady["flip_period_measured"].is_null());
+    assert_eq!(steady["flips"], 0);
+    assert_eq!(steady["polhode_circles_axis"], 1);
+
+    let textbook = summary(&["--model", "textbook", "--duration", "10"]);
+    let expected = flip_period([1.0, 2.0, 3.0], [0.001, 10.0, 0.001]);
+    let predicted = textbook["flip_period_predicted"]
+        .as_f64()
+        .expect("a period");
+    assert!(((predicted - expected) / expected).abs() < 1e-12);
+    assert_eq!(textbook["flips"], 0);
+    assert!(textbook["flip_period_measured"].is_null());
+
+    // A symmetric top (I₁ = I₂) precesses: ω₂ turns at Ω = (I₃ − I₁)/I₁·ω₃, the polhode
+    // circles the symmetry axis.
+    let top = summary(&["--inertia", "2,2,3", "--omega", "1,2,3", "--duration", "10"]);
+    let precession = 2.0 * std::f64::consts::PI / ((3.0 - 2.0) / 2.0 * 3.0);
+    let predicted = top["flip_period_predicted"].as_f64().expect("a period");
+    assert!(
+        ((predicted - precession) / precession).abs() < 1e-12,
+        "{top}"
+    );
+    assert_eq!(top["polhode_circles_axis"], 3);
 }

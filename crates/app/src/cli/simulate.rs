@@ -1,5 +1,6 @@
 //! `inertia-lab simulate`: headless rigid-body simulation of a free body, written as CSV, with
-//! conservation drifts and flip count on stderr; `--compare` prints the integrator table instead.
+//! conservation drifts and flip count on stderr; `--compare` prints the integrator table instead,
+//! `--summary` one JSON object (predicted and measured flip period, drifts, the polhode's axis).
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -61,7 +62,14 @@ pub struct SimulateArgs {
     /// Run every integrator on this case and print an accuracy-for-cost table instead of CSV.
     #[arg(long, conflicts_with_all = ["csv", "every", "integrator"])]
     pub compare: bool,
+    /// Print one JSON object instead of the CSV: the flip period predicted from E and |L|
+    /// (4K(k)/λ) and the one measured, the flips, the drifts, and the axis the polhode circles.
+    #[arg(long, conflicts_with_all = ["csv", "every", "compare"])]
+    pub summary: bool,
 }
+
+/// Version of the JSON object of `simulate --summary`; bumped on any incompatible change.
+pub const SUMMARY_SCHEMA_VERSION: u32 = 1;
 
 /// Parses `a,b,c` into three finite numbers.
 fn triple(name: &str, s: &str) -> Result<Vector3<f64>, CliError> {
@@ -174,6 +182,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         return compare(args, body, steps);
     }
     let mut sim = simulation(args, body, args.integrator)?;
+    if args.summary {
+        return summary(args, &mut sim, steps);
+    }
     let write_err = |e: std::io::Error| CliError::Runtime(format!("cannot write the CSV: {e}"));
     let mut out: Box<dyn Write> = match &args.csv {
         Some(path) => Box::new(BufWriter::new(File::create(path).map_err(|e| {
@@ -220,6 +231,80 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         drift.max_energy()
     );
     eprintln!("flips (reversals of w2):            {}", flips.flips());
+    Ok(())
+}
+
+/// Which principal axis (1 or 3, moments ascending) the polhode of body angular momentum `l`
+/// circles: the axis of least moment when |L|² < 2E·I₂, of greatest when |L|² > 2E·I₂ (the
+/// polhodes are the curves |L| = const on the energy ellipsoid). A symmetric top's polhodes
+/// circle its distinct axis. `None` on the separatrix (to round-off) and for a body with three
+/// equal moments, where every axis is principal and L never moves in the body.
+fn polhode_axis(moments: &Vector3<f64>, l: &Vector3<f64>) -> Option<u8> {
+    let tol = 1e-12;
+    let i = moments;
+    let (equal12, equal23) = (i.y - i.x <= tol * i.z, i.z - i.y <= tol * i.z);
+    match (equal12, equal23) {
+        (true, true) => return None,
+        (true, false) => return Some(3),
+        (false, true) => return Some(1),
+        (false, false) => {}
+    }
+    // |L|² − 2E·I₂ = Σ Iₖ(Iₖ − I₂)ωₖ²: written so that the large ω₂ term does not cancel.
+    let beyond: f64 = (0..3).map(|k| (i[k] - i.y) * l[k] * l[k] / i[k]).sum();
+    if beyond.abs() <= tol * l.norm_squared() {
+        None
+    } else if beyond < 0.0 {
+        Some(1)
+    } else {
+        Some(3)
+    }
+}
+
+/// The period of ω₂'s reversals, 4K(k)/λ, predicted from the start's E and |L|; `None` when ω₂
+/// never reverses: a steady rotation about axis 1 or 3 (the other two components of L zero),
+/// three equal moments, or the separatrix (an infinite period).
+fn predicted_flip_period(moments: &Vector3<f64>, l: &Vector3<f64>) -> Option<f64> {
+    let axis = usize::from(polhode_axis(moments, l)?) - 1;
+    let steady = (0..3).filter(|&k| k != axis).all(|k| l[k] == 0.0);
+    if steady {
+        return None;
+    }
+    rbcore::torque_free_period(moments, l)
+}
+
+/// `simulate --summary`: runs every step without writing the CSV and prints one JSON object.
+fn summary(args: &SimulateArgs, sim: &mut Simulation, steps: u64) -> Result<(), CliError> {
+    let d0 = sim.diagnostics();
+    let moments = sim.body().moments();
+    let l0 = d0.omega_principal.component_mul(&moments);
+    let mut drift = DriftTracker::new(&d0);
+    let mut flips = FlipCounter::new();
+    flips.observe(d0.time, d0.omega_principal.y);
+    for _ in 0..steps {
+        sim.step().map_err(diverged)?;
+        let d = sim.diagnostics();
+        drift.observe(&d);
+        flips.observe(d.time, d.omega_principal.y);
+    }
+    let object = serde_json::json!({
+        "schema_version": SUMMARY_SCHEMA_VERSION,
+        "integrator": args.integrator.to_string(),
+        "model": args.model.to_string(),
+        "dt": args.dt,
+        "duration": sim.time(),
+        "steps": steps,
+        "moments": [moments.x, moments.y, moments.z],
+        "flip_period_predicted": predicted_flip_period(&moments, &l0),
+        "flip_period_measured": flips.mean_period(),
+        "flips": flips.flips(),
+        "energy_drift_max_rel": drift.max_energy(),
+        "L_drift_max_rel": drift.max_l_vector(),
+        "L_norm_drift_max_rel": drift.max_l_norm(),
+        "polhode_circles_axis": polhode_axis(&moments, &l0),
+    });
+    let text = serde_json::to_string_pretty(&object)
+        .map_err(|e| CliError::Runtime(format!("cannot write the summary: {e}")))?;
+    println!("{text}");
     Ok(())
 }
 
@@ -329,4 +414,26 @@ fn compare(args: &SimulateArgs, body: Body, steps: u64) -> Result<(), CliError> 
         "(period err: mean period from the w2 reversals vs 4K/lambda; dw vs the exact flow at the same times)"
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn separatrix_and_equal_moments_have_no_polhode_axis_and_no_period() {
+        let i = Vector3::new(1.0, 2.0, 3.0);
+        // Σ Iₖ(Iₖ − I₂)ωₖ² = −1 + 3·(1/3) = 0: on the separatrix, the period is infinite.
+        let on = i.component_mul(&Vector3::new(1.0, 4.0, (1.0f64 / 3.0).sqrt()));
+        assert_eq!(polhode_axis(&i, &on), None);
+        assert_eq!(predicted_flip_period(&i, &on), None);
+        let inside = i.component_mul(&Vector3::new(1.1, 4.0, (1.0f64 / 3.0).sqrt()));
+        assert_eq!(polhode_axis(&i, &inside), Some(1));
+        let cube = Vector3::repeat(2.0);
+        assert_eq!(polhode_axis(&cube, &Vector3::new(1.0, 2.0, 3.0)), None);
+        assert_eq!(predicted_flip_period(&cube, &Vector3::new(1.0, 2.0, 3.0)), None);
+        // Steady rotation about axis 3: nothing reverses.
+        assert_eq!(predicted_flip_period(&i, &Vector3::new(0.0, 0.0, 6.0)), None);
+        assert_eq!(polhode_axis(&Vector3::new(1.0, 3.0, 3.0), &on), Some(1));
+    }
 }
