@@ -141,6 +141,13 @@ impl FlipCounter {
     pub fn flips(&self) -> usize {
         self.crossings.len()
     }
+    /// Time between the last two reversals (half a period of ω₂ in torque-free motion).
+    pub fn last_interval(&self) -> Option<f64> {
+        match self.crossings[..] {
+            [.., a, b] => Some(b - a),
+            _ => None,
+        }
+    }
     /// Mean full period (two reversals) from the first to the last crossing; needs ≥ 3 crossings.
     pub fn mean_period(&self) -> Option<f64> {
         let n = self.crossings.len();
@@ -169,6 +176,9 @@ mod tests {
             short.observe(t, w);
         }
         assert_eq!((short.flips(), short.mean_period()), (2, None));
+        assert_eq!(short.last_interval(), Some(1.0));
+        assert!((c.last_interval().expect("crossings") - period / 2.0).abs() < 1e-6);
+        assert_eq!(FlipCounter::new().last_interval(), None);
     }
 
     #[test]

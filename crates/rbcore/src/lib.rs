@@ -22,6 +22,7 @@ mod diagnostics;
 mod error;
 mod forces;
 mod integrators;
+mod polhode;
 mod simulation;
 
 pub use body::Body;
@@ -30,4 +31,5 @@ pub use error::{BodyError, SimError};
 pub use forces::{Damping, SoftString, Spring};
 pub use integrators::exact::{elliptic_f, jacobi_elliptic, torque_free_omega, torque_free_period};
 pub use integrators::{Integrator, ParseNameError, RotationModel};
+pub use polhode::{Polhode, polhode};
 pub use simulation::{Advance, MAX_DT, Settings, Simulation};

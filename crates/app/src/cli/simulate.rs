@@ -10,7 +10,8 @@ use std::time::Instant;
 use clap::Args;
 use nalgebra::{Rotation3, Vector3};
 use rbcore::{
-    Body, Diagnostics, DriftTracker, FlipCounter, Integrator, RotationModel, Settings, Simulation,
+    Body, Diagnostics, DriftTracker, FlipCounter, Integrator, Polhode, RotationModel, Settings,
+    Simulation,
 };
 
 use super::error::{CliError, positive};
@@ -234,44 +235,6 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Which principal axis (1 or 3, moments ascending) the polhode of body angular momentum `l`
-/// circles: the axis of least moment when |L|² < 2E·I₂, of greatest when |L|² > 2E·I₂ (the
-/// polhodes are the curves |L| = const on the energy ellipsoid). A symmetric top's polhodes
-/// circle its distinct axis. `None` on the separatrix (to round-off) and for a body with three
-/// equal moments, where every axis is principal and L never moves in the body.
-fn polhode_axis(moments: &Vector3<f64>, l: &Vector3<f64>) -> Option<u8> {
-    let tol = 1e-12;
-    let i = moments;
-    let (equal12, equal23) = (i.y - i.x <= tol * i.z, i.z - i.y <= tol * i.z);
-    match (equal12, equal23) {
-        (true, true) => return None,
-        (true, false) => return Some(3),
-        (false, true) => return Some(1),
-        (false, false) => {}
-    }
-    // |L|² − 2E·I₂ = Σ Iₖ(Iₖ − I₂)ωₖ²: written so that the large ω₂ term does not cancel.
-    let beyond: f64 = (0..3).map(|k| (i[k] - i.y) * l[k] * l[k] / i[k]).sum();
-    if beyond.abs() <= tol * l.norm_squared() {
-        None
-    } else if beyond < 0.0 {
-        Some(1)
-    } else {
-        Some(3)
-    }
-}
-
-/// The period of ω₂'s reversals, 4K(k)/λ, predicted from the start's E and |L|; `None` when ω₂
-/// never reverses: a steady rotation about axis 1 or 3 (the other two components of L zero),
-/// three equal moments, or the separatrix (an infinite period).
-fn predicted_flip_period(moments: &Vector3<f64>, l: &Vector3<f64>) -> Option<f64> {
-    let axis = usize::from(polhode_axis(moments, l)?) - 1;
-    let steady = (0..3).filter(|&k| k != axis).all(|k| l[k] == 0.0);
-    if steady {
-        return None;
-    }
-    rbcore::torque_free_period(moments, l)
-}
-
 /// `simulate --summary`: runs every step without writing the CSV and prints one JSON object.
 fn summary(args: &SimulateArgs, sim: &mut Simulation, steps: u64) -> Result<(), CliError> {
     let d0 = sim.diagnostics();
@@ -286,6 +249,11 @@ fn summary(args: &SimulateArgs, sim: &mut Simulation, steps: u64) -> Result<(), 
         drift.observe(&d);
         flips.observe(d.time, d.omega_principal.y);
     }
+    let (axis, period) = match rbcore::polhode(&moments, &l0) {
+        Polhode::Circles { axis, period, .. } => (Some(axis + 1), Some(period)),
+        Polhode::Steady { axis } => (Some(axis + 1), None),
+        Polhode::AtRest | Polhode::Spherical | Polhode::Separatrix => (None, None),
+    };
     let object = serde_json::json!({
         "schema_version": SUMMARY_SCHEMA_VERSION,
         "integrator": args.integrator.to_string(),
@@ -294,13 +262,13 @@ fn summary(args: &SimulateArgs, sim: &mut Simulation, steps: u64) -> Result<(), 
         "duration": sim.time(),
         "steps": steps,
         "moments": [moments.x, moments.y, moments.z],
-        "flip_period_predicted": predicted_flip_period(&moments, &l0),
+        "flip_period_predicted": period,
         "flip_period_measured": flips.mean_period(),
         "flips": flips.flips(),
         "energy_drift_max_rel": drift.max_energy(),
         "L_drift_max_rel": drift.max_l_vector(),
         "L_norm_drift_max_rel": drift.max_l_norm(),
-        "polhode_circles_axis": polhode_axis(&moments, &l0),
+        "polhode_circles_axis": axis,
     });
     let text = serde_json::to_string_pretty(&object)
         .map_err(|e| CliError::Runtime(format!("cannot write the summary: {e}")))?;
@@ -414,26 +382,4 @@ fn compare(args: &SimulateArgs, body: Body, steps: u64) -> Result<(), CliError> 
         "(period err: mean period from the w2 reversals vs 4K/lambda; dw vs the exact flow at the same times)"
     );
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn separatrix_and_equal_moments_have_no_polhode_axis_and_no_period() {
-        let i = Vector3::new(1.0, 2.0, 3.0);
-        // Σ Iₖ(Iₖ − I₂)ωₖ² = −1 + 3·(1/3) = 0: on the separatrix, the period is infinite.
-        let on = i.component_mul(&Vector3::new(1.0, 4.0, (1.0f64 / 3.0).sqrt()));
-        assert_eq!(polhode_axis(&i, &on), None);
-        assert_eq!(predicted_flip_period(&i, &on), None);
-        let inside = i.component_mul(&Vector3::new(1.1, 4.0, (1.0f64 / 3.0).sqrt()));
-        assert_eq!(polhode_axis(&i, &inside), Some(1));
-        let cube = Vector3::repeat(2.0);
-        assert_eq!(polhode_axis(&cube, &Vector3::new(1.0, 2.0, 3.0)), None);
-        assert_eq!(predicted_flip_period(&cube, &Vector3::new(1.0, 2.0, 3.0)), None);
-        // Steady rotation about axis 3: nothing reverses.
-        assert_eq!(predicted_flip_period(&i, &Vector3::new(0.0, 0.0, 6.0)), None);
-        assert_eq!(polhode_axis(&Vector3::new(1.0, 3.0, 3.0), &on), Some(1));
-    }
 }

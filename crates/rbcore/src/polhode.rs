@@ -1,0 +1,138 @@
+//! Which way a torque-free body's angular momentum moves in the body, and when it flips.
+//!
+//! With no torque, world L is fixed and body L stays on the sphere |L| = const and on the energy
+//! ellipsoid 2E = Σ Lₖ²/Iₖ; their intersections, the polhodes, circle the axis of least moment
+//! when |L|² < 2E·I₂ and the axis of greatest moment when |L|² > 2E·I₂, and meet at the
+//! separatrix through the intermediate axis (Landau & Lifshitz, *Mechanics* §37). Along a
+//! polhode ω₂ reverses twice per period 4K(k)/λ ([`crate::torque_free_period`]): that reversal
+//! is the intermediate-axis (tennis-racket, Dzhanibekov) flip.
+
+use nalgebra::Vector3;
+
+use crate::integrators::exact::torque_free_period;
+
+/// Moments this close (relative to the largest) count as equal, and |L|² − 2E·I₂ this small
+/// (relative to |L|²) as the separatrix: round-off of the inputs, not a different motion.
+const EQUAL: f64 = 1e-12;
+
+/// The torque-free motion of body angular momentum, classified.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Polhode {
+    /// No angular momentum: nothing turns.
+    AtRest,
+    /// Three equal moments: every axis is principal, so L never moves in the body.
+    Spherical,
+    /// L lies along principal axis `axis` (0, 1 or 2, moments ascending): a steady rotation.
+    Steady {
+        /// The axis, counting from 0.
+        axis: usize,
+    },
+    /// L circles principal axis `axis` (0 or 2; a symmetric top's distinct axis), and ω₂
+    /// reverses every half `period`.
+    Circles {
+        /// The axis circled, counting from 0.
+        axis: usize,
+        /// The period 4K(k)/λ of ω in the body (s).
+        period: f64,
+        /// (|L|² − 2E·I₂)/|L|²: how far from the separatrix (0 on it; small near it, where the
+        /// period grows without bound).
+        separation: f64,
+    },
+    /// On the separatrix through the intermediate axis: the period is infinite.
+    Separatrix,
+}
+
+/// The polhode of body angular momentum `l` (principal frame) for principal `moments`
+/// (ascending).
+pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
+    let l2 = l.norm_squared();
+    if !(l2 > 0.0) {
+        return Polhode::AtRest;
+    }
+    let i = moments;
+    let (equal12, equal23) = (i.y - i.x <= EQUAL * i.z, i.z - i.y <= EQUAL * i.z);
+    if equal12 && equal23 {
+        return Polhode::Spherical;
+    }
+    let along: Vec<usize> = (0..3).filter(|&k| l[k] != 0.0).collect();
+    if let [axis] = along[..] {
+        return Polhode::Steady { axis };
+    }
+    // |L|² − 2E·I₂ = Σ (Iₖ − I₂) Lₖ²/Iₖ, term by term so that the large L₂ term cannot cancel.
+    let beyond: f64 = (0..3).map(|k| (i[k] - i.y) * l[k] * l[k] / i[k]).sum();
+    let separation = beyond / l2;
+    let axis = match (equal12, equal23) {
+        // A symmetric top's polhodes circle its distinct axis.
+        (true, _) => 2,
+        (_, true) => 0,
+        _ if separation.abs() <= EQUAL => return Polhode::Separatrix,
+        _ if separation < 0.0 => 0,
+        _ => 2,
+    };
+    match torque_free_period(moments, l) {
+        Some(period) => Polhode::Circles {
+            axis,
+            period,
+            separation,
+        },
+        None => Polhode::Separatrix,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const I: Vector3<f64> = Vector3::new(1.0, 2.0, 3.0);
+
+    #[test]
+    fn the_sign_of_l2_minus_2ei2_picks_the_axis() {
+        // ω = (0.001, 10, 0.001): |L|² − 2E·I₂ = −1e-6 + 3e-6 > 0, around the major axis.
+        let l = I.component_mul(&Vector3::new(0.001, 10.0, 0.001));
+        let Polhode::Circles {
+            axis,
+            period,
+            separation,
+        } = polhode(&I, &l)
+        else {
+            panic!("{:?}", polhode(&I, &l));
+        };
+        assert_eq!(axis, 2);
+        assert!((separation - 2e-6 / l.norm_squared()).abs() < 1e-12 * separation);
+        assert_eq!(Some(period), torque_free_period(&I, &l));
+        let minor = I.component_mul(&Vector3::new(0.01, 10.0, 0.001));
+        assert!(matches!(
+            polhode(&I, &minor),
+            Polhode::Circles { axis: 0, .. }
+        ));
+    }
+
+    #[test]
+    fn special_motions() {
+        assert_eq!(polhode(&I, &Vector3::zeros()), Polhode::AtRest);
+        assert_eq!(
+            polhode(&Vector3::repeat(2.0), &Vector3::new(1.0, 2.0, 3.0)),
+            Polhode::Spherical
+        );
+        assert_eq!(
+            polhode(&I, &Vector3::new(0.0, 0.0, 6.0)),
+            Polhode::Steady { axis: 2 }
+        );
+        assert_eq!(
+            polhode(&I, &Vector3::new(0.0, 4.0, 0.0)),
+            Polhode::Steady { axis: 1 }
+        );
+        // Σ (Iₖ − I₂) Lₖ²/Iₖ = −1 + 1 = 0 with L = (1, 4, √3): the separatrix.
+        let on = Vector3::new(1.0, 4.0, 3.0f64.sqrt());
+        assert_eq!(polhode(&I, &on), Polhode::Separatrix);
+        // A symmetric top (I₁ = I₂) precesses about its distinct axis at Ω = (I₃ − I₁)/I₁·ω₃.
+        let top = Vector3::new(2.0, 2.0, 3.0);
+        let l = top.component_mul(&Vector3::new(1.0, 2.0, 3.0));
+        let Polhode::Circles { axis, period, .. } = polhode(&top, &l) else {
+            panic!("{:?}", polhode(&top, &l));
+        };
+        assert_eq!(axis, 2);
+        let precession = 2.0 * std::f64::consts::PI / (0.5 * 3.0);
+        assert!((period - precession).abs() < 1e-12 * precession);
+    }
+}
