@@ -5,7 +5,7 @@
 use std::collections::VecDeque;
 use std::io::{self, Write};
 
-use rbcore::{Diagnostics, relative_change};
+use rbcore::{Diagnostics, FlipCounter, relative_change};
 
 use crate::timeseries::{QuaternionSign, Sample};
 
@@ -17,6 +17,8 @@ pub struct History {
     energy_reference: Option<f64>,
     max_drift: f64,
     sign: QuaternionSign,
+    /// Reversals of ω₂ since the last disturbance.
+    flips: FlipCounter,
 }
 
 impl History {
@@ -28,6 +30,7 @@ impl History {
             energy_reference: None,
             max_drift: 0.0,
             sign: QuaternionSign::default(),
+            flips: FlipCounter::new(),
         }
     }
 
@@ -50,6 +53,7 @@ impl History {
             self.clear();
         }
         self.sign.apply(&mut s);
+        self.flips.observe(s.t, s.omega_principal[1]);
         let reference = *self.energy_reference.get_or_insert(s.energy);
         if let Some(drift) = relative_change(s.energy, reference) {
             self.max_drift = self.max_drift.max(drift.abs());
@@ -73,6 +77,7 @@ impl History {
     pub fn mark_disturbance(&mut self) {
         self.energy_reference = None;
         self.max_drift = 0.0;
+        self.flips = FlipCounter::new();
     }
 
     /// The samples, oldest first.
@@ -90,6 +95,12 @@ impl History {
     pub fn energy_drift(&self) -> Option<(f64, f64)> {
         let current = relative_change(self.last()?.energy, self.energy_reference?)?;
         Some((current, self.max_drift))
+    }
+
+    /// Time between the last two reversals of ω₂ since the last disturbance (half the flip
+    /// period of torque-free motion), once two have happened.
+    pub fn flip_interval(&self) -> Option<f64> {
+        self.flips.last_interval()
     }
 
     /// Points `[t, value(sample)]` from time `since` on, at most about `max_points` of them:

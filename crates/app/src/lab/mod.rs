@@ -546,6 +546,31 @@ mod tests {
         assert!((sp.sim().time() - f64::from(5 + cap) * dt).abs() < 1e-12);
     }
 
+    /// The T-handle's flips come when the exact solution says: the measured interval between
+    /// reversals of ω₂ is half the period predicted from E and |L|; a poke starts the count over.
+    #[test]
+    fn measured_flips_match_the_predicted_period() {
+        let mut lab = lab();
+        let rbcore::Polhode::Circles { period, .. } = lab.primary().polhode() else {
+            panic!("{:?}", lab.primary().polhode());
+        };
+        assert_eq!(lab.primary().history().flip_interval(), None);
+        lab.advance_for(15.0);
+        let measured = lab.primary().history().flip_interval().expect("flips in 15 s");
+        assert!(
+            ((measured - period / 2.0) / (period / 2.0)).abs() < 1e-3,
+            "{measured} vs {}",
+            period / 2.0
+        );
+        let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
+        lab.apply(Command::Poke {
+            specimen: PRIMARY,
+            point,
+            direction: Vector3::new(0.0, 0.0, 1.0),
+        });
+        assert_eq!(lab.primary().history().flip_interval(), None);
+    }
+
     /// A frame of 150 ms at dt = 1/240 is 36 steps: the cap's 16 run and the rest is reported,
     /// not lost in the clock.
     #[test]

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use massprops::{Comparison, MassProperties};
 use nalgebra::{Point3, UnitQuaternion, Vector3};
-use rbcore::{Advance, Body, SimError, Simulation, SoftString};
+use rbcore::{Advance, Body, Polhode, SimError, Simulation, SoftString};
 
 use super::history::History;
 use super::loader::LoadedBody;
@@ -337,6 +337,17 @@ impl Specimen {
         // The analysis is at density 1, so its mass is the unscaled volume.
         let volume = self.body.analysis.properties.mass * self.scale.powi(3);
         self.properties(InertiaSource::Exact).mass / volume
+    }
+    /// How the body's angular momentum moves in the body now, torque-free: the axis its polhode
+    /// circles and the flip period predicted from the current E and |L|.
+    pub fn polhode(&self) -> Polhode {
+        let b = self.sim.body();
+        let l = self
+            .sim
+            .diagnostics()
+            .omega_principal
+            .component_mul(&b.moments());
+        rbcore::polhode(&b.moments(), &l)
     }
     /// The current poke flash.
     pub fn poke_flash(&self) -> Option<PokeFlash> {

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use egui::{Color32, RichText};
-use rbcore::{Integrator, RotationModel};
+use rbcore::{Integrator, Polhode, RotationModel};
 
 use super::{PanelState, number};
 use crate::gui::dialogs::DialogPurpose;
@@ -224,6 +224,63 @@ fn error_text(text: String, large: bool) -> RichText {
     }
 }
 
+/// What the panel says about the flip: the interval between reversals of ω₂ predicted from the
+/// current E and |L| (rbcore's exact solution) beside the one measured, or why there is none.
+fn flip_text(
+    polhode: Polhode,
+    measured: Option<f64>,
+    model: RotationModel,
+    torque_free: bool,
+) -> String {
+    let mut text = match polhode {
+        Polhode::Circles {
+            axis,
+            period,
+            separation,
+        } => {
+            let mut t = format!(
+                "L circles axis {}; ω₂ reverses every T/2 = {:.3} s (predicted from E and |L|)",
+                axis + 1,
+                period / 2.0
+            );
+            match measured {
+                Some(m) => t.push_str(&format!(", measured {m:.3} s.")),
+                None => t.push_str(", measured after two reversals."),
+            }
+            if separation.abs() < 1e-3 {
+                t.push_str(
+                    " Near the separatrix: the closer the spin to it, the longer the interval, \
+                     without bound.",
+                );
+            }
+            t
+        }
+        Polhode::Separatrix => "On the separatrix through axis 2: the interval between flips \
+                                grows without bound."
+            .to_owned(),
+        Polhode::Steady { axis: 1 } => "Steady spin about axis 2: unstable, the slightest \
+                                       disturbance (a poke) starts the flips."
+            .to_owned(),
+        Polhode::Steady { axis } => format!(
+            "Steady spin about axis {}: stable, nothing flips (a poke only makes it wobble).",
+            axis + 1
+        ),
+        Polhode::Spherical => "All three moments are equal: every axis is principal, so the spin \
+                               never moves in the body and nothing flips."
+            .to_owned(),
+        Polhode::AtRest => "At rest: nothing turns.".to_owned(),
+    };
+    if model == RotationModel::Textbook {
+        text.push_str(
+            " The textbook model drops ω × Iω, so this body never flips: the prediction is the \
+             real body's.",
+        );
+    } else if !torque_free {
+        text.push_str(" Damping or the string changes E and |L|: the prediction follows them.");
+    }
+    text
+}
+
 fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: &mut AppSettings) {
     egui::CollapsingHeader::new("Motion")
         .default_open(true)
@@ -249,6 +306,16 @@ fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: 
                     }
                 }
             });
+            let primary = lab.primary();
+            let physics = &lab.settings().physics;
+            let torque_free = physics.angular_damping == 0.0 && primary.string_view().is_none();
+            let text = flip_text(
+                primary.polhode(),
+                primary.history().flip_interval(),
+                physics.model,
+                torque_free,
+            );
+            ui.add(egui::Label::new(text).wrap());
             number(
                 ui,
                 "Spin rate",
@@ -392,7 +459,31 @@ fn diagnostics_section(ui: &mut egui::Ui, lab: &Lab) {
 
 #[cfg(test)]
 mod tests {
-    use super::elide;
+    use super::*;
+
+    #[test]
+    fn flip_text_predicts_measures_and_explains() {
+        let circles = Polhode::Circles {
+            axis: 2,
+            period: 7.101450607931697,
+            separation: 5e-9,
+        };
+        let full = RotationModel::Full;
+        let t = flip_text(circles, Some(3.5507), full, true);
+        assert!(
+            t.contains("T/2 = 3.551 s") && t.contains("measured 3.551 s"),
+            "{t}"
+        );
+        assert!(t.contains("axis 3") && t.contains("without bound"), "{t}");
+        assert!(flip_text(circles, None, full, true).contains("after two reversals"));
+        let textbook = flip_text(circles, None, RotationModel::Textbook, true);
+        assert!(textbook.contains("never flips"), "{textbook}");
+        assert!(flip_text(circles, None, full, false).contains("Damping or the string"));
+        assert!(flip_text(Polhode::Spherical, None, full, true).contains("equal"));
+        assert!(flip_text(Polhode::Steady { axis: 1 }, None, full, true).contains("unstable"));
+        assert!(flip_text(Polhode::Steady { axis: 0 }, None, full, true).contains("stable"));
+        assert!(flip_text(Polhode::Separatrix, None, full, true).contains("without bound"));
+    }
 
     #[test]
     fn long_names_lose_their_middle() {
