@@ -46,7 +46,7 @@ pub enum Polhode {
 /// (ascending).
 pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
     let l2 = l.norm_squared();
-    if !(l2 > 0.0) {
+    if l2.is_nan() || l2 <= 0.0 {
         return Polhode::AtRest;
     }
     let i = moments;
