@@ -86,6 +86,87 @@ fn green_line(r: u8, g: u8, b: u8) -> bool {
     g > 150 && r < 150 && b < 150
 }
 
+/// Starts Xvfb at 1280 × 800 on a display of its own (`offset` tells this file's tests apart)
+/// and waits for its socket.
+fn start_xvfb(offset: u32) -> (Guard, String) {
+    let display = format!(":{}", 90 + offset + 2 * (std::process::id() % 500));
+    let mut xvfb = Command::new("Xvfb");
+    xvfb.args([
+        display.as_str(),
+        "-screen",
+        "0",
+        "1280x800x24",
+        "-nolisten",
+        "tcp",
+    ])
+    .stdout(Stdio::null())
+    .stderr(Stdio::null());
+    let guard = Guard(xvfb.spawn().expect("start Xvfb"));
+    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{}", &display[1..]));
+    let start = Instant::now();
+    while !socket.exists() {
+        assert!(
+            start.elapsed() < Duration::from_secs(20),
+            "Xvfb did not start"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    (guard, display)
+}
+
+/// `--screenshot OUT.png --after S` writes the app's own pixels (the 3D view included) after S
+/// simulated seconds and exits 0.
+#[test]
+fn screenshot_writes_the_apps_own_pixels_and_exits() {
+    if !on_path("Xvfb") {
+        skip(
+            "screenshot_writes_the_apps_own_pixels_and_exits",
+            "Xvfb is not installed",
+            "apt-get install xvfb libx11-6 libxcursor1 libx11-xcb1 libxi6 libxkbcommon-x11-0 \
+             libgl1",
+        );
+        return;
+    }
+    let (_xvfb, display) = start_xvfb(1);
+    let home = std::env::temp_dir().join(format!("inertia-lab-shot-{}", std::process::id()));
+    std::fs::create_dir_all(&home).expect("temp home");
+    let png = home.join("shot.png");
+    let out = Command::new(env!("CARGO_BIN_EXE_inertia-lab"))
+        .args(["--after", "3", "--screenshot"])
+        .arg(&png)
+        .env("DISPLAY", &display)
+        .env("HOME", &home)
+        .env("XDG_DATA_HOME", &home)
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("inertia-lab runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(&png).expect("the PNG was written"),
+    ));
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut bytes = vec![0; reader.output_buffer_size().expect("size")];
+    let info = reader.next_frame(&mut bytes).expect("pixels");
+    assert_eq!((info.width, info.height), (1280, 800));
+    let rgba = Image {
+        width: 1280,
+        height: 800,
+        rgb: bytes.chunks(4).flat_map(|p| [p[0], p[1], p[2]]).collect(),
+    };
+    let body = rgba.count((370, 1280), (30, 580), body_pixel);
+    let plot = rgba.count((370, 1280), (630, 800), green_line);
+    assert!(body > 2000, "the 3D view shows no body ({body} pixels)");
+    assert!(
+        plot > 100,
+        "the plots show no lines after 3 s ({plot} pixels)"
+    );
+    std::fs::remove_dir_all(&home).ok();
+}
+
 #[test]
 fn window_shows_the_body_and_the_plots_and_survives_a_bad_file() {
     for program in ["Xvfb", "import"] {
@@ -99,28 +180,7 @@ fn window_shows_the_body_and_the_plots_and_survives_a_bad_file() {
             return;
         }
     }
-    let display = format!(":{}", 90 + std::process::id() % 500);
-    let mut xvfb = Command::new("Xvfb");
-    xvfb.args([
-        display.as_str(),
-        "-screen",
-        "0",
-        "1280x800x24",
-        "-nolisten",
-        "tcp",
-    ])
-    .stdout(Stdio::null())
-    .stderr(Stdio::null());
-    let _xvfb = Guard(xvfb.spawn().expect("start Xvfb"));
-    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{}", &display[1..]));
-    let start = Instant::now();
-    while !socket.exists() {
-        assert!(
-            start.elapsed() < Duration::from_secs(20),
-            "Xvfb did not start"
-        );
-        std::thread::sleep(Duration::from_millis(50));
-    }
+    let (_xvfb, display) = start_xvfb(0);
 
     let home = std::env::temp_dir().join(format!("inertia-lab-smoke-{}", std::process::id()));
     std::fs::create_dir_all(&home).expect("temp home");

@@ -58,8 +58,11 @@ fn main() -> ExitCode {
 
 #[cfg(feature = "gui")]
 fn app(cli: &Cli) -> Result<(), CliError> {
-    inertia_lab::gui::run(&cli.gui)
-        .map_err(|e| CliError::Runtime(format!("cannot start the app: {e}")))
+    use inertia_lab::gui::RunError;
+    inertia_lab::gui::run(&cli.gui).map_err(|e| match e {
+        RunError::Usage(text) => CliError::Usage(text),
+        other => CliError::Runtime(other.to_string()),
+    })
 }
 
 #[cfg(not(feature = "gui"))]

@@ -10,6 +10,7 @@ use std::time::Instant;
 use clap::Args;
 use egui::Key;
 
+pub mod capture;
 pub mod dialogs;
 pub mod panels;
 pub mod view3d;
@@ -48,6 +49,33 @@ pub struct GuiArgs {
     /// With --bench-frames: collapse the plot panel (to measure what the plots cost).
     #[arg(long, requires = "bench_frames")]
     pub bench_no_plots: bool,
+    /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
+    /// settings, after --after simulated seconds, paused there.
+    #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
+    pub screenshot: Option<PathBuf>,
+    /// With --screenshot: simulated seconds to run first.
+    #[arg(
+        long,
+        value_name = "SECONDS",
+        default_value_t = 0.0,
+        requires = "screenshot",
+        allow_negative_numbers = true
+    )]
+    pub after: f64,
+}
+
+/// Why the app could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// The arguments are out of range.
+    #[error("{0}")]
+    Usage(String),
+    /// No window or GL context could be created (no display, no OpenGL 3).
+    #[error("cannot start the app: {0}")]
+    Start(#[from] eframe::Error),
+    /// `--screenshot` could not be taken or written.
+    #[error("{0}")]
+    Screenshot(String),
 }
 
 /// Frame-time measurement of `--bench-frames`.
@@ -73,6 +101,7 @@ pub struct LabApp {
     scene: Option<Arc<Mutex<Scene>>>,
     dialog: Option<Dialog>,
     bench: Option<Bench>,
+    capture: Option<capture::Capture>,
 }
 
 impl std::fmt::Debug for LabApp {
@@ -112,6 +141,7 @@ impl LabApp {
             scene,
             dialog: None,
             bench: None,
+            capture: None,
         })
     }
 
@@ -357,10 +387,14 @@ impl eframe::App for LabApp {
         }
         let ctx = ui.ctx().clone();
         self.bench_frame(&ctx);
+        if let Some(c) = &mut self.capture {
+            c.frame(&ctx);
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        if self.bench.is_none() {
+        // Measuring and capturing runs use default settings and must not replace the user's.
+        if self.bench.is_none() && self.capture.is_none() {
             eframe::set_value(storage, SETTINGS_KEY, self.lab.settings());
         }
     }
@@ -369,8 +403,15 @@ impl eframe::App for LabApp {
 /// Opens the window and runs the app until it is closed.
 ///
 /// # Errors
-/// No window or GL context could be created (no display, no OpenGL 3).
-pub fn run(args: &GuiArgs) -> Result<(), eframe::Error> {
+/// No window or GL context could be created (no display, no OpenGL 3); `--after` is not a
+/// finite number ≥ 0; the screenshot could not be written.
+pub fn run(args: &GuiArgs) -> Result<(), RunError> {
+    if !(args.after.is_finite() && args.after >= 0.0) {
+        return Err(RunError::Usage(format!(
+            "--after must be a finite number of seconds ≥ 0, got {}",
+            args.after
+        )));
+    }
     let bench = args.bench_frames.map(|frames| Bench {
         frames: frames.max(1),
         hide_plots: args.bench_no_plots,
@@ -380,6 +421,12 @@ pub fn run(args: &GuiArgs) -> Result<(), eframe::Error> {
         cpu_times: Vec::with_capacity(frames),
         warmup: 10,
     });
+    let outcome = capture::Outcome::default();
+    let capture = args
+        .screenshot
+        .clone()
+        .map(|path| capture::Capture::new(path, Arc::clone(&outcome)));
+    let scripted = bench.is_some() || capture.is_some();
     let options = eframe::NativeOptions {
         renderer: eframe::Renderer::Glow,
         // Without a depth buffer the 3D occlusion is wrong (stack notes).
@@ -395,17 +442,17 @@ pub fn run(args: &GuiArgs) -> Result<(), eframe::Error> {
             .with_inner_size([1280.0, 800.0])
             .with_min_inner_size([640.0, 480.0])
             .with_drag_and_drop(true),
-        persist_window: bench.is_none(),
+        persist_window: !scripted,
         ..Default::default()
     };
     let file = args.file.clone();
-    let history = args.bench_history;
+    let (history, after) = (args.bench_history, args.after);
     eframe::run_native(
         "inertia-lab",
         options,
         Box::new(move |cc| {
-            let settings = match (&bench, cc.storage) {
-                (None, Some(storage)) => {
+            let settings = match (scripted, cc.storage) {
+                (false, Some(storage)) => {
                     eframe::get_value(storage, SETTINGS_KEY).unwrap_or_default()
                 }
                 _ => AppSettings::default(),
@@ -413,8 +460,8 @@ pub fn run(args: &GuiArgs) -> Result<(), eframe::Error> {
             let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
             if let Some(path) = file {
                 app.command(Command::LoadFile(path));
-                if bench.is_some() {
-                    // The measured frames must all show the mesh.
+                if scripted {
+                    // Every measured frame, and the picture, must show the mesh.
                     app.lab.wait_for_load();
                 }
             }
@@ -424,7 +471,24 @@ pub fn run(args: &GuiArgs) -> Result<(), eframe::Error> {
                 }
                 app.bench = bench;
             }
+            if capture.is_some() {
+                app.lab.advance_for(after);
+                // The picture shows the state at exactly `after` seconds.
+                app.command(Command::TogglePause);
+                app.capture = capture;
+            }
             Ok(Box::new(app))
         }),
-    )
+    )?;
+    if args.screenshot.is_some() {
+        let result = outcome.lock().ok().and_then(|mut slot| slot.take());
+        return match result {
+            Some(Ok(())) => Ok(()),
+            Some(Err(e)) => Err(RunError::Screenshot(e)),
+            None => Err(RunError::Screenshot(
+                "the window closed before the screenshot was taken".to_owned(),
+            )),
+        };
+    }
+    Ok(())
 }

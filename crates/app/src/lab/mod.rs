@@ -556,7 +556,11 @@ mod tests {
         };
         assert_eq!(lab.primary().history().flip_interval(), None);
         lab.advance_for(15.0);
-        let measured = lab.primary().history().flip_interval().expect("flips in 15 s");
+        let measured = lab
+            .primary()
+            .history()
+            .flip_interval()
+            .expect("flips in 15 s");
         assert!(
             ((measured - period / 2.0) / (period / 2.0)).abs() < 1e-3,
             "{measured} vs {}",
