@@ -27,6 +27,9 @@ use view3d::scene::Scene;
 /// the 3D toolbar and the plot controls still fit in one row beside it.
 const SIDE_PANEL_WIDTH: f32 = 340.0;
 
+/// Default width of the momentum-sphere panel beside the 3D view (points).
+const SPHERE_PANEL_WIDTH: f32 = 250.0;
+
 /// Key under which the settings are stored.
 const SETTINGS_KEY: &str = "inertia-lab-settings";
 
@@ -215,8 +218,18 @@ impl LabApp {
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
+            // The toolbar spans the whole width; the sphere and the 3D view share the rest.
             if panels::toolbar::show(ui, &mut draft) {
                 self.view.frame_body(&self.lab);
+            }
+            if draft.view.momentum_sphere {
+                egui::Panel::right("sphere")
+                    .resizable(true)
+                    .default_size(SPHERE_PANEL_WIDTH)
+                    .min_size(180.0)
+                    .show(ui, |ui| {
+                        panels::sphere::show(ui, &self.lab, &mut self.panels);
+                    });
             }
             self.view
                 .show(ui, &self.lab, self.scene.as_ref(), &mut commands);

@@ -14,6 +14,7 @@ pub mod history;
 pub mod loader;
 pub mod picking;
 pub mod placement;
+pub mod polhodes;
 pub mod settings;
 pub mod specimen;
 

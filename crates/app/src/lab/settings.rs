@@ -40,6 +40,8 @@ pub struct ViewSettings {
     pub l_arrow: bool,
     /// The camera moves with the centre of mass (a poked body stays in view).
     pub follow_body: bool,
+    /// The momentum sphere beside the 3D view: L in the principal frame on its polhode.
+    pub momentum_sphere: bool,
 }
 
 impl Default for ViewSettings {
@@ -53,6 +55,7 @@ impl Default for ViewSettings {
             omega_arrow: true,
             l_arrow: true,
             follow_body: true,
+            momentum_sphere: true,
         }
     }
 }

@@ -8,6 +8,7 @@ use crate::lab::{Command, Lab};
 pub mod help;
 pub mod plots;
 pub mod side;
+pub mod sphere;
 pub mod toolbar;
 
 /// UI-only state of the panels (text being typed, plot following), not persisted.
@@ -25,6 +26,8 @@ pub struct PanelState {
     pub dialog_request: Option<DialogPurpose>,
     /// Whether a file dialog is open (its buttons are disabled meanwhile).
     pub dialog_open: bool,
+    /// The momentum sphere's orbit.
+    pub sphere: sphere::SphereView,
 }
 
 impl Default for PanelState {
@@ -36,6 +39,7 @@ impl Default for PanelState {
             help_open: false,
             dialog_request: None,
             dialog_open: false,
+            sphere: sphere::SphereView::default(),
         }
     }
 }

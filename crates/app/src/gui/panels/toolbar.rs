@@ -21,6 +21,8 @@ pub fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
             ui.checkbox(&mut v.principal_axes, "Principal axes");
             ui.checkbox(&mut v.omega_arrow, "ω");
             ui.checkbox(&mut v.l_arrow, "L");
+            ui.checkbox(&mut v.momentum_sphere, "Sphere")
+                .on_hover_text("the momentum sphere: L in the body, on its polhode");
             ui.separator();
             egui::ComboBox::from_label("Equivalent")
                 .selected_text(equivalent_name(v.equivalent))

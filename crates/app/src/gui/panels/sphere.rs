@@ -1,0 +1,240 @@
+//! The momentum sphere: the body's angular momentum seen from the body, in the principal frame.
+//! With no torque it stays on the sphere |L| = const and on its energy ellipsoid, so it runs along
+//! one of the drawn polhodes; the separatrix through axis 2 (in its own colour) divides those
+//! circling the stable axes 1 and 3. The current L is the white dot with a fading trail; drag to
+//! orbit. The geometry is `lab::polhodes`; this file only projects and paints it.
+
+use egui::{Color32, Pos2, Sense, Stroke};
+use nalgebra::{UnitQuaternion, Vector3};
+use rbcore::RotationModel;
+
+use super::PanelState;
+use crate::gui::view3d::overlay::AXIS_COLORS;
+use crate::lab::Lab;
+use crate::lab::polhodes::{CurveKind, polhodes};
+
+const POLHODE_COLOR: Color32 = Color32::from_rgb(150, 150, 160);
+const SEPARATRIX_COLOR: Color32 = Color32::from_rgb(255, 170, 60);
+/// Seconds of history drawn as the trail.
+const TRAIL_SECONDS: f64 = 4.0;
+/// Polhodes drawn around each stable axis.
+const PER_SIDE: usize = 4;
+
+/// The orbit of the sphere view (UI state, not persisted).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereView {
+    /// Turn about the screen's vertical (rad).
+    pub yaw: f64,
+    /// Tilt towards the viewer (rad).
+    pub pitch: f64,
+}
+
+impl Default for SphereView {
+    fn default() -> Self {
+        // All three axes visible, axis 2 towards the viewer's right.
+        Self {
+            yaw: 0.7,
+            pitch: 0.4,
+        }
+    }
+}
+
+impl SphereView {
+    fn rotation(&self) -> UnitQuaternion<f64> {
+        UnitQuaternion::from_euler_angles(self.pitch, 0.0, 0.0)
+            * UnitQuaternion::from_euler_angles(0.0, self.yaw, 0.0)
+    }
+}
+
+/// Shows the view in `ui`.
+pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
+    let primary = lab.primary();
+    let body = primary.sim().body();
+    let moments = body.moments();
+    let l = primary
+        .sim()
+        .diagnostics()
+        .omega_principal
+        .component_mul(&moments);
+    let m = l.norm();
+    ui.strong("Momentum sphere (principal frame)");
+    let legend_height = 5.0 * ui.text_style_height(&egui::TextStyle::Small) + 12.0;
+    let size = ui
+        .available_width()
+        .min(ui.available_height() - legend_height)
+        .max(80.0);
+    let (rect, response) = ui.allocate_exact_size(egui::vec2(size, size), Sense::drag());
+    if response.dragged() {
+        let d = response.drag_delta();
+        state.sphere.yaw += f64::from(d.x) * 0.01;
+        state.sphere.pitch = (state.sphere.pitch + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
+    }
+    let painter = ui.painter_at(rect);
+    let center = rect.center();
+    let radius = 0.40 * size;
+    let view = state.sphere.rotation();
+    // Screen point and depth (> 0 towards the viewer) of a principal-frame direction.
+    let project = |p: &Vector3<f64>| -> (Pos2, f64) {
+        let v = view * p;
+        let at = center
+            + egui::vec2(
+                (v.x * f64::from(radius)) as f32,
+                (-v.y * f64::from(radius)) as f32,
+            );
+        (at, v.z)
+    };
+    painter.circle_stroke(center, radius, Stroke::new(1.0, Color32::from_gray(90)));
+    if m > 0.0 {
+        for curve in polhodes(&moments, 1.0, PER_SIDE, 96) {
+            let color = match curve.kind {
+                CurveKind::Separatrix => SEPARATRIX_COLOR,
+                CurveKind::Around(_) => POLHODE_COLOR,
+            };
+            let n = curve.points.len();
+            for k in 0..n {
+                let (a, da) = project(&curve.points[k]);
+                let (b, db) = project(&curve.points[(k + 1) % n]);
+                // The far side of the sphere is drawn faint.
+                let c = if da + db < 0.0 {
+                    color.gamma_multiply(0.25)
+                } else {
+                    color
+                };
+                painter.line_segment([a, b], Stroke::new(1.2, c));
+            }
+        }
+    }
+    for (i, color) in AXIS_COLORS.iter().enumerate() {
+        let axis = Vector3::ith(i, 1.15);
+        let (a, _) = project(&-axis);
+        let (b, _) = project(&axis);
+        painter.line_segment([a, b], Stroke::new(1.0, color.gamma_multiply(0.8)));
+        painter.text(
+            b,
+            egui::Align2::CENTER_CENTER,
+            format!("{}", i + 1),
+            egui::FontId::proportional(13.0),
+            *color,
+        );
+    }
+    if m > 0.0 {
+        trail(&painter, lab, &moments, &project);
+        let (dot, _) = project(&(l / m));
+        painter.circle_filled(dot, 4.5, Color32::WHITE);
+        painter.circle_stroke(dot, 4.5, Stroke::new(1.0, Color32::BLACK));
+    }
+    legend(ui, &moments);
+    let physics = &lab.settings().physics;
+    let reasons: Vec<&str> = [
+        (
+            physics.model == RotationModel::Textbook,
+            "the textbook model",
+        ),
+        (physics.angular_damping > 0.0, "damping"),
+        (primary.string_view().is_some(), "the string"),
+    ]
+    .into_iter()
+    .filter_map(|(on, why)| on.then_some(why))
+    .collect();
+    if !reasons.is_empty() {
+        ui.add(
+            egui::Label::new(
+                egui::RichText::new(format!(
+                    "The dot leaves its curve: {} changes E or |L|.",
+                    reasons.join(" and ")
+                ))
+                .small()
+                .color(SEPARATRIX_COLOR),
+            )
+            .wrap(),
+        );
+    }
+}
+
+/// The last seconds of L's direction, fading with age.
+fn trail(
+    painter: &egui::Painter,
+    lab: &Lab,
+    moments: &Vector3<f64>,
+    project: &dyn Fn(&Vector3<f64>) -> (Pos2, f64),
+) {
+    let history = lab.primary().history();
+    let Some(last) = history.last() else { return };
+    let since = last.t - TRAIL_SECONDS;
+    let start = history.samples().partition_point(|s| s.t < since);
+    let samples: Vec<_> = history.samples().range(start..).collect();
+    // About 300 segments whatever the step.
+    let stride = (samples.len() / 300).max(1);
+    let points: Vec<(f64, Pos2)> = samples
+        .iter()
+        .step_by(stride)
+        .filter_map(|s| {
+            let l = Vector3::from(s.omega_principal).component_mul(moments);
+            let n = l.norm();
+            (n > 0.0).then(|| (s.t, project(&(l / n)).0))
+        })
+        .collect();
+    for w in points.windows(2) {
+        let age = ((last.t - w[1].0) / TRAIL_SECONDS).clamp(0.0, 1.0) as f32;
+        let color = Color32::WHITE.gamma_multiply(1.0 - 0.9 * age);
+        painter.line_segment([w[0].1, w[1].1], Stroke::new(2.0, color));
+    }
+}
+
+/// How a spin about principal axis `i` behaves: the axes of least and greatest moment are
+/// stable, the intermediate one not; equal moments make their axes neutral (any axis in their
+/// plane is principal).
+fn stability(moments: &Vector3<f64>, i: usize) -> &'static str {
+    let equal = |a: usize, b: usize| (moments[b] - moments[a]).abs() <= 1e-12 * moments.z;
+    match i {
+        _ if equal(0, 1) && equal(1, 2) => "neutral (all moments equal)",
+        0 | 1 if equal(0, 1) => "neutral (I1 = I2)",
+        1 | 2 if equal(1, 2) => "neutral (I2 = I3)",
+        1 => "unstable",
+        _ => "stable",
+    }
+}
+
+/// The axes' moments and stability, in their colours.
+fn legend(ui: &mut egui::Ui, moments: &Vector3<f64>) {
+    for (i, color) in AXIS_COLORS.iter().enumerate() {
+        ui.label(
+            egui::RichText::new(format!(
+                "axis {}: I{} = {:.4e} kg·m², {}",
+                i + 1,
+                i + 1,
+                moments[i],
+                stability(moments, i)
+            ))
+            .small()
+            .color(*color),
+        );
+    }
+    ui.label(
+        egui::RichText::new("orange: the separatrix; white: L now and its trail")
+            .small()
+            .color(Color32::GRAY),
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stability_of_each_axis() {
+        let distinct = Vector3::new(1.0, 2.0, 3.0);
+        let names: Vec<_> = (0..3).map(|i| stability(&distinct, i)).collect();
+        assert_eq!(names, ["stable", "unstable", "stable"]);
+        let top = Vector3::new(2.0, 2.0, 3.0);
+        assert_eq!(stability(&top, 1), "neutral (I1 = I2)");
+        assert_eq!(stability(&top, 2), "stable");
+        let rod = Vector3::new(1.0, 3.0, 3.0);
+        assert_eq!(stability(&rod, 0), "stable");
+        assert_eq!(stability(&rod, 2), "neutral (I2 = I3)");
+        assert_eq!(
+            stability(&Vector3::repeat(2.0), 0),
+            "neutral (all moments equal)"
+        );
+    }
+}
