@@ -27,10 +27,13 @@ use nalgebra::{Point3, Vector3};
 use clock::FrameClock;
 use loader::{LoadedBody, Loading};
 use settings::AppSettings;
-pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView};
+pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView, Variant};
 
 /// The specimen every lab has: the one the user loads, pokes and plots.
 pub const PRIMARY: SpecimenId = SpecimenId(0);
+
+/// Most copies compared with the primary (each costs a simulation, a history and a ghost).
+pub const MAX_COPIES: usize = 3;
 
 /// An intent recorded by the UI (or a test), applied by [`Lab::apply`].
 #[derive(Debug, Clone, PartialEq)]
@@ -86,10 +89,9 @@ pub enum Command {
         /// The specimen held.
         specimen: SpecimenId,
     },
-    /// Add a copy of the primary specimen in its current state (same body, motion and history).
-    AddCopy,
-    /// Remove a specimen other than the primary.
-    Remove(SpecimenId),
+    /// Run the primary and up to [`MAX_COPIES`] copies of it from the same start, each copy
+    /// changed by its [`Variant`]; an empty list ends the comparison (the primary goes on).
+    Compare(Vec<Variant>),
     /// Show a line of information (outcomes the GUI learns itself, such as a cancelled dialog).
     Inform(String),
     /// Dismiss the message line.
@@ -141,14 +143,16 @@ impl Lab {
     pub fn new(settings: AppSettings) -> Result<Self, String> {
         let body = Arc::new(LoadedBody::t_handle()?);
         let axis = 1;
-        let (settings, primary) = match Specimen::start(PRIMARY, body.clone(), &settings, axis) {
-            Ok(s) => (settings, s),
-            Err(_) => {
-                let defaults = AppSettings::default();
-                let s = Specimen::start(PRIMARY, body, &defaults, axis)?;
-                (defaults, s)
-            }
-        };
+        let same = Variant::Same;
+        let (settings, primary) =
+            match Specimen::start(PRIMARY, same, body.clone(), &settings, axis) {
+                Ok(s) => (settings, s),
+                Err(_) => {
+                    let defaults = AppSettings::default();
+                    let s = Specimen::start(PRIMARY, same, body, &defaults, axis)?;
+                    (defaults, s)
+                }
+            };
         Ok(Self {
             settings,
             specimens: vec![primary],
@@ -238,18 +242,40 @@ impl Lab {
             }
             Command::Drag { specimen, target } => self.specimen_mut(specimen)?.drag(target)?,
             Command::Release { specimen } => self.specimen_mut(specimen)?.release(),
-            Command::AddCopy => {
-                let id = SpecimenId(self.next_id);
-                self.next_id += 1;
-                let copy = self.primary().copy_as(id);
-                self.specimens.push(copy);
-            }
-            Command::Remove(id) => {
-                if id == PRIMARY {
-                    return Err("the primary body cannot be removed".to_owned());
+            Command::Compare(variants) => {
+                if variants.len() > MAX_COPIES {
+                    return Err(format!(
+                        "at most {MAX_COPIES} copies can be compared, not {}",
+                        variants.len()
+                    ));
                 }
-                self.specimen(id)?;
-                self.specimens.retain(|s| s.id() != id);
+                let body = self.primary().body_arc().clone();
+                let mut fresh = vec![Specimen::start(
+                    PRIMARY,
+                    Variant::Same,
+                    body.clone(),
+                    &self.settings,
+                    self.preset_axis,
+                )?];
+                for (k, variant) in variants.into_iter().enumerate() {
+                    let id = SpecimenId(self.next_id + k as u32);
+                    let copy = Specimen::start(
+                        id,
+                        variant,
+                        body.clone(),
+                        &self.settings,
+                        self.preset_axis,
+                    )
+                    .map_err(|e| format!("{}: {e}", variant.label()))?;
+                    fresh.push(copy);
+                }
+                self.next_id += fresh.len() as u32;
+                let paused = self.is_paused();
+                self.specimens = fresh;
+                if paused {
+                    self.specimens.iter_mut().for_each(Specimen::pause);
+                }
+                self.clock.stop();
             }
             Command::Inform(text) => self.info(text),
             Command::DismissMessage => self.message = None,
@@ -264,7 +290,15 @@ impl Lab {
         let fresh = self
             .specimens
             .iter()
-            .map(|s| Specimen::start(s.id(), s.body_arc().clone(), &self.settings, axis))
+            .map(|s| {
+                Specimen::start(
+                    s.id(),
+                    s.variant(),
+                    s.body_arc().clone(),
+                    &self.settings,
+                    axis,
+                )
+            })
             .collect::<Result<Vec<_>, _>>()?;
         self.specimens = fresh;
         self.preset_axis = axis;
@@ -299,7 +333,15 @@ impl Lab {
         let fresh = self
             .specimens
             .iter()
-            .map(|s| Specimen::start(s.id(), body.clone(), &self.settings, self.preset_axis))
+            .map(|s| {
+                Specimen::start(
+                    s.id(),
+                    s.variant(),
+                    body.clone(),
+                    &self.settings,
+                    self.preset_axis,
+                )
+            })
             .collect::<Result<Vec<_>, _>>()?;
         self.specimens = fresh;
         if paused {
@@ -684,22 +726,45 @@ mod tests {
         );
     }
 
-    /// Copies run from the same state bit for bit; a poke acts only on the specimen it names.
+    /// Copies with the same settings stay identical bit for bit; a copy that differs in one
+    /// choice diverges; a poke acts only on the specimen it names; settings reach every copy.
     #[test]
-    fn copies_are_independent_specimens() {
+    fn compared_copies_differ_only_where_a_setting_differs() {
         let mut lab = lab();
         lab.advance(0.3);
-        lab.apply(Command::AddCopy);
-        assert_eq!(lab.specimens().len(), 2);
-        let copy = lab.specimens()[1].id();
-        lab.advance(1.0);
-        let (a, b) = (&lab.specimens()[0], &lab.specimens()[1]);
-        assert_eq!(a.sim().body().orientation(), b.sim().body().orientation());
-        assert_eq!(a.history().samples(), b.history().samples());
+        lab.apply(Command::Compare(vec![
+            Variant::Same,
+            Variant::Source(InertiaSource::BoundingBox),
+            Variant::Model(rbcore::RotationModel::Textbook),
+        ]));
+        assert!(lab.message().is_none(), "{:?}", lab.message());
+        assert_eq!(lab.specimens().len(), 4);
+        assert_eq!(lab.primary().sim().time(), 0.0, "all start together");
+        // Two reversals of ω₂ (at T/4 and 3T/4, T = 11.1 s) fit in 10 s.
+        lab.advance_for(10.0);
+        let [primary, same, bbox, textbook] = lab.specimens() else {
+            panic!("four specimens")
+        };
+        assert_eq!(primary.history().samples(), same.history().samples());
+        assert_eq!(
+            primary.sim().body().orientation(),
+            same.sim().body().orientation()
+        );
+        let w = |s: &Specimen| s.history().last().expect("samples").omega_principal;
+        assert!((Vector3::from(w(primary)) - Vector3::from(w(bbox))).norm() > 0.1);
+        // The textbook model never turns ω in the body: it keeps the start's ω.
+        let w0 = textbook.history().samples()[0].omega_principal;
+        assert!((Vector3::from(w(textbook)) - Vector3::from(w0)).norm() < 1e-9);
+        assert!(primary.history().flip_interval().is_some());
+        assert!(textbook.history().flip_interval().is_none());
+        // The drift tables: every copy conserves E to round-off, the primary's drift is README's.
+        assert!(primary.drift().max_energy() < 1e-12);
+        assert_eq!(bbox.variant(), Variant::Source(InertiaSource::BoundingBox));
 
+        let same_id = lab.specimens()[1].id();
         let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
         lab.apply(Command::Poke {
-            specimen: copy,
+            specimen: same_id,
             point,
             direction: Vector3::new(0.0, 0.0, 1.0),
         });
@@ -709,16 +774,29 @@ mod tests {
             a.sim().body().angular_momentum(),
             b.sim().body().angular_momentum()
         );
-        assert!(a.poke_flash().is_none() && b.poke_flash().is_some());
-
-        // Settings reach every specimen; removing the copy leaves the primary.
         lab.apply(settings_with(&lab, |s| s.body.scale = 2.0));
         assert!(lab.specimens().iter().all(|s| s.placement().scale == 2.0));
-        lab.apply(Command::Remove(PRIMARY));
-        assert!(lab.message().is_some_and(|m| m.error));
-        lab.apply(Command::Remove(copy));
+        // The bounding-box copy keeps its source whatever the lab's is.
+        let bbox = &lab.specimens()[2];
+        let expected = bbox
+            .properties(InertiaSource::BoundingBox)
+            .principal
+            .moments;
+        assert_eq!(bbox.sim().body().moments(), expected);
+
+        lab.apply(Command::Compare(vec![Variant::Same; 4]));
+        assert!(
+            lab.message()
+                .is_some_and(|m| m.error && m.text.contains("at most 3"))
+        );
+        assert_eq!(
+            lab.specimens().len(),
+            4,
+            "a refused comparison changes nothing"
+        );
+        lab.apply(Command::Compare(Vec::new()));
         assert_eq!(lab.specimens().len(), 1);
-        lab.apply(Command::Release { specimen: copy });
+        lab.apply(Command::Release { specimen: same_id });
         assert!(lab.message().is_some_and(|m| m.text.contains("no body")));
     }
 

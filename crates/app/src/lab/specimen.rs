@@ -7,7 +7,10 @@ use std::time::{Duration, Instant};
 
 use massprops::{Comparison, MassProperties};
 use nalgebra::{Point3, UnitQuaternion, Vector3};
-use rbcore::{Advance, Body, Polhode, SimError, Simulation, SoftString};
+use rbcore::{
+    Advance, Body, DriftTracker, Integrator, Polhode, RotationModel, SimError, Simulation,
+    SoftString,
+};
 
 use super::history::History;
 use super::loader::LoadedBody;
@@ -29,6 +32,44 @@ const MAX_HISTORY: usize = 400_000;
 /// A specimen's name in commands; stays the same while the specimen exists.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct SpecimenId(pub u32);
+
+/// What a copy changes from the lab's settings: one choice, so that a comparison shows what
+/// that choice alone does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Variant {
+    /// Nothing: the lab's settings (the primary; a copy like this stays identical to it).
+    Same,
+    /// Another inertia source (exact, bounding box, point masses).
+    Source(InertiaSource),
+    /// Another rotation model (full or textbook).
+    Model(RotationModel),
+    /// Another integrator.
+    Integrator(Integrator),
+}
+
+impl Variant {
+    /// `settings` with this variant's one change.
+    pub fn apply(self, settings: &AppSettings) -> AppSettings {
+        let mut s = settings.clone();
+        match self {
+            Variant::Same => {}
+            Variant::Source(source) => s.body.source = source,
+            Variant::Model(model) => s.physics.model = model,
+            Variant::Integrator(integrator) => s.physics.integrator = integrator,
+        }
+        s
+    }
+
+    /// A short name for legends and tables.
+    pub fn label(self) -> String {
+        match self {
+            Variant::Same => "same settings".to_owned(),
+            Variant::Source(source) => format!("{} inertia", source.label()),
+            Variant::Model(model) => format!("{} model", model.name()),
+            Variant::Integrator(integrator) => integrator.name().to_owned(),
+        }
+    }
+}
 
 /// The last poke, for the ΔL arrow.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,6 +99,7 @@ pub struct StringView {
 #[derive(Debug, Clone)]
 pub struct Specimen {
     id: SpecimenId,
+    variant: Variant,
     body: Arc<LoadedBody>,
     /// Exact, bounding-box and point-mass properties at the current scale and mass.
     props: [MassProperties; 3],
@@ -68,20 +110,25 @@ pub struct Specimen {
     poke: Option<PokeFlash>,
     /// Simulated time the frames asked for but the catch-up cap did not run, since the start.
     dropped: f64,
+    /// E and L drift since the start (every step observed).
+    drift: DriftTracker,
 }
 
 impl Specimen {
-    /// `body` at the size and mass of `settings`, spinning about principal axis `axis` (moments
-    /// ascending) with a small perturbation on the other two, mesh axes on the world axes.
+    /// `body` at the size and mass of `settings` changed by `variant`, spinning about principal
+    /// axis `axis` (moments ascending) with a small perturbation on the other two, mesh axes on
+    /// the world axes.
     ///
     /// # Errors
     /// The settings give no valid body or simulation (the message says which setting).
     pub fn start(
         id: SpecimenId,
+        variant: Variant,
         body: Arc<LoadedBody>,
         settings: &AppSettings,
         axis: usize,
     ) -> Result<Self, String> {
+        let settings = &variant.apply(settings);
         let props = scaled_properties(&body, settings)?;
         let used = &props[source_index(settings.body.source)];
         let mut b =
@@ -98,10 +145,12 @@ impl Specimen {
         b.set_omega_principal(omega)
             .map_err(|e| format!("spin rate: {e}"))?;
         let sim = Simulation::new(b, settings.physics.to_sim()).map_err(|e| e.to_string())?;
+        let d0 = sim.diagnostics();
         let mut history = History::new(capacity(settings));
-        history.push(&sim.diagnostics());
+        history.push(&d0);
         Ok(Self {
             id,
+            variant,
             body,
             props,
             source: settings.body.source,
@@ -110,12 +159,8 @@ impl Specimen {
             history,
             poke: None,
             dropped: 0.0,
+            drift: DriftTracker::new(&d0),
         })
-    }
-
-    /// The same body, state and history under another name (a copy to compare against).
-    pub fn copy_as(&self, id: SpecimenId) -> Self {
-        Self { id, ..self.clone() }
     }
 
     /// Applies new settings: simulation settings, history bound, and (if size, mass or source
@@ -125,6 +170,7 @@ impl Specimen {
     /// # Errors
     /// The settings are invalid; nothing has changed then.
     pub fn set_settings(&mut self, old: &AppSettings, new: &AppSettings) -> Result<(), String> {
+        let (old, new) = (&self.variant.apply(old), &self.variant.apply(new));
         let props = scaled_properties(&self.body, new)?;
         let used = &props[source_index(new.body.source)];
         // Checked before anything changes, so a rejected value leaves the specimen as it was.
@@ -182,11 +228,13 @@ impl Specimen {
     /// # Errors
     /// The simulation diverged; it is paused and the steps before stay recorded.
     pub fn advance(&mut self, frame_dt: f64) -> Result<Advance, SimError> {
-        let history = &mut self.history;
+        let (history, drift) = (&mut self.history, &mut self.drift);
         let result = self
             .sim
             .advance_with(frame_dt, |sim| {
-                history.push(&sim.diagnostics());
+                let d = sim.diagnostics();
+                history.push(&d);
+                drift.observe(&d);
             })
             .inspect(|a| self.dropped += a.dropped);
         if result.is_err() {
@@ -203,7 +251,9 @@ impl Specimen {
         let result = self.sim.step();
         match &result {
             Ok(()) => {
-                self.history.push(&self.sim.diagnostics());
+                let d = self.sim.diagnostics();
+                self.history.push(&d);
+                self.drift.observe(&d);
             }
             Err(_) => self.sim.pause(),
         }
@@ -289,6 +339,14 @@ impl Specimen {
     /// This specimen's name in commands.
     pub fn id(&self) -> SpecimenId {
         self.id
+    }
+    /// What this specimen changes from the lab's settings.
+    pub fn variant(&self) -> Variant {
+        self.variant
+    }
+    /// E and L drift since the start.
+    pub fn drift(&self) -> &DriftTracker {
+        &self.drift
     }
     /// The simulation (read-only).
     pub fn sim(&self) -> &Simulation {
