@@ -8,7 +8,9 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
 use inertia_lab::gui::LabApp;
+use inertia_lab::lab::Variant;
 use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassSpec};
+use rbcore::RotationModel;
 
 fn harness() -> Harness<'static, LabApp> {
     harness_of_size([1280.0, 800.0])
@@ -225,4 +227,34 @@ fn a_long_named_open_mesh_keeps_the_layout() {
         "the toolbar is one row"
     );
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The Compare section starts copies from the same start, shows their drift, and stops them.
+#[test]
+fn compare_from_the_panel() {
+    let mut h = harness_of_size([1280.0, 1400.0]);
+    frames(&mut h, 2);
+    h.get_by_label("Compare").click();
+    frames(&mut h, 2);
+    h.get_by_label("textbook model (no ω × Iω)").click();
+    frames(&mut h, 1);
+    h.get_by_label("Compare 2 from the start").click();
+    frames(&mut h, 5);
+    let lab = h.state().lab();
+    let variants: Vec<_> = lab.specimens().iter().map(|s| s.variant()).collect();
+    assert_eq!(
+        variants,
+        [
+            Variant::Same,
+            Variant::Source(InertiaSource::BoundingBox),
+            Variant::Model(RotationModel::Textbook)
+        ]
+    );
+    assert!(h.query_by_label_contains("max ΔE/E").is_some());
+    // The table names each copy by what it changes (the checkbox says "textbook model" too).
+    assert_eq!(h.query_all_by_label_contains("textbook model").count(), 2);
+    assert!(h.query_by_label("bounding box inertia").is_some());
+    h.get_by_label("Stop comparing").click();
+    frames(&mut h, 2);
+    assert_eq!(h.state().lab().specimens().len(), 1);
 }

@@ -56,6 +56,11 @@ impl OrbitCamera {
         (self.target - self.eye()).normalize()
     }
 
+    /// Unit vector to the screen's right, horizontal in the world.
+    pub fn right(&self) -> Vector3<f64> {
+        self.forward().cross(&self.up()).normalize()
+    }
+
     /// Turns the view by a pointer drag of `(dx, dy)` pixels.
     pub fn orbit(&mut self, dx: f64, dy: f64) {
         if dx.is_finite() && dy.is_finite() {
@@ -71,7 +76,7 @@ impl OrbitCamera {
             return;
         }
         let per_pixel = 2.0 * self.distance * (self.fov_y / 2.0).tan() / height;
-        let right = self.forward().cross(&self.up()).normalize();
+        let right = self.right();
         let up = right.cross(&self.forward());
         self.target += (-right * dx + up * dy) * per_pixel;
     }

@@ -42,6 +42,18 @@ pub struct ViewSettings {
     pub follow_body: bool,
     /// The momentum sphere beside the 3D view: L in the principal frame on its polhode.
     pub momentum_sphere: bool,
+    /// Where compared copies are drawn.
+    pub ghosts: GhostLayout,
+}
+
+/// Where the compared copies' translucent ghosts are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum GhostLayout {
+    /// Over the primary body, so that they drift apart in place.
+    #[default]
+    Overlaid,
+    /// Side by side in a row along the view's right, one body width apart.
+    Row,
 }
 
 impl Default for ViewSettings {
@@ -56,6 +68,7 @@ impl Default for ViewSettings {
             l_arrow: true,
             follow_body: true,
             momentum_sphere: true,
+            ghosts: GhostLayout::Overlaid,
         }
     }
 }

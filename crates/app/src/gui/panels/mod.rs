@@ -5,6 +5,7 @@
 use super::dialogs::DialogPurpose;
 use crate::lab::{Command, Lab};
 
+pub mod compare;
 pub mod help;
 pub mod plots;
 pub mod side;
@@ -28,6 +29,8 @@ pub struct PanelState {
     pub dialog_open: bool,
     /// The momentum sphere's orbit.
     pub sphere: sphere::SphereView,
+    /// The copies ticked in the Compare section.
+    pub compare: compare::CompareChoice,
 }
 
 impl Default for PanelState {
@@ -40,6 +43,7 @@ impl Default for PanelState {
             dialog_request: None,
             dialog_open: false,
             sphere: sphere::SphereView::default(),
+            compare: compare::CompareChoice::default(),
         }
     }
 }

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use egui::Color32;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Legend, Line, LineStyle, Plot, PlotPoints};
 
 use super::{PanelState, number};
 use crate::gui::dialogs::DialogPurpose;
@@ -105,15 +105,26 @@ pub fn show(
     let gap = ui.spacing().item_spacing.x;
     let width = ((ui.available_width() - 2.0 * gap) / 3.0).max(50.0);
     let height = (ui.available_height() - 20.0).max(60.0);
+    // Compared copies add their ω curves, dashed, in the same colour per axis.
+    let copies: Vec<&History> = lab.specimens()[1..].iter().map(|s| s.history()).collect();
+    let lines = |series, copies| Lines {
+        history,
+        series,
+        copies,
+    };
     ui.horizontal(|ui| {
-        for (id, title, series) in [
-            ("plot-omega", "ω, principal frame (rad/s)", &OMEGA[..]),
-            ("plot-l", "L, world (kg·m²/s)", &MOMENTUM[..]),
-            ("plot-energy", "energy (J)", &ENERGY[..]),
+        for (id, title, lines) in [
+            (
+                "plot-omega",
+                "ω, principal frame (rad/s)",
+                lines(&OMEGA[..], &copies[..]),
+            ),
+            ("plot-l", "L, world (kg·m²/s)", lines(&MOMENTUM[..], &[])),
+            ("plot-energy", "energy (J)", lines(&ENERGY[..], &[])),
         ] {
             ui.vertical(|ui| {
                 ui.small(title);
-                draw(ui, id, history, series, since, bounds, [width, height]);
+                draw(ui, id, &lines, since, bounds, [width, height]);
             });
         }
     });
@@ -122,11 +133,17 @@ pub fn show(
 /// One plot, decimated to one point per two horizontal pixels (min and max of each four-pixel
 /// bucket) so its cost does not grow with the history length: on software GL every feathered line
 /// segment costs rasterisation time, and denser lines looked no different.
+/// What one plot draws: the series of the body's history, and the same of each copy's, dashed.
+struct Lines<'a> {
+    history: &'a History,
+    series: &'a [Series],
+    copies: &'a [&'a History],
+}
+
 fn draw(
     ui: &mut egui::Ui,
     id: &str,
-    history: &History,
-    series: &[Series],
+    lines: &Lines<'_>,
     since: f64,
     bounds: Option<(f64, f64)>,
     [width, height]: [f32; 2],
@@ -146,13 +163,23 @@ fn draw(
                 p.set_plot_bounds_x(a..=b.max(a + 1e-3));
                 p.set_auto_bounds([false, true]);
             }
-            for (name, color, f) in series {
-                let points = history.series(since, max_points, f);
+            for (name, color, f) in lines.series {
+                let points = lines.history.series(since, max_points, f);
                 p.line(
                     Line::new(*name, PlotPoints::new(points))
                         .color(*color)
                         .width(1.0),
                 );
+                // Same name: the legend entry shows and hides the copies' curves too.
+                for copy in lines.copies {
+                    let points = copy.series(since, max_points, f);
+                    p.line(
+                        Line::new(*name, PlotPoints::new(points))
+                            .color(*color)
+                            .width(1.0)
+                            .style(LineStyle::dashed_dense()),
+                    );
+                }
             }
         });
 }

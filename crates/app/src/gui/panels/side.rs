@@ -29,6 +29,7 @@ pub fn show(
         body_section(ui, lab, state, commands, s);
         table_section(ui, lab, s);
         motion_section(ui, lab, commands, s);
+        super::compare::show(ui, lab, s, state, commands);
         interaction_section(ui, lab, s);
         diagnostics_section(ui, lab);
         ui.separator();

@@ -57,7 +57,7 @@ pub fn cpu_mesh(mesh: &TriMesh, origin: &Point3<f64>) -> CpuMesh {
 }
 
 /// Everything a frame of the 3D view needs, already in f32.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct FrameParams {
     /// Eye position.
     pub eye: Vec3,
@@ -75,6 +75,8 @@ pub struct FrameParams {
     pub model: Mat4,
     /// Body colour (linear RGB 0–255).
     pub color: [u8; 3],
+    /// Compared copies drawn translucent: their mesh → world matrices and colours (RGBA).
+    pub ghosts: Vec<(Mat4, [u8; 4])>,
 }
 
 impl FrameParams {
@@ -92,7 +94,14 @@ impl FrameParams {
             far: far as f32,
             model: mat4(&full),
             color: [200, 160, 90],
+            ghosts: Vec::new(),
         }
+    }
+
+    /// Adds a translucent copy of the mesh at `model` (mesh → world, like [`FrameParams::new`]'s).
+    pub fn add_ghost(&mut self, model: &Matrix4<f64>, origin: &Point3<f64>, color: [u8; 4]) {
+        let full = model * Translation3::from(origin.coords).to_homogeneous();
+        self.ghosts.push((mat4(&full), color));
     }
 }
 

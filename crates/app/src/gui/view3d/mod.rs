@@ -9,9 +9,10 @@ use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use egui::{Color32, PointerButton, Sense, Stroke};
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Matrix4, Point3, Vector3};
 
 use crate::lab::camera::OrbitCamera;
+use crate::lab::settings::GhostLayout;
 use crate::lab::{Command, Lab, PRIMARY};
 use convert::FrameParams;
 use overlay::{Overlay, WIREFRAME_MAX_EDGES};
@@ -35,8 +36,9 @@ pub struct View3d {
     /// The camera.
     pub camera: OrbitCamera,
     gesture: Option<Gesture>,
-    /// Mesh generation last framed, to frame each new body once.
-    framed: Option<u64>,
+    /// Mesh generation, number of specimens and ghost layout last framed: a new body, a new
+    /// comparison or another layout is framed once.
+    framed: Option<(u64, usize, GhostLayout)>,
     /// Centre of mass the camera last followed: the target moves with the body by the change.
     followed: Option<Point3<f64>>,
 }
@@ -45,6 +47,23 @@ pub struct View3d {
 pub const HINT: &str = "Click body: poke · Drag body: string · Drag background: orbit · \
                         Right/middle drag: pan · Wheel: zoom · F: frame · Space: pause · S: step · \
                         R: reset · F1: help";
+
+/// Where specimen `k` (0: the body) stands in a row, in bounding radii along the screen's right:
+/// the body in the middle, the first copy to its left, the others to its right.
+fn row_offset(k: usize) -> f64 {
+    const SPACING: f64 = 2.2;
+    match k {
+        0 => 0.0,
+        1 => -SPACING,
+        _ => SPACING * (k - 1) as f64,
+    }
+}
+
+/// The translucent colour of compared copy `k` (1-based), also its swatch in the tables.
+pub fn ghost_color(k: usize) -> [u8; 4] {
+    const COLORS: [[u8; 4]; 3] = [[80, 220, 230, 90], [230, 90, 230, 90], [150, 230, 90, 90]];
+    COLORS[(k + COLORS.len() - 1) % COLORS.len()]
+}
 
 impl View3d {
     /// Whether a gesture is in progress (the app keeps repainting).
@@ -56,7 +75,18 @@ impl View3d {
     /// the centre of mass at the preset spin).
     pub fn frame_body(&mut self, lab: &Lab) {
         let (c, r) = lab.primary().bounding_sphere();
-        self.camera.frame(c, 1.8 * r);
+        let copies = lab.specimens().len() - 1;
+        if lab.settings().view.ghosts == GhostLayout::Row && copies > 0 {
+            // The whole row: from the leftmost ghost to the rightmost.
+            let offsets: Vec<f64> = (0..=copies).map(row_offset).collect();
+            let (lo, hi) = offsets
+                .iter()
+                .fold((0.0f64, 0.0f64), |(lo, hi), &o| (lo.min(o), hi.max(o)));
+            let centre = c + self.camera.right() * ((lo + hi) / 2.0 * r);
+            self.camera.frame(centre, 1.8 * r * (1.0 + (hi - lo) / 2.0));
+        } else {
+            self.camera.frame(c, 1.8 * r);
+        }
     }
 
     /// Moves the target with the centre of mass (keeping any pan offset), so a poked or pulled
@@ -79,8 +109,13 @@ impl View3d {
         scene: Option<&Arc<Mutex<Scene>>>,
         commands: &mut Vec<Command>,
     ) {
-        if self.framed != Some(lab.generation()) {
-            self.framed = Some(lab.generation());
+        let shown = (
+            lab.generation(),
+            lab.specimens().len(),
+            lab.settings().view.ghosts,
+        );
+        if self.framed != Some(shown) {
+            self.framed = Some(shown);
             self.frame_body(lab);
         }
         self.follow(lab);
@@ -145,7 +180,19 @@ impl View3d {
         let primary = lab.primary();
         let origin = primary.body().sphere.0;
         let model = primary.placement().matrix();
-        (origin, FrameParams::new(&self.camera, &model, &origin))
+        let mut params = FrameParams::new(&self.camera, &model, &origin);
+        // A row runs along the screen's right at the primary's depth, about a body width apart.
+        let (_, radius) = primary.bounding_sphere();
+        let right = self.camera.right();
+        for (k, copy) in lab.specimens().iter().enumerate().skip(1) {
+            let shift = match lab.settings().view.ghosts {
+                GhostLayout::Overlaid => Vector3::zeros(),
+                GhostLayout::Row => right * (row_offset(k) * radius),
+            };
+            let m = Matrix4::new_translation(&shift) * copy.placement().matrix();
+            params.add_ghost(&m, &origin, ghost_color(k));
+        }
+        (origin, params)
     }
 
     fn handle_input(

@@ -101,6 +101,26 @@ impl Scene {
                 std::iter::once(&*body),
                 &[&self.ambient, &self.key, &self.fill],
             );
+            // Translucent copies after the opaque body, on the same GPU mesh.
+            for (model, [r, g, b, a]) in &p.ghosts {
+                body.geometry.set_transformation(*model);
+                let ghost = PhysicalMaterial::new_transparent(
+                    &self.context,
+                    &CpuMaterial {
+                        albedo: Srgba::new(*r, *g, *b, *a),
+                        roughness: 0.7,
+                        metallic: 0.0,
+                        ..Default::default()
+                    },
+                );
+                target.render_partially_with_material(
+                    scissor,
+                    &ghost,
+                    &camera,
+                    std::iter::once(&body.geometry),
+                    &[&self.ambient, &self.key, &self.fill],
+                );
+            }
         }
     }
 
