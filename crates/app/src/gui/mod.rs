@@ -16,8 +16,8 @@ pub mod panels;
 pub mod view3d;
 pub mod warnings;
 
-use crate::lab::settings::AppSettings;
-use crate::lab::{Command, Lab};
+use crate::lab::settings::{AppSettings, InertiaSource};
+use crate::lab::{Command, Lab, Variant};
 use dialogs::{Dialog, DialogPurpose};
 use panels::PanelState;
 use view3d::View3d;
@@ -52,6 +52,10 @@ pub struct GuiArgs {
     /// With --bench-frames: collapse the plot panel (to measure what the plots cost).
     #[arg(long, requires = "bench_frames")]
     pub bench_no_plots: bool,
+    /// With --bench-frames: compare N copies (1 to 3: bounding-box inertia, point-mass inertia,
+    /// textbook model), drawn as ghosts with their plot curves (to measure what they cost).
+    #[arg(long, value_name = "N", requires = "bench_frames", value_parser = clap::value_parser!(u8).range(1..=3))]
+    pub bench_ghosts: Option<u8>,
     /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
     /// settings, after --after simulated seconds, paused there.
     #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
@@ -460,6 +464,14 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
     };
     let file = args.file.clone();
     let (history, after) = (args.bench_history, args.after);
+    let ghosts = [
+        Variant::Source(InertiaSource::BoundingBox),
+        Variant::Source(InertiaSource::PointMasses),
+        Variant::Model(rbcore::RotationModel::Textbook),
+    ]
+    .into_iter()
+    .take(args.bench_ghosts.map_or(0, usize::from))
+    .collect::<Vec<_>>();
     eframe::run_native(
         "inertia-lab",
         options,
@@ -479,6 +491,9 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
                 }
             }
             if bench.is_some() {
+                if !ghosts.is_empty() {
+                    app.command(Command::Compare(ghosts));
+                }
                 if history > 0.0 {
                     app.lab.advance_for(history);
                 }

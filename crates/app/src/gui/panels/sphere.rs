@@ -11,22 +11,27 @@ use rbcore::RotationModel;
 use super::PanelState;
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::Lab;
-use crate::lab::polhodes::{CurveKind, polhodes};
+use crate::lab::polhodes::{Curve, CurveKind, polhodes};
 
 const POLHODE_COLOR: Color32 = Color32::from_rgb(150, 150, 160);
 const SEPARATRIX_COLOR: Color32 = Color32::from_rgb(255, 170, 60);
 /// Seconds of history drawn as the trail.
 const TRAIL_SECONDS: f64 = 4.0;
 /// Polhodes drawn around each stable axis.
-const PER_SIDE: usize = 4;
+const PER_SIDE: usize = 3;
+/// Points per polhode (about a chord every 6° of a great circle): smooth at this size, and few
+/// enough vertices that software GL draws the sphere in about a millisecond.
+const SAMPLES: usize = 64;
 
-/// The orbit of the sphere view (UI state, not persisted).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The orbit of the sphere view and its curves (UI state, not persisted).
+#[derive(Debug, Clone, PartialEq)]
 pub struct SphereView {
     /// Turn about the screen's vertical (rad).
     pub yaw: f64,
     /// Tilt towards the viewer (rad).
     pub pitch: f64,
+    /// The polhodes on the unit sphere for these moments: they change only with the body.
+    curves: Option<(Vector3<f64>, Vec<Curve>)>,
 }
 
 impl Default for SphereView {
@@ -35,6 +40,7 @@ impl Default for SphereView {
         Self {
             yaw: 0.7,
             pitch: 0.4,
+            curves: None,
         }
     }
 }
@@ -84,24 +90,47 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
         (at, v.z)
     };
     painter.circle_stroke(center, radius, Stroke::new(1.0, Color32::from_gray(90)));
+    if state
+        .sphere
+        .curves
+        .as_ref()
+        .is_none_or(|(for_moments, _)| *for_moments != moments)
+    {
+        state.sphere.curves = Some((moments, polhodes(&moments, 1.0, PER_SIDE, SAMPLES)));
+    }
+    let curves = state
+        .sphere
+        .curves
+        .as_ref()
+        .map_or(&[][..], |(_, c)| &c[..]);
     if m > 0.0 {
-        for curve in polhodes(&moments, 1.0, PER_SIDE, 96) {
+        for curve in curves {
             let color = match curve.kind {
                 CurveKind::Separatrix => SEPARATRIX_COLOR,
                 CurveKind::Around(_) => POLHODE_COLOR,
             };
-            let n = curve.points.len();
-            for k in 0..n {
-                let (a, da) = project(&curve.points[k]);
-                let (b, db) = project(&curve.points[(k + 1) % n]);
-                // The far side of the sphere is drawn faint.
-                let c = if da + db < 0.0 {
-                    color.gamma_multiply(0.25)
-                } else {
-                    color
-                };
-                painter.line_segment([a, b], Stroke::new(1.2, c));
+            // One polyline per run of front or back points (far side faint): a few shapes per
+            // curve rather than a segment each, which software GL draws far faster.
+            let projected: Vec<(Pos2, bool)> = curve
+                .points
+                .iter()
+                .chain(curve.points.first())
+                .map(|p| {
+                    let (at, depth) = project(p);
+                    (at, depth >= 0.0)
+                })
+                .collect();
+            let mut run: Vec<Pos2> = Vec::new();
+            let mut front = projected.first().is_some_and(|p| p.1);
+            for &(at, is_front) in &projected {
+                run.push(at);
+                if is_front != front {
+                    polyline(&painter, std::mem::take(&mut run), color, front);
+                    run.push(at);
+                    front = is_front;
+                }
             }
+            polyline(&painter, run, color, front);
         }
     }
     for (i, color) in AXIS_COLORS.iter().enumerate() {
@@ -151,6 +180,19 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     }
 }
 
+/// Draws `points` as one line, faint on the far side of the sphere.
+fn polyline(painter: &egui::Painter, points: Vec<Pos2>, color: Color32, front: bool) {
+    if points.len() < 2 {
+        return;
+    }
+    let color = if front {
+        color
+    } else {
+        color.gamma_multiply(0.25)
+    };
+    painter.add(egui::Shape::line(points, Stroke::new(1.2, color)));
+}
+
 /// The last seconds of L's direction, fading with age.
 fn trail(
     painter: &egui::Painter,
@@ -174,10 +216,21 @@ fn trail(
             (n > 0.0).then(|| (s.t, project(&(l / n)).0))
         })
         .collect();
-    for w in points.windows(2) {
-        let age = ((last.t - w[1].0) / TRAIL_SECONDS).clamp(0.0, 1.0) as f32;
+    // Eight bands of age, one polyline each, oldest faintest.
+    const BANDS: usize = 8;
+    let per_band = points.len().div_ceil(BANDS).max(1);
+    for (b, band) in points.chunks(per_band).enumerate() {
+        // Each band starts where the previous one ended, so the trail has no gaps.
+        let start = (b * per_band).saturating_sub(1);
+        let line: Vec<Pos2> = points[start..start + band.len() + usize::from(b > 0)]
+            .iter()
+            .map(|p| p.1)
+            .collect();
+        let age = ((last.t - band[band.len() - 1].0) / TRAIL_SECONDS).clamp(0.0, 1.0) as f32;
         let color = Color32::WHITE.gamma_multiply(1.0 - 0.9 * age);
-        painter.line_segment([w[0].1, w[1].1], Stroke::new(2.0, color));
+        if line.len() >= 2 {
+            painter.add(egui::Shape::line(line, Stroke::new(2.0, color)));
+        }
     }
 }
 
