@@ -258,3 +258,41 @@ fn compare_from_the_panel() {
     frames(&mut h, 2);
     assert_eq!(h.state().lab().specimens().len(), 1);
 }
+
+/// Every non-ASCII character the app's code writes (outside comments) has a glyph in the app's
+/// fonts, egui's defaults: one without shows as an empty box (a regression: "⚠" and "⟂" did).
+#[test]
+fn every_symbol_the_gui_writes_has_a_glyph() {
+    let ctx = egui::Context::default();
+    // One pass loads the fonts; its texture upload is not needed here.
+    ctx.run_ui(egui::RawInput::default(), |_| {})
+        .textures_delta
+        .clear();
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    let mut dirs = vec![src.join("gui"), src.join("lab")];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).expect("source folder") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
+        }
+    }
+    assert!(files.len() > 10, "{files:?}");
+    let mut missing = std::collections::BTreeSet::new();
+    for file in &files {
+        let text = std::fs::read_to_string(file).expect("source");
+        for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
+            for c in line.chars().filter(|c| !c.is_ascii()) {
+                let font = egui::FontId::proportional(14.0);
+                if !ctx.fonts_mut(|f| f.has_glyph(&font, c)) {
+                    missing.insert((c, file.file_name().map(|n| n.to_owned())));
+                }
+            }
+        }
+    }
+    assert!(missing.is_empty(), "no glyph for {missing:?}");
+}

@@ -44,6 +44,9 @@ pub struct ViewSettings {
     pub momentum_sphere: bool,
     /// Where compared copies are drawn.
     pub ghosts: GhostLayout,
+    /// Poinsot's construction: the inertia ellipsoid rolling on the invariable plane, and the
+    /// herpolhode traced where they touch.
+    pub poinsot: bool,
 }
 
 /// Where the compared copies' translucent ghosts are drawn.
@@ -69,6 +72,7 @@ impl Default for ViewSettings {
             follow_body: true,
             momentum_sphere: true,
             ghosts: GhostLayout::Overlaid,
+            poinsot: false,
         }
     }
 }

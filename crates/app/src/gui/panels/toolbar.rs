@@ -21,6 +21,9 @@ pub fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
             ui.checkbox(&mut v.principal_axes, "Principal axes");
             ui.checkbox(&mut v.omega_arrow, "ω");
             ui.checkbox(&mut v.l_arrow, "L");
+            ui.checkbox(&mut v.poinsot, "Poinsot").on_hover_text(
+                "the inertia ellipsoid rolling without slipping on the plane perpendicular to L",
+            );
             ui.checkbox(&mut v.momentum_sphere, "Sphere")
                 .on_hover_text("the momentum sphere: L in the body, on its polhode");
             ui.separator();

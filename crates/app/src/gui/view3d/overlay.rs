@@ -166,11 +166,12 @@ impl Context<'_> {
 type Layer = fn(&mut Overlay, &Context<'_>);
 
 /// The layers, bottom first.
-const LAYERS: [Layer; 9] = [
+const LAYERS: [Layer; 10] = [
     wireframe,
     bounding_box,
     principal_axes,
     equivalent,
+    poinsot,
     center_of_mass,
     omega_arrow,
     l_arrow,
@@ -288,6 +289,95 @@ fn equivalent(o: &mut Overlay, c: &Context<'_>) {
         color: EQUIVALENT_COLOR,
         align: Align2::LEFT_BOTTOM,
     });
+}
+
+/// Seconds of ω's path drawn as the herpolhode.
+const HERPOLHODE_SECONDS: f64 = 12.0;
+const POINSOT_COLOR: Color32 = Color32::from_rgb(255, 200, 120);
+
+/// Poinsot's construction (Landau & Lifshitz §37): with ω drawn at `k` world lengths per rad/s
+/// from the centre of mass, the ellipsoid ωᵀIω = 2T (semi-axes k√(2T/Iᵢ) along the principal
+/// axes) passes through ω's tip, where its tangent plane is perpendicular to L: the invariable
+/// plane, fixed in space while no torque acts. The ellipsoid rolls on it without slipping and
+/// ω's tip traces the herpolhode on it.
+fn poinsot(o: &mut Overlay, c: &Context<'_>) {
+    if !c.view.poinsot {
+        return;
+    }
+    let body = c.specimen.sim().body();
+    let (w, l) = (body.omega_world(), body.angular_momentum());
+    let two_t = w.dot(&l);
+    let Some(n) = l.try_normalize(0.0) else {
+        return;
+    };
+    if !(two_t.is_finite() && two_t > 0.0) {
+        return;
+    }
+    let k = c.arrow_len() / c.rate();
+    let tip = c.com + w * k;
+    // The ellipsoid: its three principal sections.
+    let principal = body.orientation();
+    let semi = body.moments().map(|i| k * (two_t / i).sqrt());
+    let samples = 64;
+    for plane in 0..3 {
+        let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
+        let point = |s: usize| {
+            let t = std::f64::consts::TAU * s as f64 / samples as f64;
+            let mut p = Vector3::zeros();
+            p[u] = semi[u] * t.cos();
+            p[v] = semi[v] * t.sin();
+            c.com + principal * p
+        };
+        for s in 0..samples {
+            o.line(
+                point(s),
+                point(s + 1),
+                POINSOT_COLOR.gamma_multiply(0.6),
+                1.0,
+            );
+        }
+    }
+    // The invariable plane: a square about the contact point, as large as the ellipsoid.
+    let half = semi.max();
+    let e1 = n
+        .cross(&Vector3::x())
+        .try_normalize(1e-9)
+        .unwrap_or_else(|| n.cross(&Vector3::y()).normalize());
+    let e2 = n.cross(&e1);
+    let centre = c.com + n * (n.dot(&(tip - c.com)));
+    let corner = |a: f64, b: f64| centre + (e1 * a + e2 * b) * half;
+    let square = [
+        corner(-1.0, -1.0),
+        corner(1.0, -1.0),
+        corner(1.0, 1.0),
+        corner(-1.0, 1.0),
+    ];
+    for i in 0..4 {
+        o.line(square[i], square[(i + 1) % 4], POINSOT_COLOR, 1.5);
+    }
+    o.labels.push(Label {
+        at: square[2],
+        text: "invariable plane (perpendicular to L)".to_owned(),
+        color: POINSOT_COLOR,
+        align: Align2::LEFT_BOTTOM,
+    });
+    // The herpolhode: ω's tip over the last seconds, drawn from today's centre of mass.
+    let history = c.specimen.history();
+    if let Some(last) = history.last() {
+        let since = last.t - HERPOLHODE_SECONDS;
+        let start = history.samples().partition_point(|s| s.t < since);
+        let samples: Vec<_> = history.samples().range(start..).collect();
+        let stride = (samples.len() / 400).max(1);
+        let path: Vec<Point3<f64>> = samples
+            .iter()
+            .step_by(stride)
+            .map(|s| c.com + Vector3::from(s.omega_world) * k)
+            .collect();
+        for pair in path.windows(2) {
+            o.line(pair[0], pair[1], Color32::WHITE, 1.5);
+        }
+    }
+    o.markers.push((tip, POINSOT_COLOR));
 }
 
 /// The centre of mass in use, and the exact one where an approximation moves it.
@@ -417,6 +507,46 @@ mod tests {
     use super::*;
     use crate::lab::Command;
     use crate::lab::settings::AppSettings;
+
+    /// The herpolhode lies in the invariable plane (L is conserved), and ω's tip is on the
+    /// drawn ellipsoid ωᵀIω = 2T.
+    #[test]
+    fn poinsot_herpolhode_lies_in_the_invariable_plane() {
+        let mut lab = Lab::new(AppSettings::default()).expect("lab");
+        let mut settings = lab.settings().clone();
+        settings.view.poinsot = true;
+        lab.apply(Command::Settings(Box::new(settings)));
+        lab.advance_for(6.0);
+        let o = Overlay::build(&lab, Instant::now());
+        let body = lab.primary().sim().body();
+        let n = body.angular_momentum().normalize();
+        let &(tip, _) = o
+            .markers
+            .iter()
+            .find(|(_, col)| *col == POINSOT_COLOR)
+            .expect("the contact point");
+        let herpolhode: Vec<&Segment> = o
+            .segments
+            .iter()
+            .filter(|s| s.color == Color32::WHITE && !s.arrow)
+            .collect();
+        assert!(herpolhode.len() > 100, "{}", herpolhode.len());
+        let scale = (tip - body.position()).norm();
+        for s in herpolhode {
+            for p in [s.a, s.b] {
+                let off = (p - tip).dot(&n);
+                assert!(off.abs() < 1e-9 * scale, "{off} off the plane");
+            }
+        }
+        // In principal coordinates the tip satisfies Σ xᵢ²/aᵢ² = 1 with aᵢ = k√(2T/Iᵢ).
+        let k = (tip - body.position()).norm() / body.omega_world().norm();
+        let x = body.orientation().inverse() * (tip - body.position());
+        let two_t = body.omega_world().dot(&body.angular_momentum());
+        let on: f64 = (0..3)
+            .map(|i| x[i] * x[i] / (k * k * two_t / body.moments()[i]))
+            .sum();
+        assert!((on - 1.0).abs() < 1e-9, "{on}");
+    }
 
     #[test]
     fn cube_has_twelve_unit_edges() {
