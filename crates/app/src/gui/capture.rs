@@ -1,9 +1,12 @@
-//! `--screenshot OUT.png --after SECONDS`: the app's own pixels (3D view, panels and plots) after
-//! a given simulated time, written as PNG, then the window closes. Teachers put these in slides;
-//! the docs' screenshots are made with it.
+//! The app's own pixels (3D view, panels and plots) as PNG: `--screenshot OUT.png --after
+//! SECONDS` takes one after a given simulated time and closes the window; the Record button
+//! writes a numbered PNG sequence for some seconds (teachers put these in slides; any video tool
+//! turns a sequence into a clip). Encoding runs off the UI thread.
 
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
 /// Frames drawn before the picture: the window maps, the mesh is uploaded, shaders compile.
 const WARM_UP_FRAMES: usize = 10;
@@ -57,6 +60,94 @@ impl Capture {
     }
 }
 
+/// Frames per second of a recording: smooth enough for a flip, light enough for software GL
+/// (each picture is read back from the GPU and encoded).
+pub const RECORD_FPS: f64 = 10.0;
+
+/// A running recording: a picture every 1/[`RECORD_FPS`] s of wall time until `until`.
+#[derive(Debug)]
+pub struct Recording {
+    dir: PathBuf,
+    until: Instant,
+    next: Instant,
+    requested: usize,
+    /// Pictures written, and the first failure.
+    written: Arc<AtomicUsize>,
+    failure: Arc<Mutex<Option<String>>>,
+}
+
+impl Recording {
+    /// Starts recording `seconds` of the window into the new folder `dir`.
+    ///
+    /// # Errors
+    /// The folder cannot be created.
+    pub fn start(dir: PathBuf, seconds: f64, now: Instant) -> Result<Self, String> {
+        std::fs::create_dir_all(&dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        Ok(Self {
+            dir,
+            until: now + Duration::from_secs_f64(seconds.clamp(0.1, 600.0)),
+            next: now,
+            requested: 0,
+            written: Arc::default(),
+            failure: Arc::default(),
+        })
+    }
+
+    /// Called every frame: asks for a picture when one is due. Returns the outcome line once
+    /// the time is up and every picture asked for is written (or one failed).
+    pub fn frame(&mut self, ctx: &egui::Context, now: Instant) -> Option<(String, bool)> {
+        ctx.request_repaint();
+        if let Some(e) = self.failure.lock().ok().and_then(|f| f.clone()) {
+            return Some((format!("recording stopped: {e}"), true));
+        }
+        if now < self.until {
+            if now >= self.next {
+                self.next += Duration::from_secs_f64(1.0 / RECORD_FPS);
+                self.requested += 1;
+                let path = self.dir.join(format!("frame-{:04}.png", self.requested));
+                let (written, failure) = (Arc::clone(&self.written), Arc::clone(&self.failure));
+                ctx.request_screenshot(move |image| {
+                    std::thread::spawn(move || match write_png(&path, &image) {
+                        Ok(()) => {
+                            written.fetch_add(1, Ordering::SeqCst);
+                        }
+                        Err(e) => {
+                            if let Ok(mut f) = failure.lock() {
+                                f.get_or_insert(e);
+                            }
+                        }
+                    });
+                });
+            }
+            return None;
+        }
+        let written = self.written.load(Ordering::SeqCst);
+        // A picture asked for but never delivered (a hidden window) must not hang the recording.
+        let late = now > self.until + Duration::from_secs(5);
+        (written >= self.requested || late).then(|| {
+            (
+                format!(
+                    "recorded {written} of {} pictures ({RECORD_FPS} per second) to {}",
+                    self.requested,
+                    self.dir.display()
+                ),
+                written < self.requested,
+            )
+        })
+    }
+
+    /// Ends the recording now (the pictures asked for are still written).
+    pub fn stop(&mut self, now: Instant) {
+        self.until = self.until.min(now);
+    }
+
+    /// Seconds left to record.
+    pub fn remaining(&self, now: Instant) -> f64 {
+        self.until.saturating_duration_since(now).as_secs_f64()
+    }
+}
+
 /// Writes `image` (opaque RGBA, rows top to bottom) as an 8-bit RGBA PNG.
 ///
 /// # Errors
@@ -82,6 +173,33 @@ pub fn write_png(path: &Path, image: &egui::ColorImage) -> Result<(), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Pictures are asked for at the set rate; ones never delivered (here: no window) end the
+    /// recording 5 s late with an error that counts them; Stop ends it early.
+    #[test]
+    fn recording_paces_its_pictures_and_never_hangs() {
+        let ctx = egui::Context::default();
+        let dir = std::env::temp_dir().join(format!("inertia-lab-{}-rec", std::process::id()));
+        let t0 = Instant::now();
+        let mut r = Recording::start(dir.clone(), 1.0, t0).expect("folder");
+        for k in 0..30 {
+            let now = t0 + Duration::from_millis(k * 33);
+            assert!(r.frame(&ctx, now).is_none());
+        }
+        assert_eq!(r.requested, 10, "10 per second over 1 s");
+        assert!(
+            r.frame(&ctx, t0 + Duration::from_secs(3)).is_none(),
+            "waits for them"
+        );
+        let (text, error) = r.frame(&ctx, t0 + Duration::from_secs(7)).expect("gave up");
+        assert!(error && text.contains("0 of 10"), "{text}");
+        let mut early = Recording::start(dir.clone(), 60.0, t0).expect("folder");
+        early.frame(&ctx, t0);
+        early.stop(t0 + Duration::from_millis(10));
+        assert_eq!(early.remaining(t0 + Duration::from_millis(20)), 0.0);
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(Recording::start(PathBuf::from("/proc/no-such/x"), 1.0, t0).is_err());
+    }
 
     #[test]
     fn png_round_trips_and_a_bad_path_is_named() {

@@ -17,7 +17,7 @@ pub mod view3d;
 pub mod warnings;
 
 use crate::lab::settings::{AppSettings, InertiaSource};
-use crate::lab::{Command, Lab, Variant};
+use crate::lab::{Command, Lab, Message, Variant};
 use dialogs::{Dialog, DialogPurpose};
 use panels::PanelState;
 use view3d::View3d;
@@ -109,6 +109,7 @@ pub struct LabApp {
     dialog: Option<Dialog>,
     bench: Option<Bench>,
     capture: Option<capture::Capture>,
+    recording: Option<capture::Recording>,
 }
 
 impl std::fmt::Debug for LabApp {
@@ -149,6 +150,7 @@ impl LabApp {
             dialog: None,
             bench: None,
             capture: None,
+            recording: None,
         })
     }
 
@@ -254,6 +256,7 @@ impl LabApp {
             let repaint = ctx.clone();
             self.dialog = Some(Dialog::open(purpose, move || repaint.request_repaint()));
         }
+        self.record(&ctx, &mut commands);
         if draft != *self.lab.settings() {
             // Before the panels' commands, so that "Reset settings" in the same frame wins.
             commands.insert(0, Command::Settings(Box::new(draft)));
@@ -261,11 +264,37 @@ impl LabApp {
         self.lab.apply_all(commands);
         if self.lab.is_animating()
             || self.dialog.is_some()
+            || self.recording.is_some()
             || self.view.is_dragging()
             || self.bench.is_some()
         {
             ctx.request_repaint();
         }
+    }
+
+    /// Starts, advances and ends the Record button's recording; its outcome becomes a message.
+    fn record(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
+        let now = Instant::now();
+        if std::mem::take(&mut self.panels.record_request) && self.recording.is_none() {
+            let stamp = std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.as_secs());
+            let dir = PathBuf::from(format!("inertia-lab-recording-{stamp}"));
+            match capture::Recording::start(dir, self.panels.record_seconds, now) {
+                Ok(r) => self.recording = Some(r),
+                Err(text) => commands.push(Command::Notify(Message { text, error: true })),
+            }
+        }
+        if let Some(r) = &mut self.recording {
+            if std::mem::take(&mut self.panels.record_stop) {
+                r.stop(now);
+            }
+            if let Some((text, error)) = r.frame(ctx, now) {
+                commands.push(Command::Notify(Message { text, error }));
+                self.recording = None;
+            }
+        }
+        self.panels.recording = self.recording.as_ref().map(|r| r.remaining(now));
     }
 
     /// Turns a closed dialog's answer into a command.
@@ -281,11 +310,12 @@ impl LabApp {
                 path,
             },
             // rfd reports a cancel and a missing XDG desktop portal alike.
-            _ => Command::Inform(
-                "no file chosen (if no dialog appeared, this desktop has no file-dialog portal: \
-                 type a path or drop the file on the window)"
+            _ => Command::Notify(Message {
+                text: "no file chosen (if no dialog appeared, this desktop has no file-dialog \
+                       portal: type a path or drop the file on the window)"
                     .to_owned(),
-            ),
+                error: false,
+            }),
         });
     }
 

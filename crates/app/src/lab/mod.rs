@@ -92,8 +92,8 @@ pub enum Command {
     /// Run the primary and up to [`MAX_COPIES`] copies of it from the same start, each copy
     /// changed by its [`Variant`]; an empty list ends the comparison (the primary goes on).
     Compare(Vec<Variant>),
-    /// Show a line of information (outcomes the GUI learns itself, such as a cancelled dialog).
-    Inform(String),
+    /// Show a line (outcomes the GUI learns itself: a cancelled dialog, a finished recording).
+    Notify(Message),
     /// Dismiss the message line.
     DismissMessage,
 }
@@ -277,7 +277,7 @@ impl Lab {
                 }
                 self.clock.stop();
             }
-            Command::Inform(text) => self.info(text),
+            Command::Notify(message) => self.message = Some(message),
             Command::DismissMessage => self.message = None,
         }
         Ok(())

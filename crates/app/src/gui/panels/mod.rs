@@ -31,6 +31,14 @@ pub struct PanelState {
     pub sphere: sphere::SphereView,
     /// The copies ticked in the Compare section.
     pub compare: compare::CompareChoice,
+    /// How long the Record button records (s).
+    pub record_seconds: f64,
+    /// Record was pressed this frame (the app starts the recording).
+    pub record_request: bool,
+    /// Stop was pressed this frame.
+    pub record_stop: bool,
+    /// Seconds left of the running recording (set by the app each frame).
+    pub recording: Option<f64>,
 }
 
 impl Default for PanelState {
@@ -44,6 +52,10 @@ impl Default for PanelState {
             dialog_open: false,
             sphere: sphere::SphereView::default(),
             compare: compare::CompareChoice::default(),
+            record_seconds: 5.0,
+            record_request: false,
+            record_stop: false,
+            recording: None,
         }
     }
 }

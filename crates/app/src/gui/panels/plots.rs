@@ -94,6 +94,31 @@ pub fn show(
         {
             state.dialog_request = Some(DialogPurpose::SaveCsv);
         }
+        ui.separator();
+        match state.recording {
+            Some(left) => {
+                ui.label(format!("recording… {left:.1} s"));
+                if ui.button("Stop").clicked() {
+                    state.record_stop = true;
+                }
+            }
+            None => {
+                if ui
+                    .button("Record")
+                    .on_hover_text("the window as numbered PNG pictures, 10 per second")
+                    .clicked()
+                {
+                    state.record_request = true;
+                }
+                ui.add(
+                    egui::DragValue::new(&mut state.record_seconds)
+                        .range(0.5..=120.0)
+                        .speed(0.5)
+                        .suffix(" s"),
+                )
+                .on_hover_text("how long to record");
+            }
+        }
     });
     let t_end = history.last().map_or(0.0, |s| s.t);
     let window = settings.plots.window;
