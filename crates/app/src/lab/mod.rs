@@ -249,33 +249,13 @@ impl Lab {
                         variants.len()
                     ));
                 }
-                let body = self.primary().body_arc().clone();
-                let mut fresh = vec![Specimen::start(
-                    PRIMARY,
-                    Variant::Same,
-                    body.clone(),
-                    &self.settings,
-                    self.preset_axis,
-                )?];
+                let mut plan = vec![(PRIMARY, Variant::Same)];
                 for (k, variant) in variants.into_iter().enumerate() {
-                    let id = SpecimenId(self.next_id + k as u32);
-                    let copy = Specimen::start(
-                        id,
-                        variant,
-                        body.clone(),
-                        &self.settings,
-                        self.preset_axis,
-                    )
-                    .map_err(|e| format!("{}: {e}", variant.label()))?;
-                    fresh.push(copy);
+                    plan.push((SpecimenId(self.next_id + k as u32), variant));
                 }
-                self.next_id += fresh.len() as u32;
-                let paused = self.is_paused();
-                self.specimens = fresh;
-                if paused {
-                    self.specimens.iter_mut().for_each(Specimen::pause);
-                }
-                self.clock.stop();
+                self.next_id += plan.len() as u32;
+                let body = self.primary().body_arc().clone();
+                self.start_all(&plan, &body, self.preset_axis)?;
             }
             Command::Notify(message) => self.message = Some(message),
             Command::DismissMessage => self.message = None,
@@ -283,28 +263,48 @@ impl Lab {
         Ok(())
     }
 
-    /// Every specimen starts again on the current body, spinning about `axis`; the paused flag
-    /// is kept.
+    /// Every specimen starts again on the current body, spinning about `axis`.
     fn restart(&mut self, axis: usize) -> Result<(), String> {
-        let paused = self.is_paused();
-        let fresh = self
-            .specimens
+        let body = self.primary().body_arc().clone();
+        self.start_all(&self.plan(), &body, axis)?;
+        self.preset_axis = axis;
+        Ok(())
+    }
+
+    /// The specimens there are, as a plan to start them again.
+    fn plan(&self) -> Vec<(SpecimenId, Variant)> {
+        self.specimens
             .iter()
-            .map(|s| {
-                Specimen::start(
-                    s.id(),
-                    s.variant(),
-                    s.body_arc().clone(),
-                    &self.settings,
-                    axis,
-                )
+            .map(|s| (s.id(), s.variant()))
+            .collect()
+    }
+
+    /// Replaces every specimen by `plan`'s, all starting on `body` spinning about `axis`; the
+    /// paused flag is kept. Nothing changes if one cannot start (the message names its variant).
+    fn start_all(
+        &mut self,
+        plan: &[(SpecimenId, Variant)],
+        body: &Arc<LoadedBody>,
+        axis: usize,
+    ) -> Result<(), String> {
+        let fresh = plan
+            .iter()
+            .map(|&(id, variant)| {
+                Specimen::start(id, variant, body.clone(), &self.settings, axis).map_err(|e| {
+                    if variant == Variant::Same {
+                        e
+                    } else {
+                        format!("{}: {e}", variant.label())
+                    }
+                })
             })
             .collect::<Result<Vec<_>, _>>()?;
+        let paused = self.is_paused();
         self.specimens = fresh;
-        self.preset_axis = axis;
         if paused {
             self.specimens.iter_mut().for_each(Specimen::pause);
         }
+        self.clock.stop();
         Ok(())
     }
 
@@ -329,24 +329,7 @@ impl Lab {
     /// simulated.
     fn install(&mut self, body: LoadedBody) -> Result<(), String> {
         let body = Arc::new(body);
-        let paused = self.is_paused();
-        let fresh = self
-            .specimens
-            .iter()
-            .map(|s| {
-                Specimen::start(
-                    s.id(),
-                    s.variant(),
-                    body.clone(),
-                    &self.settings,
-                    self.preset_axis,
-                )
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        self.specimens = fresh;
-        if paused {
-            self.specimens.iter_mut().for_each(Specimen::pause);
-        }
+        self.start_all(&self.plan(), &body, self.preset_axis)?;
         self.generation += 1;
         self.info(format!(
             "loaded {} ({} triangles)",
