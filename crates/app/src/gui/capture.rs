@@ -19,9 +19,12 @@ pub type Outcome = Arc<Mutex<Option<Result<(), String>>>>;
 pub struct Capture {
     path: PathBuf,
     frames_left: usize,
-    requested: bool,
+    requested: Option<Instant>,
     outcome: Outcome,
 }
+
+/// How long to wait for the pixels before giving up (a window that is never drawn).
+const CAPTURE_TIMEOUT: Duration = Duration::from_secs(20);
 
 impl Capture {
     /// A capture to `path`, reporting through `outcome`.
@@ -29,7 +32,7 @@ impl Capture {
         Self {
             path,
             frames_left: WARM_UP_FRAMES,
-            requested: false,
+            requested: None,
             outcome,
         }
     }
@@ -37,15 +40,21 @@ impl Capture {
     /// Called every frame: after the warm-up asks egui for the next frame's pixels; once they
     /// arrive, writes them (off the UI thread) and closes the window.
     pub fn frame(&mut self, ctx: &egui::Context) {
-        if self.requested {
+        ctx.request_repaint();
+        if let Some(at) = self.requested {
+            if at.elapsed() > CAPTURE_TIMEOUT
+                && let Ok(mut slot) = self.outcome.lock()
+            {
+                slot.get_or_insert(Err("the window's pixels never arrived".to_owned()));
+                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            }
             return;
         }
-        ctx.request_repaint();
         if self.frames_left > 0 {
             self.frames_left -= 1;
             return;
         }
-        self.requested = true;
+        self.requested = Some(Instant::now());
         let (path, outcome, ctx2) = (self.path.clone(), Arc::clone(&self.outcome), ctx.clone());
         ctx.request_screenshot(move |image| {
             std::thread::spawn(move || {

@@ -494,6 +494,7 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
     };
     let file = args.file.clone();
     let (history, after) = (args.bench_history, args.after);
+    let capture_outcome = Arc::clone(&outcome);
     let ghosts = [
         Variant::Source(InertiaSource::BoundingBox),
         Variant::Source(InertiaSource::PointMasses),
@@ -530,6 +531,14 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
                 app.bench = bench;
             }
             if capture.is_some() {
+                // A file that did not load must not give a picture of the default body.
+                if let Some(m) = app.lab.message().filter(|m| m.error) {
+                    if let Ok(mut slot) = capture_outcome.lock() {
+                        *slot = Some(Err(m.text.clone()));
+                    }
+                    cc.egui_ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                    return Ok(Box::new(app));
+                }
                 app.lab.advance_for(after);
                 // The picture shows the state at exactly `after` seconds.
                 app.command(Command::TogglePause);

@@ -19,6 +19,8 @@ pub struct History {
     sign: QuaternionSign,
     /// Reversals of ω₂ since the last disturbance.
     flips: FlipCounter,
+    /// Time of the last sample before the last disturbance (−∞ if none).
+    disturbed_at: f64,
 }
 
 impl History {
@@ -31,6 +33,7 @@ impl History {
             max_drift: 0.0,
             sign: QuaternionSign::default(),
             flips: FlipCounter::new(),
+            disturbed_at: f64::NEG_INFINITY,
         }
     }
 
@@ -78,6 +81,13 @@ impl History {
         self.energy_reference = None;
         self.max_drift = 0.0;
         self.flips = FlipCounter::new();
+        self.disturbed_at = self.last().map_or(f64::NEG_INFINITY, |s| s.t);
+    }
+
+    /// Time of the last disturbance: samples from before it belong to another motion (another
+    /// E, L or inertia), so paths drawn on the current one start after it.
+    pub fn disturbed_at(&self) -> f64 {
+        self.disturbed_at
     }
 
     /// The samples, oldest first.

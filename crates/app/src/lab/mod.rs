@@ -249,6 +249,11 @@ impl Lab {
                         variants.len()
                     ));
                 }
+                if variants.is_empty() {
+                    // The body goes on where it is; only the copies go.
+                    self.specimens.truncate(1);
+                    return Ok(());
+                }
                 let mut plan = vec![(PRIMARY, Variant::Same)];
                 for (k, variant) in variants.into_iter().enumerate() {
                     plan.push((SpecimenId(self.next_id + k as u32), variant));
@@ -777,8 +782,14 @@ mod tests {
             4,
             "a refused comparison changes nothing"
         );
+        let t = lab.primary().sim().time();
         lab.apply(Command::Compare(Vec::new()));
         assert_eq!(lab.specimens().len(), 1);
+        assert_eq!(
+            lab.primary().sim().time(),
+            t,
+            "stopping keeps the body's motion"
+        );
         lab.apply(Command::Release { specimen: same_id });
         assert!(lab.message().is_some_and(|m| m.text.contains("no body")));
     }

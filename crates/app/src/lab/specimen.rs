@@ -110,7 +110,7 @@ pub struct Specimen {
     poke: Option<PokeFlash>,
     /// Simulated time the frames asked for but the catch-up cap did not run, since the start.
     dropped: f64,
-    /// E and L drift since the start (every step observed).
+    /// E and L drift since the start or the last disturbance (every step observed).
     drift: DriftTracker,
 }
 
@@ -206,10 +206,10 @@ impl Specimen {
             b.set_mass_properties(used.mass, used.principal.moments, used.principal.rotation)
                 .map_err(|e| format!("mass properties rejected: {e}"))?;
             b.set_position(position).map_err(|e| e.to_string())?;
-            self.history.mark_disturbance();
+            self.disturbed();
         }
         if new.physics != old.physics {
-            self.history.mark_disturbance();
+            self.disturbed();
         }
         if moved_string.is_some() {
             self.sim.set_string(moved_string);
@@ -286,7 +286,7 @@ impl Specimen {
             delta_l: r.cross(&j),
             until: now + POKE_FLASH,
         });
-        self.history.mark_disturbance();
+        self.disturbed();
         Ok(())
     }
 
@@ -306,7 +306,7 @@ impl Specimen {
         )
         .map_err(|e| format!("string: {e}"))?;
         self.sim.set_string(Some(string));
-        self.history.mark_disturbance();
+        self.disturbed();
         Ok(())
     }
 
@@ -325,8 +325,15 @@ impl Specimen {
     pub fn release(&mut self) {
         if self.sim.string().is_some() {
             self.sim.set_string(None);
-            self.history.mark_disturbance();
+            self.disturbed();
         }
+    }
+
+    /// E, L or the inertia changed for a reason: the history's drift, flips and paths and the
+    /// drift table start again from now.
+    fn disturbed(&mut self) {
+        self.history.mark_disturbance();
+        self.drift = DriftTracker::new(&self.sim.diagnostics());
     }
 
     /// Forgets a poke flash that has expired at `now`.
@@ -344,7 +351,7 @@ impl Specimen {
     pub fn variant(&self) -> Variant {
         self.variant
     }
-    /// E and L drift since the start.
+    /// E and L drift since the start or the last poke, pull or change of body or physics.
     pub fn drift(&self) -> &DriftTracker {
         &self.drift
     }

@@ -113,12 +113,15 @@ pub fn show(
             });
             if lab.specimens().len() > 1 {
                 drift_table(ui, lab);
-                ui.small("Poke and string act on the body itself, not on its copies.");
+                ui.small(
+                    "Drift since the start or the last poke, pull or change. Poke and string act \
+                     on the body itself, not on its copies.",
+                );
             }
         });
 }
 
-/// Each specimen's largest E and |L| drift since the start.
+/// Each specimen's largest E and |L| drift since the start or its last disturbance.
 fn drift_table(ui: &mut egui::Ui, lab: &Lab) {
     egui::Grid::new("compare-drift")
         .striped(true)

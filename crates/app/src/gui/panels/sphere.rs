@@ -1,20 +1,22 @@
 //! The momentum sphere: the body's angular momentum seen from the body, in the principal frame.
 //! With no torque it stays on the sphere |L| = const and on its energy ellipsoid, so it runs along
-//! one of the drawn polhodes; the separatrix through axis 2 (in its own colour) divides those
-//! circling the stable axes 1 and 3. The current L is the white dot with a fading trail; drag to
+//! its own polhode, drawn in L's colour among a family of others; the separatrix through axis 2
+//! (orange) divides those circling the stable axes 1 and 3. The current L is the white dot with a fading trail; drag to
 //! orbit. The geometry is `lab::polhodes`; this file only projects and paints it.
 
 use egui::{Color32, Pos2, Sense, Stroke};
 use nalgebra::{UnitQuaternion, Vector3};
-use rbcore::RotationModel;
+use rbcore::{Integrator, RotationModel};
 
 use super::PanelState;
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::Lab;
-use crate::lab::polhodes::{Curve, CurveKind, polhodes};
+use crate::lab::polhodes::{self, Curve, CurveKind, polhodes};
 
 const POLHODE_COLOR: Color32 = Color32::from_rgb(150, 150, 160);
 const SEPARATRIX_COLOR: Color32 = Color32::from_rgb(255, 170, 60);
+/// L's own polhode, in the colour of the L arrow.
+const OWN_COLOR: Color32 = Color32::from_rgb(220, 90, 255);
 /// Seconds of history drawn as the trail.
 const TRAIL_SECONDS: f64 = 4.0;
 /// Polhodes drawn around each stable axis.
@@ -133,6 +135,16 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
             polyline(&painter, run, color, front);
         }
     }
+    // L's own polhode, for the E and |L| it has now (a poke or a new body gives a new one).
+    if let Some(own) = polhodes::polhode_through(&moments, &l, SAMPLES) {
+        let points: Vec<Pos2> = own
+            .points
+            .iter()
+            .chain(own.points.first())
+            .map(|p| project(p).0)
+            .collect();
+        painter.add(egui::Shape::line(points, Stroke::new(2.0, OWN_COLOR)));
+    }
     for (i, color) in AXIS_COLORS.iter().enumerate() {
         let axis = Vector3::ith(i, 1.15);
         let (a, _) = project(&-axis);
@@ -154,30 +166,40 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     }
     legend(ui, &moments);
     let physics = &lab.settings().physics;
-    let reasons: Vec<&str> = [
-        (
-            physics.model == RotationModel::Textbook,
-            "the textbook model",
-        ),
-        (physics.angular_damping > 0.0, "damping"),
-        (primary.string_view().is_some(), "the string"),
-    ]
-    .into_iter()
-    .filter_map(|(on, why)| on.then_some(why))
-    .collect();
-    if !reasons.is_empty() {
-        ui.add(
-            egui::Label::new(
-                egui::RichText::new(format!(
-                    "The dot leaves its curve: {} changes E or |L|.",
-                    reasons.join(" and ")
-                ))
-                .small()
-                .color(SEPARATRIX_COLOR),
+    let note = if physics.model == RotationModel::Textbook {
+        Some(
+            "Textbook model: without ω × Iω, ω never turns in the body, so the dot stands still \
+             while L turns in space (it should be fixed)."
+                .to_owned(),
+        )
+    } else {
+        let reasons: Vec<&str> = [
+            (physics.angular_damping > 0.0, "damping"),
+            (primary.string_view().is_some(), "the string"),
+            (!conserves(physics.integrator), "this integrator"),
+        ]
+        .into_iter()
+        .filter_map(|(on, why)| on.then_some(why))
+        .collect();
+        (!reasons.is_empty()).then(|| {
+            format!(
+                "The dot leaves its curve: {} changes E or |L|.",
+                reasons.join(" and ")
             )
-            .wrap(),
-        );
+        })
+    };
+    if let Some(note) = note {
+        ui.add(egui::Label::new(egui::RichText::new(note).small().color(SEPARATRIX_COLOR)).wrap());
     }
+}
+
+/// Whether `integrator` keeps E and |L| of the free rotation (to round-off or, for splitting,
+/// to a bounded error): the others let the dot drift off its curve.
+fn conserves(integrator: Integrator) -> bool {
+    matches!(
+        integrator,
+        Integrator::MidpointCayley | Integrator::Splitting | Integrator::Exact
+    )
 }
 
 /// Draws `points` as one line, faint on the far side of the sphere.
@@ -202,7 +224,7 @@ fn trail(
 ) {
     let history = lab.primary().history();
     let Some(last) = history.last() else { return };
-    let since = last.t - TRAIL_SECONDS;
+    let since = (last.t - TRAIL_SECONDS).max(history.disturbed_at());
     let start = history.samples().partition_point(|s| s.t < since);
     let samples: Vec<_> = history.samples().range(start..).collect();
     // About 300 segments whatever the step.
@@ -264,7 +286,7 @@ fn legend(ui: &mut egui::Ui, moments: &Vector3<f64>) {
         );
     }
     ui.label(
-        egui::RichText::new("orange: the separatrix; white: L now and its trail")
+        egui::RichText::new("orange: the separatrix; violet: L's polhode; white: L and its trail")
             .small()
             .color(Color32::GRAY),
     );

@@ -364,7 +364,8 @@ fn poinsot(o: &mut Overlay, c: &Context<'_>) {
     // The herpolhode: ω's tip over the last seconds, drawn from today's centre of mass.
     let history = c.specimen.history();
     if let Some(last) = history.last() {
-        let since = last.t - HERPOLHODE_SECONDS;
+        // Only since the last disturbance: before it ω moved on another plane.
+        let since = (last.t - HERPOLHODE_SECONDS).max(history.disturbed_at());
         let start = history.samples().partition_point(|s| s.t < since);
         let samples: Vec<_> = history.samples().range(start..).collect();
         let stride = (samples.len() / 400).max(1);
