@@ -35,11 +35,33 @@ pub enum Polhode {
         /// The period 4K(k)/λ of ω in the body (s).
         period: f64,
         /// (|L|² − 2E·I₂)/|L|²: how far from the separatrix (0 on it; small near it, where the
-        /// period grows without bound).
+        /// period grows without bound); infinite for a symmetric top, which has none.
         separation: f64,
     },
     /// On the separatrix through the intermediate axis: the period is infinite.
     Separatrix,
+}
+
+/// How a steady spin about a principal axis responds to a small disturbance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stability {
+    /// It wobbles and stays (the axes of least and greatest moment).
+    Stable,
+    /// It flips (the intermediate axis).
+    Unstable,
+    /// It drifts to a neighbouring axis of equal moment and stays there (equal moments).
+    Neutral,
+}
+
+/// The stability of a spin about principal axis `i` (0, 1 or 2, moments ascending).
+pub fn stability(moments: &Vector3<f64>, i: usize) -> Stability {
+    let equal = |a: usize, b: usize| (moments[b] - moments[a]).abs() <= EQUAL * moments.z;
+    match i {
+        0 | 1 if equal(0, 1) => Stability::Neutral,
+        1 | 2 if equal(1, 2) => Stability::Neutral,
+        1 => Stability::Unstable,
+        _ => Stability::Stable,
+    }
 }
 
 /// The polhode of body angular momentum `l` (principal frame) for principal `moments`
@@ -58,6 +80,11 @@ pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
     if let [axis] = along[..] {
         return Polhode::Steady { axis };
     }
+    // A symmetric top spinning in its plane of equal moments: every axis there is principal,
+    // so L lies along one and nothing moves.
+    if (equal12 && l.z == 0.0) || (equal23 && l.x == 0.0) {
+        return Polhode::Steady { axis: along[0] };
+    }
     // |L|² − 2E·I₂ = Σ (Iₖ − I₂) Lₖ²/Iₖ, term by term so that the large L₂ term cannot cancel.
     let beyond: f64 = (0..3).map(|k| (i[k] - i.y) * l[k] * l[k] / i[k]).sum();
     let separation = beyond / l2;
@@ -68,6 +95,11 @@ pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
         _ if separation.abs() <= EQUAL => return Polhode::Separatrix,
         _ if separation < 0.0 => 0,
         _ => 2,
+    };
+    let separation = if equal12 || equal23 {
+        f64::INFINITY
+    } else {
+        separation
     };
     match torque_free_period(moments, l) {
         Some(period) => Polhode::Circles {
@@ -105,6 +137,24 @@ mod tests {
             polhode(&I, &minor),
             Polhode::Circles { axis: 0, .. }
         ));
+    }
+
+    #[test]
+    fn symmetric_tops_spinning_in_their_equal_plane_are_steady_and_neutral() {
+        let rod = Vector3::new(1.0, 3.0, 3.0);
+        assert_eq!(
+            polhode(&rod, &Vector3::new(0.0, 3.0, 6.0)),
+            Polhode::Steady { axis: 1 }
+        );
+        assert_eq!(stability(&rod, 2), Stability::Neutral);
+        assert_eq!(stability(&rod, 0), Stability::Stable);
+        assert_eq!(stability(&I, 1), Stability::Unstable);
+        let top = Vector3::new(2.0, 2.0, 3.0);
+        let Polhode::Circles { separation, .. } = polhode(&top, &Vector3::new(2.0, 2.0, 0.03))
+        else {
+            panic!("a precessing top");
+        };
+        assert!(separation.is_infinite(), "a top has no separatrix");
     }
 
     #[test]

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use egui::{Color32, RichText};
-use rbcore::{Integrator, Polhode, RotationModel};
+use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
 use super::{PanelState, number};
 use crate::gui::dialogs::DialogPurpose;
@@ -229,6 +229,7 @@ fn error_text(text: String, large: bool) -> RichText {
 /// current E and |L| (rbcore's exact solution) beside the one measured, or why there is none.
 fn flip_text(
     polhode: Polhode,
+    moments: &nalgebra::Vector3<f64>,
     measured: Option<f64>,
     model: RotationModel,
     torque_free: bool,
@@ -259,13 +260,22 @@ fn flip_text(
         Polhode::Separatrix => "On the separatrix through axis 2: the interval between flips \
                                 grows without bound."
             .to_owned(),
-        Polhode::Steady { axis: 1 } => "Steady spin about axis 2: unstable, the slightest \
-                                       disturbance (a poke) starts the flips."
-            .to_owned(),
-        Polhode::Steady { axis } => format!(
-            "Steady spin about axis {}: stable, nothing flips (a poke only makes it wobble).",
-            axis + 1
-        ),
+        Polhode::Steady { axis } => match rbcore::stability(moments, axis) {
+            Stability::Unstable => format!(
+                "Steady spin about axis {}: unstable, the slightest disturbance (a poke) starts \
+                 the flips.",
+                axis + 1
+            ),
+            Stability::Stable => format!(
+                "Steady spin about axis {}: stable, nothing flips (a poke only makes it wobble).",
+                axis + 1
+            ),
+            Stability::Neutral => format!(
+                "Steady spin about axis {}: its moment equals another's, so every axis in their \
+                 plane is principal and nothing flips.",
+                axis + 1
+            ),
+        },
         Polhode::Spherical => "All three moments are equal: every axis is principal, so the spin \
                                never moves in the body and nothing flips."
             .to_owned(),
@@ -312,6 +322,7 @@ fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: 
             let torque_free = physics.angular_damping == 0.0 && primary.string_view().is_none();
             let text = flip_text(
                 primary.polhode(),
+                &primary.sim().body().moments(),
                 primary.history().flip_interval(),
                 physics.model,
                 torque_free,
@@ -470,20 +481,24 @@ mod tests {
             separation: 5e-9,
         };
         let full = RotationModel::Full;
-        let t = flip_text(circles, Some(3.5507), full, true);
+        let i = nalgebra::Vector3::new(1.0, 2.0, 3.0);
+        let t = flip_text(circles, &i, Some(3.5507), full, true);
         assert!(
             t.contains("T/2 = 3.551 s") && t.contains("measured 3.551 s"),
             "{t}"
         );
         assert!(t.contains("axis 3") && t.contains("without bound"), "{t}");
-        assert!(flip_text(circles, None, full, true).contains("after two reversals"));
-        let textbook = flip_text(circles, None, RotationModel::Textbook, true);
+        assert!(flip_text(circles, &i, None, full, true).contains("after two reversals"));
+        let textbook = flip_text(circles, &i, None, RotationModel::Textbook, true);
         assert!(textbook.contains("never flips"), "{textbook}");
-        assert!(flip_text(circles, None, full, false).contains("Damping or the string"));
-        assert!(flip_text(Polhode::Spherical, None, full, true).contains("equal"));
-        assert!(flip_text(Polhode::Steady { axis: 1 }, None, full, true).contains("unstable"));
-        assert!(flip_text(Polhode::Steady { axis: 0 }, None, full, true).contains("stable"));
-        assert!(flip_text(Polhode::Separatrix, None, full, true).contains("without bound"));
+        assert!(flip_text(circles, &i, None, full, false).contains("Damping or the string"));
+        assert!(flip_text(Polhode::Spherical, &i, None, full, true).contains("equal"));
+        assert!(flip_text(Polhode::Steady { axis: 1 }, &i, None, full, true).contains("unstable"));
+        assert!(flip_text(Polhode::Steady { axis: 0 }, &i, None, full, true).contains("stable"));
+        assert!(flip_text(Polhode::Separatrix, &i, None, full, true).contains("without bound"));
+        let rod = nalgebra::Vector3::new(1.0, 3.0, 3.0);
+        let neutral = flip_text(Polhode::Steady { axis: 1 }, &rod, None, full, true);
+        assert!(neutral.contains("every axis in their plane"), "{neutral}");
     }
 
     #[test]

@@ -6,7 +6,7 @@
 
 use egui::{Color32, Pos2, Sense, Stroke};
 use nalgebra::{UnitQuaternion, Vector3};
-use rbcore::{Integrator, RotationModel};
+use rbcore::{Integrator, RotationModel, Stability};
 
 use super::PanelState;
 use crate::gui::view3d::overlay::AXIS_COLORS;
@@ -256,17 +256,12 @@ fn trail(
     }
 }
 
-/// How a spin about principal axis `i` behaves: the axes of least and greatest moment are
-/// stable, the intermediate one not; equal moments make their axes neutral (any axis in their
-/// plane is principal).
+/// How a spin about principal axis `i` behaves, in words (rbcore's classification).
 fn stability(moments: &Vector3<f64>, i: usize) -> &'static str {
-    let equal = |a: usize, b: usize| (moments[b] - moments[a]).abs() <= 1e-12 * moments.z;
-    match i {
-        _ if equal(0, 1) && equal(1, 2) => "neutral (all moments equal)",
-        0 | 1 if equal(0, 1) => "neutral (I1 = I2)",
-        1 | 2 if equal(1, 2) => "neutral (I2 = I3)",
-        1 => "unstable",
-        _ => "stable",
+    match rbcore::stability(moments, i) {
+        Stability::Stable => "stable",
+        Stability::Unstable => "unstable",
+        Stability::Neutral => "neutral (equal moments)",
     }
 }
 
@@ -302,14 +297,7 @@ mod tests {
         let names: Vec<_> = (0..3).map(|i| stability(&distinct, i)).collect();
         assert_eq!(names, ["stable", "unstable", "stable"]);
         let top = Vector3::new(2.0, 2.0, 3.0);
-        assert_eq!(stability(&top, 1), "neutral (I1 = I2)");
+        assert_eq!(stability(&top, 1), "neutral (equal moments)");
         assert_eq!(stability(&top, 2), "stable");
-        let rod = Vector3::new(1.0, 3.0, 3.0);
-        assert_eq!(stability(&rod, 0), "stable");
-        assert_eq!(stability(&rod, 2), "neutral (I2 = I3)");
-        assert_eq!(
-            stability(&Vector3::repeat(2.0), 0),
-            "neutral (all moments equal)"
-        );
     }
 }
