@@ -253,7 +253,8 @@ fn compare_from_the_panel() {
     assert!(h.query_by_label_contains("max ΔE/E").is_some());
     // The table names each copy by what it changes (the checkbox says "textbook model" too).
     assert_eq!(h.query_all_by_label_contains("textbook model").count(), 2);
-    assert!(h.query_by_label("bounding box inertia").is_some());
+    // The checkbox and the table's row.
+    assert_eq!(h.query_all_by_label("bounding box inertia").count(), 2);
     h.get_by_label("Stop comparing").click();
     frames(&mut h, 2);
     assert_eq!(h.state().lab().specimens().len(), 1);

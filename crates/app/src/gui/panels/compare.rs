@@ -10,16 +10,15 @@ use crate::gui::view3d::ghost_color;
 use crate::lab::settings::{AppSettings, GhostLayout, InertiaSource};
 use crate::lab::{Command, Lab, MAX_COPIES, Variant};
 
-/// The copies the user has ticked (UI state until "Compare" starts them).
+/// The copies the user has ticked (UI state until "Compare" starts them). Each offers the
+/// choices other than the lab's own, so a copy always differs from the body.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CompareChoice {
-    /// A copy with the bounding-box inertia.
-    pub bounding_box: bool,
-    /// A copy with the point-mass inertia.
-    pub point_masses: bool,
-    /// A copy under the textbook model (no ω × Iω).
-    pub textbook: bool,
-    /// A copy with this integrator.
+    /// A copy per inertia source, in [`InertiaSource::ALL`] order (the lab's own is not offered).
+    pub sources: [bool; 3],
+    /// A copy under the other rotation model.
+    pub other_model: bool,
+    /// A copy with this integrator (the lab's own is not offered).
     pub integrator: Option<Integrator>,
 }
 
@@ -27,31 +26,40 @@ impl Default for CompareChoice {
     fn default() -> Self {
         // The original tool's lesson: the bounding-box guess moves differently.
         Self {
-            bounding_box: true,
-            point_masses: false,
-            textbook: false,
+            sources: [false, true, false],
+            other_model: false,
             integrator: None,
         }
     }
 }
 
 impl CompareChoice {
-    /// The ticked copies, in the order shown.
-    pub fn variants(&self) -> Vec<Variant> {
-        let mut v = Vec::new();
-        if self.bounding_box {
-            v.push(Variant::Source(InertiaSource::BoundingBox));
+    /// The ticked copies that differ from `settings`, in the order shown.
+    pub fn variants(&self, settings: &AppSettings) -> Vec<Variant> {
+        let mut v: Vec<Variant> = InertiaSource::ALL
+            .into_iter()
+            .zip(self.sources)
+            .filter(|&(source, on)| on && source != settings.body.source)
+            .map(|(source, _)| Variant::Source(source))
+            .collect();
+        if self.other_model {
+            v.push(Variant::Model(other_model(settings.physics.model)));
         }
-        if self.point_masses {
-            v.push(Variant::Source(InertiaSource::PointMasses));
-        }
-        if self.textbook {
-            v.push(Variant::Model(RotationModel::Textbook));
-        }
-        if let Some(i) = self.integrator {
+        if let Some(i) = self
+            .integrator
+            .filter(|&i| i != settings.physics.integrator)
+        {
             v.push(Variant::Integrator(i));
         }
         v
+    }
+}
+
+/// The rotation model that is not `model`.
+fn other_model(model: RotationModel) -> RotationModel {
+    match model {
+        RotationModel::Full => RotationModel::Textbook,
+        RotationModel::Textbook => RotationModel::Full,
     }
 }
 
@@ -73,23 +81,39 @@ pub fn show(
                 .wrap(),
             );
             let c = &mut state.compare;
-            ui.checkbox(&mut c.bounding_box, "bounding-box inertia");
-            ui.checkbox(&mut c.point_masses, "point-mass inertia");
-            ui.checkbox(&mut c.textbook, "textbook model (no ω × Iω)");
+            for (k, source) in InertiaSource::ALL.into_iter().enumerate() {
+                if source != s.body.source {
+                    ui.checkbox(&mut c.sources[k], format!("{} inertia", source.label()));
+                }
+            }
+            let model = other_model(s.physics.model);
+            let model_label = match model {
+                RotationModel::Textbook => "textbook model (no ω × Iω)".to_owned(),
+                RotationModel::Full => "full model (with ω × Iω)".to_owned(),
+            };
+            ui.checkbox(&mut c.other_model, model_label);
             ui.horizontal(|ui| {
                 let mut on = c.integrator.is_some();
                 ui.checkbox(&mut on, "integrator");
-                let mut chosen = c.integrator.unwrap_or(Integrator::Rk4);
+                let own = s.physics.integrator;
+                let mut chosen =
+                    c.integrator
+                        .filter(|&i| i != own)
+                        .unwrap_or(if own == Integrator::Rk4 {
+                            Integrator::Euler
+                        } else {
+                            Integrator::Rk4
+                        });
                 egui::ComboBox::from_id_salt("compare-integrator")
                     .selected_text(chosen.name())
                     .show_ui(ui, |ui| {
-                        for i in Integrator::ALL {
+                        for i in Integrator::ALL.into_iter().filter(|&i| i != own) {
                             ui.selectable_value(&mut chosen, i, i.name());
                         }
                     });
                 c.integrator = on.then_some(chosen);
             });
-            let variants = c.variants();
+            let variants = c.variants(s);
             ui.horizontal_wrapped(|ui| {
                 let ok = (1..=MAX_COPIES).contains(&variants.len());
                 let label = format!("Compare {} from the start", variants.len());
@@ -144,4 +168,41 @@ fn drift_table(ui: &mut egui::Ui, lab: &Lab) {
                 ui.end_row();
             }
         });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A copy always differs from the body: the lab's own choices are never compared.
+    #[test]
+    fn the_lab_s_own_choices_are_not_offered() {
+        let choice = CompareChoice {
+            sources: [true, true, true],
+            other_model: true,
+            integrator: Some(Integrator::MidpointCayley),
+        };
+        let mut settings = AppSettings::default();
+        assert_eq!(
+            choice.variants(&settings),
+            [
+                Variant::Source(InertiaSource::BoundingBox),
+                Variant::Source(InertiaSource::PointMasses),
+                Variant::Model(RotationModel::Textbook),
+            ]
+        );
+        settings.body.source = InertiaSource::BoundingBox;
+        settings.physics.model = RotationModel::Textbook;
+        assert_eq!(
+            choice.variants(&settings)[..2],
+            [
+                Variant::Source(InertiaSource::Exact),
+                Variant::Source(InertiaSource::PointMasses)
+            ]
+        );
+        assert_eq!(
+            choice.variants(&settings)[2],
+            Variant::Model(RotationModel::Full)
+        );
+    }
 }
