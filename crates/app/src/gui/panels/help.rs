@@ -66,5 +66,12 @@ pub fn show(ctx: &egui::Context, open: &mut bool) {
                  approximation changes the motion; the Textbook model drops the gyroscopic term \
                  and never flips.",
             );
+            ui.label(
+                "The momentum sphere (right) shows L as seen from the body: it runs along its \
+                 violet polhode; the orange separatrix through axis 2 parts the curves around \
+                 axes 1 and 3. Poinsot (toolbar) rolls the inertia ellipsoid on the plane \
+                 perpendicular to L. Compare (side panel) runs copies that differ in one choice \
+                 as ghosts; Record (plot bar) saves the window as pictures.",
+            );
         });
 }
