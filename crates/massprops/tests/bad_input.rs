@@ -456,6 +456,24 @@ fn stl_binary_and_ascii_give_the_obj_result() {
     let mut short = binary_stl(&b, b"binary");
     short.truncate(84 + 50 * 5 + 7);
     let e = parse_mesh(&short, Path::new("cut.stl")).expect_err("truncated");
+    // Named as cut short, with what is missing, not "failed to fill whole buffer".
+    let n = u32::from_le_bytes([short[80], short[81], short[82], short[83]]);
+    let text = e.to_string();
+    assert!(text.contains("cut short"), "{text}");
+    assert!(
+        text.contains(&format!("announces {n} triangles ({} bytes)", 84 + 50 * n)),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("has {} bytes", 84 + 50 * 5 + 7)),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("triangles 5 to {}", n - 1)),
+        "{text}"
+    );
+    let stub = parse_mesh(&short[..40], Path::new("stub.stl")).expect_err("no header");
+    assert!(stub.to_string().contains("84-byte header"), "{stub}");
     assert!(matches!(e, MeshError::Malformed { .. }), "{e:?}");
     assert!(e.to_string().contains("cut.stl"), "{e}");
     // Infinity in triangle 5, corner 2: the message names where, not an index of the welded

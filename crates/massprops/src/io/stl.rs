@@ -15,6 +15,7 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         line: None,
         message,
     };
+    check_binary_length(bytes).map_err(malformed)?;
     let patched = patch_for_detection(bytes);
     let mut cursor = Cursor::new(patched.as_deref().unwrap_or(bytes));
     let reader = stl_io::create_stl_reader(&mut cursor)
@@ -51,6 +52,35 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         line: None,
         source: Box::new(e),
     })
+}
+
+/// A binary STL (one that does not open with `solid`) is an 84-byte header, whose last four bytes
+/// count the triangles, then 50 bytes a triangle. A file cut short (an interrupted download or
+/// copy) is named as such, with how much is missing, rather than as an I/O error mid-triangle.
+fn check_binary_length(bytes: &[u8]) -> Result<(), String> {
+    if bytes.starts_with(b"solid") {
+        return Ok(());
+    }
+    let Some(count) = bytes.get(80..84) else {
+        return Err(format!(
+            "the file is cut short: {} bytes, less than a binary STL's 84-byte header (and it does \
+             not start with \"solid\" as an ASCII STL does)",
+            bytes.len()
+        ));
+    };
+    let announced = u64::from(u32::from_le_bytes([count[0], count[1], count[2], count[3]]));
+    let expected = 84 + 50 * announced;
+    let len = bytes.len() as u64;
+    if len < expected {
+        let complete = (len - 84) / 50;
+        return Err(format!(
+            "the file is cut short: its header announces {announced} triangles ({expected} \
+             bytes) but it has {len} bytes; triangles {complete} to {} (counting from 0) are \
+             missing or incomplete",
+            announced - 1
+        ));
+    }
+    Ok(())
 }
 
 /// `stl_io` takes a file for ASCII exactly when its first line starts with `"solid "`. Two common
