@@ -287,6 +287,28 @@ f 1 2 3 4\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\nf 5 8 7 6\n";
     assert_eq!(j["mesh"]["flipped"], true);
     assert!(close(f(&j["volume"]), 1.0, 1e-15));
     assert!(close(f(&j["inertia_com"][0][0]), 1.0 / 6.0, 1e-14));
+
+    // The outward cube with face 1 (y = 0) wound the other way: its four edges are named by
+    // the face pairs that meet there, each pair holding face 1.
+    let one_flipped = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+f 1 4 3 2\nf 5 6 2 1\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\n";
+    let file = TempFile::new("one-flipped.obj", one_flipped);
+    let j = props_json(&[file.path()]);
+    let w = j["warnings"]
+        .as_array()
+        .expect("warnings")
+        .iter()
+        .find(|w| w["code"] == "inconsistent_winding")
+        .expect("the winding warning");
+    assert_eq!(w["edges"], 4);
+    let pairs = w["examples"].as_array().expect("face pairs");
+    assert_eq!(pairs.len(), 4);
+    for p in pairs {
+        let (a, b) = (p[0].as_u64(), p[1].as_u64());
+        assert!((a == Some(1)) != (b == Some(1)), "{p}");
+    }
+    let message = w["message"].as_str().expect("text");
+    assert!(message.contains("faces 0 and 1"), "{message}");
 }
 
 #[test]

@@ -90,12 +90,17 @@ pub enum Warning {
     NonManifoldEdges {
         /// How many such edges.
         count: usize,
+        /// Some of them: the vertex pair and the faces sharing it (zero-based).
+        examples: Vec<((u32, u32), Vec<usize>)>,
     },
     /// Edges whose two faces traverse them in the same direction: some faces are wound the
     /// other way, and the volume method counts them as negative volume.
     InconsistentWinding {
         /// How many such edges.
         edges: usize,
+        /// Some neighbouring face pairs (zero-based) that wind in the same sense along their
+        /// shared edge: one face of each is flipped.
+        examples: Vec<(usize, usize)>,
     },
     /// The faces wind clockwise seen from outside (negative signed volume); the results are those
     /// of the outward-wound mesh. Only given when the numbers use the enclosed volume.
@@ -291,11 +296,13 @@ fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: boo
     if d.nonmanifold_edges > 0 {
         w.push(Warning::NonManifoldEdges {
             count: d.nonmanifold_edges,
+            examples: d.nonmanifold_edge_examples.clone(),
         });
     }
     if d.inconsistent_edges > 0 {
         w.push(Warning::InconsistentWinding {
             edges: d.inconsistent_edges,
+            examples: d.inconsistent_face_examples.clone(),
         });
     }
     if flipped && volume_matters {

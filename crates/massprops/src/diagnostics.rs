@@ -45,6 +45,11 @@ pub struct MeshDiagnostics {
     pub bounding_box: (Point3<f64>, Point3<f64>),
     /// Up to `EXAMPLES` open edges as zero-based vertex pairs.
     pub open_edge_examples: Vec<(u32, u32)>,
+    /// Up to `EXAMPLES` non-manifold edges: the vertex pair and the zero-based faces sharing it.
+    pub nonmanifold_edge_examples: Vec<((u32, u32), Vec<usize>)>,
+    /// Up to `EXAMPLES` pairs of zero-based neighbouring faces that wind in the same sense along
+    /// their shared edge (one of each pair is flipped).
+    pub inconsistent_face_examples: Vec<(usize, usize)>,
     /// Up to `EXAMPLES` zero-based indices of degenerate faces.
     pub degenerate_face_examples: Vec<usize>,
     /// Up to `EXAMPLES` zero-based indices of non-planar faces.
@@ -113,6 +118,8 @@ pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
         surface_area: area.total()[0],
         bounding_box: mesh.bounding_box(),
         open_edge_examples: edges.open_examples,
+        nonmanifold_edge_examples: edges.nonmanifold_examples,
+        inconsistent_face_examples: edges.inconsistent_examples,
         degenerate_face_examples: degenerate,
         nonplanar_face_examples: nonplanar,
     }
@@ -154,24 +161,29 @@ struct EdgeReport {
     nonmanifold: usize,
     inconsistent: usize,
     open_examples: Vec<(u32, u32)>,
+    nonmanifold_examples: Vec<((u32, u32), Vec<usize>)>,
+    inconsistent_examples: Vec<(usize, usize)>,
 }
 
 fn edge_report(mesh: &PolyMesh) -> EdgeReport {
-    // Key: low vertex in the high 32 bits, high vertex next; the lowest bit of a separate byte
-    // records whether the face runs low → high.
-    let mut records: Vec<(u64, bool)> =
+    // Key: low vertex in the high 32 bits, high vertex next; then the face (so that a defect
+    // can be named) and whether it runs low → high. The face index fits in the padding the
+    // flag already took: a record stays 16 bytes.
+    let mut records: Vec<(u64, u32, bool)> =
         Vec::with_capacity(mesh.triangle_count() + 2 * mesh.face_count());
-    for face in mesh.faces() {
+    for (f, face) in mesh.faces().enumerate() {
+        let f = u32::try_from(f).unwrap_or(u32::MAX);
         let mut prev = face[face.len() - 1];
         for &cur in face {
             if prev != cur {
                 let (lo, hi) = (prev.min(cur), prev.max(cur));
-                records.push(((u64::from(lo) << 32) | u64::from(hi), prev < cur));
+                records.push(((u64::from(lo) << 32) | u64::from(hi), f, prev < cur));
             }
             prev = cur;
         }
     }
-    // Records with equal keys are only counted, so an unstable sort gives the same report.
+    // Within a group of equal keys only the set of faces matters (examples are sorted), so an
+    // unstable sort gives the same report.
     #[cfg(feature = "parallel")]
     records.par_sort_unstable_by_key(|r| r.0);
     #[cfg(not(feature = "parallel"))]
@@ -182,21 +194,37 @@ fn edge_report(mesh: &PolyMesh) -> EdgeReport {
         nonmanifold: 0,
         inconsistent: 0,
         open_examples: Vec::new(),
+        nonmanifold_examples: Vec::new(),
+        inconsistent_examples: Vec::new(),
     };
     for group in records.chunk_by(|a, b| a.0 == b.0) {
         report.edges += 1;
-        let forward = group.iter().filter(|r| r.1).count();
+        let forward = group.iter().filter(|r| r.2).count();
+        let key = group[0].0;
+        let pair = ((key >> 32) as u32, key as u32);
         match group.len() {
             1 => {
                 report.open += 1;
                 if report.open_examples.len() < EXAMPLES {
-                    let key = group[0].0;
-                    report.open_examples.push(((key >> 32) as u32, key as u32));
+                    report.open_examples.push(pair);
                 }
             }
-            2 if forward != 1 => report.inconsistent += 1,
+            2 if forward != 1 => {
+                report.inconsistent += 1;
+                if report.inconsistent_examples.len() < EXAMPLES {
+                    let (a, b) = (group[0].1 as usize, group[1].1 as usize);
+                    report.inconsistent_examples.push((a.min(b), a.max(b)));
+                }
+            }
             2 => {}
-            _ => report.nonmanifold += 1,
+            _ => {
+                report.nonmanifold += 1;
+                if report.nonmanifold_examples.len() < EXAMPLES {
+                    let mut faces: Vec<usize> = group.iter().map(|r| r.1 as usize).collect();
+                    faces.sort_unstable();
+                    report.nonmanifold_examples.push((pair, faces));
+                }
+            }
         }
     }
     report

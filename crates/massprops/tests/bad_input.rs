@@ -129,11 +129,17 @@ fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
     assert!(!d.is_closed());
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume 2");
     assert_rel(a.properties.mass, 2.0, 1e-15, "two unit boxes");
+    // The edge is named with the four faces that share it, two from each box.
     assert!(
-        a.warnings.contains(&Warning::NonManifoldEdges { count: 1 }),
+        a.warnings.iter().any(|w| matches!(
+            w,
+            Warning::NonManifoldEdges { count: 1, examples }
+                if examples.len() == 1 && examples[0].1.len() == 4
+        )),
         "{:?}",
         a.warnings
     );
+    assert_eq!(d.nonmanifold_edge_examples[0].1.len(), 4);
 }
 
 #[test]
@@ -148,9 +154,18 @@ fn one_flipped_face_gives_four_inconsistent_edges() {
     assert_eq!(d.open_edges, 0);
     assert!(!d.is_consistently_oriented());
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
+    // Each named pair is the flipped face 1 and one of its four neighbours.
+    let pairs = &d.inconsistent_face_examples;
+    assert_eq!(pairs.len(), 4);
     assert!(
-        a.warnings
-            .contains(&Warning::InconsistentWinding { edges: 4 }),
+        pairs.iter().all(|&(a, b)| (a == 1) != (b == 1)),
+        "{pairs:?}"
+    );
+    assert!(
+        a.warnings.iter().any(|w| matches!(
+            w,
+            Warning::InconsistentWinding { edges: 4, examples } if examples == pairs
+        )),
         "{:?}",
         a.warnings
     );

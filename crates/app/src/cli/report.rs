@@ -112,12 +112,6 @@ pub fn json(file: &str, scale: f64, a: &Analysis) -> Value {
 
 /// The command line's wording of a massprops warning (indices count from 0, as everywhere).
 pub fn warning_text(w: &Warning) -> String {
-    let join = |v: &[usize]| {
-        v.iter()
-            .map(usize::to_string)
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
     match w {
         Warning::OpenMesh {
             boundary_edges,
@@ -132,13 +126,17 @@ pub fn warning_text(w: &Warning) -> String {
                 examples.join(", ")
             )
         }
-        Warning::NonManifoldEdges { count } => format!(
-            "{count} non-manifold edge(s) (shared by more than two faces): touching or \
-             overlapping parts are counted once each"
+        Warning::NonManifoldEdges { count, examples } => format!(
+            "{count} non-manifold edge(s) (shared by more than two faces; e.g. {}, counting from \
+             0): touching or overlapping parts are each counted in full, so overlapping volume \
+             counts twice",
+            edge_faces(examples)
         ),
-        Warning::InconsistentWinding { edges } => format!(
-            "{edges} edge(s) where neighbouring faces wind in opposite senses: some faces are \
-             flipped, and the volume method counts them as negative volume"
+        Warning::InconsistentWinding { edges, examples } => format!(
+            "{edges} edge(s) where neighbouring faces wind in opposite senses (e.g. faces {}, \
+             counting from 0: one of each pair is flipped); the volume method counts flipped \
+             faces as negative volume",
+            face_pairs(examples)
         ),
         Warning::Flipped => "the faces wind clockwise seen from outside (negative signed \
                              volume): the result was flipped to that of the outward-wound mesh"
@@ -158,6 +156,32 @@ pub fn warning_text(w: &Warning) -> String {
     }
 }
 
+/// Indices as "1, 4, 9".
+fn join(v: &[usize]) -> String {
+    v.iter()
+        .map(usize::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Non-manifold edges as "edge 3-7 (faces 1, 4, 9)".
+fn edge_faces(examples: &[((u32, u32), Vec<usize>)]) -> String {
+    examples
+        .iter()
+        .map(|((a, b), faces)| format!("edge {a}-{b} (faces {})", join(faces)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Face pairs as "4 and 9, 12 and 13".
+fn face_pairs(examples: &[(usize, usize)]) -> String {
+    examples
+        .iter()
+        .map(|(a, b)| format!("{a} and {b}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// A warning in JSON: `{"code", "message", …}` plus the variant's data under the names of its
 /// fields (vertex pairs as two-element arrays).
 fn warning_json(w: &Warning) -> Value {
@@ -170,8 +194,17 @@ fn warning_json(w: &Warning) -> Value {
             "boundary_edges": boundary_edges,
             "examples": examples.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
         }),
-        Warning::NonManifoldEdges { count } => json!({ "count": count }),
-        Warning::InconsistentWinding { edges } => json!({ "edges": edges }),
+        Warning::NonManifoldEdges { count, examples } => json!({
+            "count": count,
+            "examples": examples
+                .iter()
+                .map(|((a, b), faces)| json!({ "edge": [a, b], "faces": faces }))
+                .collect::<Vec<_>>(),
+        }),
+        Warning::InconsistentWinding { edges, examples } => json!({
+            "edges": edges,
+            "examples": examples.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
+        }),
         Warning::DegenerateFaces { count, examples }
         | Warning::NonPlanarFaces { count, examples } => {
             json!({ "count": count, "examples": examples })

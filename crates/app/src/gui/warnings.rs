@@ -21,16 +21,31 @@ pub fn warning_text(w: &Warning) -> String {
                 examples.join(", ")
             )
         }
-        Warning::NonManifoldEdges { count } => format!(
-            "{count} edge(s) are shared by more than two faces: parts that touch or overlap are \
-             each counted in full, so overlapping volume counts twice. Merge or separate the \
-             parts in your modelling program if that is not intended."
-        ),
-        Warning::InconsistentWinding { edges } => format!(
-            "Some faces point the wrong way ({edges} edge(s) between faces wound in opposite \
-             senses); they count as negative volume, so the numbers are wrong. Recalculate the \
-             normals (make them consistent) in your modelling program."
-        ),
+        Warning::NonManifoldEdges { count, examples } => {
+            let named: Vec<String> = examples
+                .iter()
+                .map(|((a, b), faces)| format!("vertices {a}–{b}, faces {}", list(faces)))
+                .collect();
+            format!(
+                "{count} edge(s) are shared by more than two faces (e.g. {}): parts that touch or \
+                 overlap are each counted in full, so overlapping volume counts twice. Merge or \
+                 separate the parts in your modelling program if that is not intended.",
+                named.join("; ")
+            )
+        }
+        Warning::InconsistentWinding { edges, examples } => {
+            let pairs: Vec<String> = examples
+                .iter()
+                .map(|(a, b)| format!("{a} and {b}"))
+                .collect();
+            format!(
+                "Some faces point the wrong way ({edges} edge(s) between faces wound in opposite \
+                 senses, e.g. faces {}: one of each pair is flipped); they count as negative \
+                 volume, so the numbers are wrong. Recalculate the normals (make them consistent) \
+                 in your modelling program.",
+                pairs.join(", ")
+            )
+        }
         Warning::Flipped => "All faces point inwards; the numbers shown are those of the \
                              correctly oriented mesh, so nothing needs fixing for them here."
             .to_owned(),
@@ -69,8 +84,14 @@ mod tests {
                 boundary_edges: 4,
                 examples: vec![(0, 1), (2, 3)],
             },
-            Warning::NonManifoldEdges { count: 1 },
-            Warning::InconsistentWinding { edges: 4 },
+            Warning::NonManifoldEdges {
+                count: 1,
+                examples: vec![((3, 7), vec![1, 4, 9])],
+            },
+            Warning::InconsistentWinding {
+                edges: 4,
+                examples: vec![(0, 5)],
+            },
             Warning::Flipped,
             Warning::DegenerateFaces {
                 count: 2,
