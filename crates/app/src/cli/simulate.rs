@@ -239,7 +239,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
 fn summary(args: &SimulateArgs, sim: &mut Simulation, steps: u64) -> Result<(), CliError> {
     let d0 = sim.diagnostics();
     let moments = sim.body().moments();
-    let l0 = d0.omega_principal.component_mul(&moments);
+    let l0 = sim.body().angular_momentum_principal();
     let mut drift = DriftTracker::new(&d0);
     let mut flips = FlipCounter::new();
     flips.observe(d0.time, d0.omega_principal.y);

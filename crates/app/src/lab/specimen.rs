@@ -407,12 +407,7 @@ impl Specimen {
     /// circles and the flip period predicted from the current E and |L|.
     pub fn polhode(&self) -> Polhode {
         let b = self.sim.body();
-        let l = self
-            .sim
-            .diagnostics()
-            .omega_principal
-            .component_mul(&b.moments());
-        rbcore::polhode(&b.moments(), &l)
+        rbcore::polhode(&b.moments(), &b.angular_momentum_principal())
     }
     /// The current poke flash.
     pub fn poke_flash(&self) -> Option<PokeFlash> {

@@ -59,11 +59,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     let primary = lab.primary();
     let body = primary.sim().body();
     let moments = body.moments();
-    let l = primary
-        .sim()
-        .diagnostics()
-        .omega_principal
-        .component_mul(&moments);
+    let l = body.angular_momentum_principal();
     let m = l.norm();
     ui.strong("Momentum sphere (principal frame)");
     let legend_height = 5.0 * ui.text_style_height(&egui::TextStyle::Small) + 12.0;
