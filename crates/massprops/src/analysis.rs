@@ -3,7 +3,9 @@
 //! for users is the caller's, as a command line and a window say different things).
 
 use crate::approximations::{bounding_box_properties, point_mass_properties};
-use crate::diagnostics::{MeshDiagnostics, diagnose};
+use crate::defects::{self, Cleaned, Repairs, Shell, input_faces, nonplanar};
+use crate::diagnostics::{MeshDiagnostics, diagnose_with};
+use crate::edges::EdgeTable;
 use crate::integrals::IntegrationPath;
 use crate::properties::{MassProperties, positive};
 use crate::shell::shell_properties;
@@ -61,96 +63,181 @@ pub struct Analysis {
     pub bounding_box: MassProperties,
     /// Vertex point masses with the same mass, about their centre.
     pub point_masses: MassProperties,
-    /// Mesh diagnostics.
+    /// Mesh diagnostics, of the mesh as given.
     pub diagnostics: MeshDiagnostics,
-    /// What the user should know before trusting the numbers, in this order: open mesh,
-    /// non-manifold edges, inconsistent winding, flipped, degenerate faces, non-planar faces.
+    /// The connected shells of the mesh, in order of their first face.
+    pub shells: Vec<Shell>,
+    /// What the user should know before trusting the numbers, in the order of
+    /// [`Defect::code`]'s list.
     pub warnings: Vec<Warning>,
 }
 
-/// Something wrong with the mesh that the numbers of an [`Analysis`] depend on or hide.
-///
-/// Vertex, face and edge indices count from 0 (vertices after welding), as in
-/// [`MeshDiagnostics`]; each `examples` list holds at most
-/// [`EXAMPLES`](crate::diagnostics::EXAMPLES) items. New variants may be added, so match with a
-/// wildcard arm.
+/// Something about the mesh that the numbers of an [`Analysis`] depend on, or that was repaired
+/// to get them: what ([`Defect`]), how many, where, and how much it changes the mass.
 #[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum Warning {
-    /// The surface has holes, and the enclosed volume (so the mass and inertia) depends on where
-    /// they are. Only given when the numbers use that volume (not for the shell method, nor for
-    /// the approximations at a given mass).
-    OpenMesh {
-        /// Edges used by only one face.
-        boundary_edges: usize,
-        /// Some of them, as vertex pairs (low, high).
-        examples: Vec<(u32, u32)>,
-    },
-    /// Edges shared by more than two faces: touching or overlapping parts each count in full.
-    NonManifoldEdges {
-        /// How many such edges.
-        count: usize,
-        /// Some of them: the vertex pair and the faces sharing it (zero-based).
-        examples: Vec<((u32, u32), Vec<usize>)>,
-    },
-    /// Edges whose two faces traverse them in the same direction: some faces are wound the
-    /// other way, and the volume method counts them as negative volume.
-    InconsistentWinding {
-        /// How many such edges.
-        edges: usize,
-        /// Some neighbouring face pairs (zero-based) that wind in the same sense along their
-        /// shared edge: one face of each is flipped.
-        examples: Vec<(usize, usize)>,
-    },
-    /// The faces wind clockwise seen from outside (negative signed volume); the results are those
-    /// of the outward-wound mesh. Only given when the numbers use the enclosed volume.
-    Flipped,
-    /// Faces of (numerically) zero area, which contribute nothing.
-    DegenerateFaces {
-        /// How many such faces.
-        count: usize,
-        /// Some of their indices.
-        examples: Vec<usize>,
-    },
-    /// Polygons whose corners leave their plane; each is integrated as projected onto its
-    /// best-fit plane.
-    NonPlanarFaces {
-        /// How many such faces.
-        count: usize,
-        /// Some of their indices.
-        examples: Vec<usize>,
-    },
+pub struct Warning {
+    /// What kind of defect, with its own data.
+    pub defect: Defect,
+    /// How many: faces for the face defects (faces removed, for duplicates), edges for the edge
+    /// defects and cracks, shells for `flipped` and `nested_shell`, shell pairs for overlaps,
+    /// holes for `holes_capped`, records for `two_corner_faces`.
+    pub count: usize,
+    /// Some of the faces concerned, as zero-based indices into the mesh given to [`analyze`],
+    /// ascending, at most [`EXAMPLES`](crate::diagnostics::EXAMPLES).
+    pub faces: Vec<usize>,
+    /// The estimated relative change in mass that the defect makes, as a fraction of the mass
+    /// found (of the area for the shell method): positive when the defect adds mass. For a
+    /// defect counted as it is (overlaps, nested shells) the mass it adds; for a repaired one,
+    /// the difference between the file taken literally and the repaired result (duplicates:
+    /// what they would have added; holes: minus what the caps add; cracks: the change the weld
+    /// made). `None` when it cannot be estimated.
+    pub effect_on_mass: Option<f64>,
 }
 
 impl Warning {
-    /// A stable snake_case identifier of the variant, for machine-readable output (JSON):
-    /// `open_mesh`, `non_manifold_edges`, `inconsistent_winding`, `flipped`, `degenerate_faces`,
-    /// `non_planar_faces`.
+    /// The stable identifier of the defect, as in JSON: see [`Defect::code`].
+    pub fn code(&self) -> &'static str {
+        self.defect.code()
+    }
+}
+
+/// The kinds of defect, each with what is particular to it. New variants may be added, so match
+/// with a wildcard arm.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Defect {
+    /// The same vertex cycle more than once with the same winding: counted once.
+    DuplicateFaces,
+    /// A face together with its reverse (an internal wall, or both sides of a sheet): for the
+    /// volume both go (they cancel); for a thin shell one copy stays.
+    OppositeDuplicateFaces,
+    /// Closed shells that overlap without one holding the other: their common volume is counted
+    /// twice (the result is the sum; the effect is the estimate).
+    OverlappingShells {
+        /// Some overlapping pairs (shell indices, as in [`Analysis::shells`]).
+        pairs: Vec<(usize, usize)>,
+        /// Estimated common volume, all pairs, in the mesh's units cubed.
+        volume: f64,
+        /// One standard error of `volume`.
+        uncertainty: f64,
+        /// Pairs compared within the time budget, of `candidates` whose boxes meet: fewer means
+        /// the comparison was cut short and some overlaps may be missing.
+        compared: usize,
+        /// Pairs of closed shells whose bounding boxes meet.
+        candidates: usize,
+    },
+    /// A closed shell whose winding disagrees with its depth: wound outward inside a solid (a
+    /// cavity's wall wound the wrong way, or a part inside another), so its volume counts twice.
+    NestedShell {
+        /// Some of these shells (indices into [`Analysis::shells`]).
+        shells: Vec<usize>,
+    },
+    /// Boundary vertices a tiny gap apart (float32 rounding) were merged, closing cracks.
+    CracksClosed {
+        /// The largest distance a vertex moved, in the mesh's units.
+        largest_gap: f64,
+    },
+    /// Holes were capped by fans from their centroids; the result is the capped solid.
+    HolesCapped {
+        /// Boundary edges around the holes.
+        boundary_edges: usize,
+        /// The caps' area as a fraction of the mesh's surface.
+        cap_area_fraction: f64,
+    },
+    /// Polygons whose corners leave their plane; each is integrated projected onto its
+    /// best-fit plane, and the result depends on the triangulation by up to `uncertainty`.
+    NonplanarFaces {
+        /// How far apart the extreme fan triangulations put the mass, relative to the mass.
+        uncertainty: f64,
+    },
+    /// OBJ `f` records with two corners (segments written as faces), skipped.
+    TwoCornerFaces {
+        /// Some of their one-based file lines.
+        lines: Vec<usize>,
+    },
+    /// Edges whose two faces traverse them in the same direction: some faces are wound the other
+    /// way, and the volume method counts them as negative volume.
+    InconsistentWinding {
+        /// Some neighbouring face pairs (zero-based) that wind in the same sense along their
+        /// shared edge: one face of each is flipped.
+        face_pairs: Vec<(usize, usize)>,
+    },
+    /// Shells wound inward that enclose nothing else's cavity were turned outward (a solid has
+    /// no negative mass).
+    Flipped {
+        /// Some of these shells (indices into [`Analysis::shells`]).
+        shells: Vec<usize>,
+        /// Every shell: the mesh as a whole is wound inward (a mirrored convention).
+        whole: bool,
+    },
+    /// Faces of (numerically) zero area, which contribute nothing.
+    DegenerateFaces,
+    /// Edges shared by more than two faces that remain after duplicates are removed: shells
+    /// that touch along them (each counted in full; overlaps are reported separately).
+    NonmanifoldEdges {
+        /// Some of them: the vertex pair and the faces sharing it (zero-based).
+        edges: Vec<((u32, u32), Vec<usize>)>,
+    },
+}
+
+impl Defect {
+    /// A stable snake_case identifier, for machine-readable output: `duplicate_faces`,
+    /// `opposite_duplicate_faces`, `overlapping_shells`, `nested_shell`, `cracks_closed`,
+    /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `inconsistent_winding`,
+    /// `flipped`, `degenerate_faces`, `nonmanifold_edges`.
     pub fn code(&self) -> &'static str {
         match self {
-            Warning::OpenMesh { .. } => "open_mesh",
-            Warning::NonManifoldEdges { .. } => "non_manifold_edges",
-            Warning::InconsistentWinding { .. } => "inconsistent_winding",
-            Warning::Flipped => "flipped",
-            Warning::DegenerateFaces { .. } => "degenerate_faces",
-            Warning::NonPlanarFaces { .. } => "non_planar_faces",
+            Defect::DuplicateFaces => "duplicate_faces",
+            Defect::OppositeDuplicateFaces => "opposite_duplicate_faces",
+            Defect::OverlappingShells { .. } => "overlapping_shells",
+            Defect::NestedShell { .. } => "nested_shell",
+            Defect::CracksClosed { .. } => "cracks_closed",
+            Defect::HolesCapped { .. } => "holes_capped",
+            Defect::NonplanarFaces { .. } => "nonplanar_faces",
+            Defect::TwoCornerFaces { .. } => "two_corner_faces",
+            Defect::InconsistentWinding { .. } => "inconsistent_winding",
+            Defect::Flipped { .. } => "flipped",
+            Defect::DegenerateFaces => "degenerate_faces",
+            Defect::NonmanifoldEdges { .. } => "nonmanifold_edges",
         }
     }
 }
 
-/// Computes the chosen method's mass properties, the approximations and the diagnostics.
+/// Computes the chosen method's mass properties, the approximations and the diagnostics, with
+/// the default handling of defects ([`Repairs::default`]).
 pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analysis, MeshError> {
+    analyze_with(mesh, method, spec, &Repairs::default())
+}
+
+/// [`analyze`] with the handling of defects chosen: cracks, holes, and the time the shell
+/// comparison may take.
+pub fn analyze_with(
+    mesh: &PolyMesh,
+    method: Method,
+    spec: MassSpec,
+    repairs: &Repairs,
+) -> Result<Analysis, MeshError> {
     match spec {
         MassSpec::Density(d) => positive("density", d)?,
         MassSpec::Mass(m) => positive("mass", m)?,
     };
     check_range(mesh, method, spec)?;
-    let diagnostics = diagnose(mesh);
-    let solid = solid_properties(mesh, IntegrationPath::Auto).map_err(|e| explain(e, &diagnostics));
+    let table = EdgeTable::new(mesh);
+    let diagnostics = diagnose_with(mesh, &table);
+    // With the mass given, the approximations use no volume (nor a density found from it):
+    // they serve open meshes and sheets too, and their numbers never depend on holes.
+    let uses_volume = !matches!(
+        (method, spec),
+        (Method::Shell, _) | (Method::Points | Method::BoundingBox, MassSpec::Mass(_))
+    );
+    let cleaned = defects::clean(mesh, table, repairs, uses_volume)?;
+    let body: &PolyMesh = &cleaned.mesh;
+    let solid = solid_properties(body, IntegrationPath::Auto).map_err(|e| explain(e, &diagnostics));
     let volume = solid.as_ref().ok().map(|s| s.volume);
-    let (properties, density, flipped) = match (method, spec) {
+    let solid_flipped = solid.as_ref().is_ok_and(|s| s.flipped);
+    let (properties, density, scale) = match (method, spec) {
         (Method::Shell, _) => {
-            let (unit, area) = shell_properties(mesh, 1.0)?;
+            let (unit, area) = shell_properties(body, 1.0)?;
             let sigma = match spec {
                 MassSpec::Density(d) => d,
                 MassSpec::Mass(m) => m / area,
@@ -160,18 +247,15 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
                 MassSpec::Density(d) => d * area,
                 MassSpec::Mass(m) => m,
             };
-            let p = unit.with_mass(mass)?;
-            (p, Some(sigma), solid.as_ref().is_ok_and(|s| s.flipped))
+            (unit.with_mass(mass)?, Some(sigma), area)
         }
-        // With the mass given, the approximations use no volume (nor a density found from it):
-        // they serve open meshes and sheets too, and their numbers never depend on holes. A
-        // mesh without area is no body at all.
+        // A mesh without area is no body at all.
         (Method::Points | Method::BoundingBox, MassSpec::Mass(mass)) => {
             if diagnostics.surface_area.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return Err(MeshError::ZeroArea);
             }
-            let flipped = solid.as_ref().is_ok_and(|s| s.flipped);
-            (approximation(mesh, method, mass)?, None, flipped)
+            let p = approximation(body, method, mass)?;
+            (p, None, diagnostics.surface_area)
         }
         (Method::Volume | Method::Points | Method::BoundingBox, _) => {
             let solid: Solid = solid?;
@@ -186,21 +270,34 @@ pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analys
             }
             let p = match method {
                 Method::Volume => exact,
-                _ => approximation(mesh, method, exact.mass)?,
+                _ => approximation(body, method, exact.mass)?,
             };
-            (p, Some(density), solid.flipped)
+            (p, Some(density), solid.volume)
         }
     };
-    let warnings = warnings(&diagnostics, method, density.is_some(), flipped);
+    let flipped = if uses_volume {
+        cleaned.flipped_whole || solid_flipped
+    } else {
+        solid_flipped
+    };
+    let warnings = warnings(
+        mesh,
+        &diagnostics,
+        &cleaned,
+        uses_volume,
+        solid_flipped,
+        scale,
+    );
     Ok(Analysis {
         method,
         density,
         volume,
         flipped,
-        bounding_box: bounding_box_properties(mesh, properties.mass)?,
-        point_masses: point_mass_properties(mesh, properties.mass)?,
+        bounding_box: bounding_box_properties(body, properties.mass)?,
+        point_masses: point_mass_properties(body, properties.mass)?,
         properties,
         diagnostics,
+        shells: cleaned.shells,
         warnings,
     })
 }
@@ -281,44 +378,110 @@ fn approximation(mesh: &PolyMesh, method: Method, mass: f64) -> Result<MassPrope
     }
 }
 
-/// `used_volume`: whether the numbers depend on the enclosed volume (not for the approximations
-/// at a given mass).
-fn warnings(d: &MeshDiagnostics, method: Method, used_volume: bool, flipped: bool) -> Vec<Warning> {
-    // Holes and winding only matter to numbers that come from the enclosed volume.
-    let volume_matters = method != Method::Shell && used_volume;
-    let mut w = Vec::new();
-    if d.open_edges > 0 && volume_matters {
-        w.push(Warning::OpenMesh {
-            boundary_edges: d.open_edges,
-            examples: d.open_edge_examples.clone(),
+/// Every warning, in the order of [`Defect::code`]'s list, effects made relative to `scale` (the
+/// volume, or the area when the volume is not used).
+fn warnings(
+    mesh: &PolyMesh,
+    input: &MeshDiagnostics,
+    cleaned: &Cleaned<'_>,
+    uses_volume: bool,
+    solid_flipped: bool,
+    scale: f64,
+) -> Vec<Warning> {
+    let mut w = cleaned.warnings.clone();
+    // Edge defects as they remain after the repairs, named by the input's faces.
+    let origin = cleaned.origin.as_deref();
+    let repaired;
+    let edges = if origin.is_some() {
+        repaired = diagnose_with(&cleaned.mesh, &cleaned.table);
+        &repaired
+    } else {
+        input
+    };
+    let to_input = |f: usize| origin.map_or(f, |o| o[f] as usize);
+    if edges.nonmanifold_edges > 0 {
+        let examples: Vec<((u32, u32), Vec<usize>)> = edges
+            .nonmanifold_edge_examples
+            .iter()
+            .map(|(pair, faces)| (*pair, faces.iter().map(|&f| to_input(f)).collect()))
+            .collect();
+        let faces = examples.iter().flat_map(|e| e.1.iter().map(|&f| f as u32));
+        w.push(Warning {
+            defect: Defect::NonmanifoldEdges {
+                edges: examples.clone(),
+            },
+            count: edges.nonmanifold_edges,
+            faces: input_faces(None, faces),
+            effect_on_mass: Some(0.0),
         });
     }
-    if d.nonmanifold_edges > 0 {
-        w.push(Warning::NonManifoldEdges {
-            count: d.nonmanifold_edges,
-            examples: d.nonmanifold_edge_examples.clone(),
+    if edges.inconsistent_edges > 0 {
+        let pairs: Vec<(usize, usize)> = edges
+            .inconsistent_face_examples
+            .iter()
+            .map(|&(a, b)| (to_input(a), to_input(b)))
+            .collect();
+        let faces = pairs.iter().flat_map(|&(a, b)| [a as u32, b as u32]);
+        w.push(Warning {
+            defect: Defect::InconsistentWinding {
+                face_pairs: pairs.clone(),
+            },
+            count: edges.inconsistent_edges,
+            faces: input_faces(None, faces),
+            effect_on_mass: None,
         });
     }
-    if d.inconsistent_edges > 0 {
-        w.push(Warning::InconsistentWinding {
-            edges: d.inconsistent_edges,
-            examples: d.inconsistent_face_examples.clone(),
+    if uses_volume && solid_flipped && !cleaned.flipped_whole {
+        w.push(Warning {
+            defect: Defect::Flipped {
+                shells: Vec::new(),
+                whole: true,
+            },
+            count: cleaned.shells.len(),
+            faces: Vec::new(),
+            effect_on_mass: Some(0.0),
         });
     }
-    if flipped && volume_matters {
-        w.push(Warning::Flipped);
-    }
-    if d.degenerate_faces > 0 {
-        w.push(Warning::DegenerateFaces {
-            count: d.degenerate_faces,
-            examples: d.degenerate_face_examples.clone(),
+    if input.degenerate_faces > 0 {
+        w.push(Warning {
+            defect: Defect::DegenerateFaces,
+            count: input.degenerate_faces,
+            faces: input.degenerate_face_examples.clone(),
+            effect_on_mass: Some(0.0),
         });
     }
-    if d.nonplanar_faces > 0 {
-        w.push(Warning::NonPlanarFaces {
-            count: d.nonplanar_faces,
-            examples: d.nonplanar_face_examples.clone(),
+    if input.nonplanar_faces > 0 {
+        let spread = nonplanar::spread(mesh, mesh.reference_point(), uses_volume);
+        w.push(Warning {
+            defect: Defect::NonplanarFaces {
+                uncertainty: spread / scale,
+            },
+            count: input.nonplanar_faces,
+            faces: input.nonplanar_face_examples.clone(),
+            effect_on_mass: None,
         });
     }
+    for warning in &mut w {
+        if let Some(e) = &mut warning.effect_on_mass {
+            *e /= scale;
+        }
+    }
+    w.sort_by_key(|w| ORDER.iter().position(|&c| c == w.code()));
     w
 }
+
+/// The order warnings are listed in.
+const ORDER: [&str; 12] = [
+    "duplicate_faces",
+    "opposite_duplicate_faces",
+    "overlapping_shells",
+    "nested_shell",
+    "cracks_closed",
+    "holes_capped",
+    "nonplanar_faces",
+    "two_corner_faces",
+    "inconsistent_winding",
+    "flipped",
+    "degenerate_faces",
+    "nonmanifold_edges",
+];

@@ -1,14 +1,15 @@
 //! Mesh diagnostics, always computed beside the numbers: what a user must know to trust them.
 //!
-//! Edges are found by sorting (vertex pair, direction) records, which costs O(E log E) and no hash
-//! table: an edge used once is open (a hole), more than twice non-manifold, and twice in the same
-//! direction means the two faces wind inconsistently (one is flipped).
+//! Edges come from [`EdgeTable`](crate::edges::EdgeTable): an edge used once is open (a hole),
+//! more than twice non-manifold, and twice in the same direction means the two faces wind
+//! inconsistently (one is flipped).
 
 use nalgebra::{Point3, Vector3};
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 
 use crate::PolyMesh;
+use crate::edges::EdgeTable;
 use crate::integrals::mirtich::newell_normal;
 
 /// Relative area (to the longest edge squared) below which a face counts as degenerate.
@@ -70,6 +71,11 @@ impl MeshDiagnostics {
 
 /// Computes every diagnostic of `mesh`.
 pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
+    diagnose_with(mesh, &EdgeTable::new(mesh))
+}
+
+/// [`diagnose`] with the edges already grouped.
+pub(crate) fn diagnose_with(mesh: &PolyMesh, table: &EdgeTable) -> MeshDiagnostics {
     // Each face on its own, so the order of evaluation changes nothing: the area is summed below
     // in face order either way.
     #[cfg(feature = "parallel")]
@@ -104,7 +110,7 @@ pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
             }
         }
     }
-    let edges = edge_report(mesh);
+    let edges = edge_report(table);
     MeshDiagnostics {
         vertices: mesh.positions().len(),
         faces: mesh.face_count(),
@@ -126,7 +132,11 @@ pub fn diagnose(mesh: &PolyMesh) -> MeshDiagnostics {
 }
 
 /// Area, degeneracy and non-planarity of face `f`.
-fn face_shape(mesh: &PolyMesh, f: usize, corners: &mut Vec<Vector3<f64>>) -> (f64, bool, bool) {
+pub(crate) fn face_shape(
+    mesh: &PolyMesh,
+    f: usize,
+    corners: &mut Vec<Vector3<f64>>,
+) -> (f64, bool, bool) {
     corners.clear();
     let first = mesh
         .face_points(f)
@@ -165,29 +175,7 @@ struct EdgeReport {
     inconsistent_examples: Vec<(usize, usize)>,
 }
 
-fn edge_report(mesh: &PolyMesh) -> EdgeReport {
-    // Key: low vertex in the high 32 bits, high vertex next; then the face (so that a defect
-    // can be named) and whether it runs low → high. The face index fits in the padding the
-    // flag already took: a record stays 16 bytes.
-    let mut records: Vec<(u64, u32, bool)> =
-        Vec::with_capacity(mesh.triangle_count() + 2 * mesh.face_count());
-    for (f, face) in mesh.faces().enumerate() {
-        let f = u32::try_from(f).unwrap_or(u32::MAX);
-        let mut prev = face[face.len() - 1];
-        for &cur in face {
-            if prev != cur {
-                let (lo, hi) = (prev.min(cur), prev.max(cur));
-                records.push(((u64::from(lo) << 32) | u64::from(hi), f, prev < cur));
-            }
-            prev = cur;
-        }
-    }
-    // Within a group of equal keys only the set of faces matters (examples are sorted), so an
-    // unstable sort gives the same report.
-    #[cfg(feature = "parallel")]
-    records.par_sort_unstable_by_key(|r| r.0);
-    #[cfg(not(feature = "parallel"))]
-    records.sort_unstable_by_key(|r| r.0);
+fn edge_report(table: &EdgeTable) -> EdgeReport {
     let mut report = EdgeReport {
         edges: 0,
         open: 0,
@@ -197,11 +185,10 @@ fn edge_report(mesh: &PolyMesh) -> EdgeReport {
         nonmanifold_examples: Vec::new(),
         inconsistent_examples: Vec::new(),
     };
-    for group in records.chunk_by(|a, b| a.0 == b.0) {
+    for group in table.groups() {
         report.edges += 1;
-        let forward = group.iter().filter(|r| r.2).count();
-        let key = group[0].0;
-        let pair = ((key >> 32) as u32, key as u32);
+        let forward = group.iter().filter(|r| r.forward).count();
+        let pair = (group[0].lo, group[0].hi);
         match group.len() {
             1 => {
                 report.open += 1;
@@ -212,7 +199,7 @@ fn edge_report(mesh: &PolyMesh) -> EdgeReport {
             2 if forward != 1 => {
                 report.inconsistent += 1;
                 if report.inconsistent_examples.len() < EXAMPLES {
-                    let (a, b) = (group[0].1 as usize, group[1].1 as usize);
+                    let (a, b) = (group[0].face as usize, group[1].face as usize);
                     report.inconsistent_examples.push((a.min(b), a.max(b)));
                 }
             }
@@ -220,8 +207,7 @@ fn edge_report(mesh: &PolyMesh) -> EdgeReport {
             _ => {
                 report.nonmanifold += 1;
                 if report.nonmanifold_examples.len() < EXAMPLES {
-                    let mut faces: Vec<usize> = group.iter().map(|r| r.1 as usize).collect();
-                    faces.sort_unstable();
+                    let faces: Vec<usize> = group.iter().map(|r| r.face as usize).collect();
                     report.nonmanifold_examples.push((pair, faces));
                 }
             }

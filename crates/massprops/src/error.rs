@@ -86,6 +86,20 @@ pub enum MeshError {
         /// What would bring it into range.
         advice: &'static str,
     },
+    /// The mesh has holes and capping them was refused ([`Holes::Refuse`](crate::Holes)).
+    #[error(
+        "the mesh is open: {boundary_edges} edge(s) used by only one face, in {loops} hole(s){}; \
+         the volume it encloses is not defined (cap the holes, or use the shell method for sheets)",
+        examples(faces)
+    )]
+    OpenMesh {
+        /// Edges used by one face.
+        boundary_edges: usize,
+        /// Boundary loops (holes).
+        loops: usize,
+        /// Some faces on the holes' edges (zero-based).
+        faces: Vec<usize>,
+    },
     /// The shell method found no surface area.
     #[error("the mesh has zero surface area")]
     ZeroArea,
@@ -123,4 +137,13 @@ pub enum MeshError {
         /// The mesh problem.
         source: Box<MeshError>,
     },
+}
+
+/// ", around faces 3, 7 (counting from 0)", or nothing for no faces.
+fn examples(faces: &[usize]) -> String {
+    if faces.is_empty() {
+        return String::new();
+    }
+    let list: Vec<String> = faces.iter().map(usize::to_string).collect();
+    format!(", around faces {} (counting from 0)", list.join(", "))
 }

@@ -31,7 +31,9 @@
 
 mod analysis;
 mod approximations;
+mod defects;
 mod diagnostics;
+mod edges;
 mod error;
 pub mod integrals;
 #[cfg(feature = "io")]
@@ -43,8 +45,9 @@ pub mod shapes;
 mod shell;
 mod solid;
 
-pub use analysis::{Analysis, MassSpec, Method, Warning, analyze};
+pub use analysis::{Analysis, Defect, MassSpec, Method, Warning, analyze, analyze_with};
 pub use approximations::{bounding_box_properties, point_mass_properties};
+pub use defects::{AUTO_WELD_RATIO, Holes, Orientation, Repairs, Shell, Weld};
 pub use diagnostics::{MeshDiagnostics, diagnose};
 pub use error::MeshError;
 pub use integrals::{IntegrationPath, VolumeIntegrals, volume_integrals};

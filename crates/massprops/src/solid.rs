@@ -33,7 +33,7 @@ impl Solid {
 
 /// Relative size of |V| against the bounding-box diagonal cubed below which a mesh counts as
 /// enclosing no volume (a flat sheet integrates to round-off, ~1e-16 of diagonal³).
-const ZERO_VOLUME_RATIO: f64 = 1e-12;
+pub(crate) const ZERO_VOLUME_RATIO: f64 = 1e-12;
 
 /// Integrates the solid bounded by `mesh` by the chosen path.
 pub fn solid_properties(mesh: &PolyMesh, path: IntegrationPath) -> Result<Solid, MeshError> {

@@ -5,7 +5,7 @@ mod common;
 
 use common::{assert_mat, assert_rel, box_tensor, prism_closed_form, steiner};
 use massprops::shapes;
-use massprops::{MassSpec, Method, Warning, analyze};
+use massprops::{Defect, MassSpec, Method, Warning, analyze};
 use nalgebra::{Matrix3, Point2, Point3, Vector3};
 
 /// The book 1 × 4 × 7 centred on the origin: every method has a closed form.
@@ -168,7 +168,18 @@ fn warnings_say_what_is_wrong() {
     )
     .expect("closed");
     assert!(inside_out.flipped);
-    assert_eq!(inside_out.warnings, vec![Warning::Flipped]);
+    assert_eq!(
+        inside_out.warnings,
+        vec![Warning {
+            defect: Defect::Flipped {
+                shells: vec![0],
+                whole: true
+            },
+            count: 1,
+            faces: vec![0, 1, 2, 3, 4],
+            effect_on_mass: Some(0.0),
+        }]
+    );
     // For a shell, winding is irrelevant: no flip warning.
     let shell = analyze(
         &shapes::cube().build().flipped(),
@@ -182,15 +193,30 @@ fn warnings_say_what_is_wrong() {
     let mut open = shapes::cube();
     open.faces.remove(0);
     let r = analyze(&open.build(), Method::Points, MassSpec::Density(1.0)).expect("some volume");
-    // The cube's first face (z = 0, corners 0 1 2 3) is gone: its four edges are the boundary.
-    assert_eq!(
-        r.warnings,
-        vec![Warning::OpenMesh {
-            boundary_edges: 4,
-            examples: vec![(0, 1), (0, 3), (1, 2), (2, 3)],
-        }]
+    // The cube's first face (z = 0) is gone: one hole of four edges, capped by four triangles
+    // that fill the square exactly (1 of the 5 remaining unit faces' area). About the centre, the
+    // cap carries the pyramid from the centre to that face: a sixth of the cube.
+    assert_eq!(r.volume, Some(1.0));
+    assert_eq!(r.warnings.len(), 1, "{:?}", r.warnings);
+    let w = &r.warnings[0];
+    assert_eq!(w.code(), "holes_capped");
+    assert_eq!(w.count, 1);
+    assert_eq!(w.faces, vec![1, 2, 3, 4]);
+    let Defect::HolesCapped {
+        boundary_edges,
+        cap_area_fraction,
+    } = w.defect
+    else {
+        panic!("{w:?}")
+    };
+    assert_eq!(boundary_edges, 4);
+    assert_rel(cap_area_fraction, 0.2, 1e-15, "cap area");
+    assert_rel(
+        w.effect_on_mass.expect("known"),
+        -1.0 / 6.0,
+        1e-15,
+        "cap volume",
     );
-    assert_eq!(r.warnings[0].code(), "open_mesh");
 }
 
 #[test]

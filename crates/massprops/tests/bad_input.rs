@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use common::{assert_mat, assert_rel, box_tensor};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{
-    MassSpec, MeshError, Method, PolyMesh, Warning, analyze, diagnose, load_mesh, mass_properties,
+    Defect, MassSpec, MeshError, Method, PolyMesh, analyze, diagnose, load_mesh, mass_properties,
     parse_mesh, shell_properties, solid_properties,
 };
 use nalgebra::{Matrix3, Point3, Vector3};
@@ -87,23 +87,33 @@ fn open_mesh_counts_its_boundary_edges() {
             "top edges: {a}-{b}"
         );
     }
-    let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("some volume");
+    // Capping restores the cube exactly: the cap is four triangles filling the top.
+    let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("capped");
+    assert_eq!(a.warnings.len(), 1, "{:?}", a.warnings);
+    assert_eq!(a.warnings[0].code(), "holes_capped");
+    assert_rel(a.properties.mass, 1.0, 1e-15, "capped cube");
+    assert_mat(
+        &a.properties.inertia_com,
+        &box_tensor(1.0, 1.0, 1.0, 1.0),
+        1e-15,
+        "capped cube",
+    );
+    // Refusing names the hole.
+    let refuse = massprops::Repairs {
+        holes: massprops::Holes::Refuse,
+        ..Default::default()
+    };
+    let e = massprops::analyze_with(&mesh, Method::Volume, MassSpec::Density(1.0), &refuse)
+        .expect_err("open");
     assert_eq!(
-        a.warnings,
-        vec![Warning::OpenMesh {
-            boundary_edges: 4,
-            examples: d.open_edge_examples.clone(),
-        }]
+        e.to_string(),
+        "the mesh is open: 4 edge(s) used by only one face, in 1 hole(s), around faces 1, 2, 3, \
+         4 (counting from 0); the volume it encloses is not defined (cap the holes, or use the \
+         shell method for sheets)"
     );
-    // The shell method is meant for open meshes: no open-mesh warning there.
+    // The shell method is meant for open meshes: nothing is capped there.
     let s = analyze(&mesh, Method::Shell, MassSpec::Density(1.0)).expect("area");
-    assert!(
-        !s.warnings
-            .iter()
-            .any(|w| matches!(w, Warning::OpenMesh { .. })),
-        "{:?}",
-        s.warnings
-    );
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
     assert_rel(s.properties.mass, 5.0, 1e-15, "five unit faces");
 }
 
@@ -130,15 +140,17 @@ fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume 2");
     assert_rel(a.properties.mass, 2.0, 1e-15, "two unit boxes");
     // The edge is named with the four faces that share it, two from each box.
+    // Two shells that only touch: nothing overlaps, nothing is nested.
+    assert_eq!(a.warnings.len(), 1, "{:?}", a.warnings);
+    assert_eq!(a.warnings[0].count, 1);
     assert!(
-        a.warnings.iter().any(|w| matches!(
-            w,
-            Warning::NonManifoldEdges { count: 1, examples }
-                if examples.len() == 1 && examples[0].1.len() == 4
-        )),
+        matches!(&a.warnings[0].defect, Defect::NonmanifoldEdges { edges }
+                if edges.len() == 1 && edges[0].1.len() == 4),
         "{:?}",
         a.warnings
     );
+    assert_eq!(a.shells.len(), 2);
+    assert!(a.shells.iter().all(|s| s.closed && s.depth == Some(0)));
     assert_eq!(d.nonmanifold_edge_examples[0].1.len(), 4);
 }
 
@@ -162,10 +174,8 @@ fn one_flipped_face_gives_four_inconsistent_edges() {
         "{pairs:?}"
     );
     assert!(
-        a.warnings.iter().any(|w| matches!(
-            w,
-            Warning::InconsistentWinding { edges: 4, examples } if examples == pairs
-        )),
+        a.warnings.iter().any(|w| w.count == 4
+            && matches!(&w.defect, Defect::InconsistentWinding { face_pairs } if face_pairs == pairs)),
         "{:?}",
         a.warnings
     );
@@ -181,7 +191,14 @@ fn inverted_mesh_is_flipped_and_warned_about() {
     assert_rel(s.volume, 28.0, 1e-15, "book volume");
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(2.0)).expect("volume");
     assert!(a.flipped);
-    assert_eq!(a.warnings, vec![Warning::Flipped]);
+    assert_eq!(a.warnings.len(), 1);
+    assert_eq!(
+        a.warnings[0].defect,
+        Defect::Flipped {
+            shells: vec![0],
+            whole: true
+        }
+    );
     assert_mat(
         &a.properties.inertia_com,
         &box_tensor(56.0, 1.0, 4.0, 7.0),
@@ -204,14 +221,46 @@ fn degenerate_and_non_planar_faces_are_reported() {
     assert_eq!(d.nonplanar_face_examples, around);
     assert_eq!(d.degenerate_faces, 0);
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume");
-    assert!(
-        a.warnings.contains(&Warning::NonPlanarFaces {
-            count: 3,
-            examples: around.clone(),
-        }),
-        "{:?}",
-        a.warnings
-    );
+    let w = a
+        .warnings
+        .iter()
+        .find(|w| w.code() == "nonplanar_faces")
+        .expect("non-planar");
+    assert_eq!((w.count, &w.faces), (3, &around));
+    // Independently: each of the three quads split along either diagonal, all eight ways; the
+    // volumes span what the warning says.
+    let Defect::NonplanarFaces { uncertainty } = w.defect else {
+        panic!("{w:?}")
+    };
+    let mut volumes = Vec::new();
+    for choice in 0..8 {
+        let mut t = b.clone();
+        t.faces = b
+            .faces
+            .iter()
+            .enumerate()
+            .flat_map(|(f, q)| {
+                let k = around.iter().position(|&g| g == f);
+                let split = k.is_some_and(|k| choice & (1 << k) != 0);
+                let q: Vec<usize> = if split {
+                    vec![q[1], q[2], q[3], q[0]]
+                } else {
+                    q.clone()
+                };
+                vec![vec![q[0], q[1], q[2]], vec![q[0], q[2], q[3]]]
+            })
+            .collect();
+        volumes.push(
+            massprops::solid_properties(&t.build(), massprops::IntegrationPath::Auto)
+                .expect("volume")
+                .volume,
+        );
+    }
+    let span = volumes.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+        - volumes.iter().cloned().fold(f64::INFINITY, f64::min);
+    let volume = a.volume.expect("volume");
+    assert!(span > 1e-3, "{span}");
+    assert_rel(uncertainty * volume, span, 1e-12, "triangulation spread");
     // Its triangulation is planar by construction.
     assert_eq!(
         diagnose(&b.clone().triangulated().build()).nonplanar_faces,
@@ -228,13 +277,17 @@ fn degenerate_and_non_planar_faces_are_reported() {
     assert_eq!(d.degenerate_faces, 2);
     assert_eq!(d.degenerate_face_examples, vec![12, 13]);
     let a = analyze(&c.build(), Method::Volume, MassSpec::Density(1.0)).expect("volume");
+    let degenerate = a
+        .warnings
+        .iter()
+        .find(|w| w.defect == Defect::DegenerateFaces)
+        .expect("degenerate");
+    assert_eq!((degenerate.count, &degenerate.faces), (2, &vec![12, 13]));
+    // The two are each other's reverse: an internal wall of no area, removed.
     assert!(
-        a.warnings.contains(&Warning::DegenerateFaces {
-            count: 2,
-            examples: vec![12, 13],
-        }),
-        "{:?}",
         a.warnings
+            .iter()
+            .any(|w| w.code() == "opposite_duplicate_faces" && w.count == 2)
     );
     assert_rel(a.properties.mass, 1.0, 1e-15, "unit cube");
 }

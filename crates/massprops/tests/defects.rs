@@ -1,0 +1,329 @@
+//! The defects of real meshes, each on a case with a closed form: duplicate faces, internal
+//! walls, overlapping and nested shells, cavities, cracks, holes, separately flipped shells.
+
+mod common;
+
+use common::{assert_mat, assert_rel, box_tensor};
+use massprops::shapes::{self, MeshBuilder};
+use massprops::{
+    Analysis, Defect, Holes, MassSpec, Method, Orientation, PolyMesh, Repairs, Weld, analyze,
+    analyze_with,
+};
+use nalgebra::{Point2, Point3, Vector3};
+
+fn cuboid(size: f64, center: [f64; 3]) -> MeshBuilder {
+    shapes::cuboid(Vector3::repeat(size), Point3::from(center))
+}
+
+/// Builds with identical positions welded, as the file readers do.
+fn welded(b: &MeshBuilder) -> PolyMesh {
+    let (positions, remap) = massprops::weld_exact(&b.positions);
+    let faces: Vec<Vec<usize>> = b
+        .faces
+        .iter()
+        .map(|f| f.iter().map(|&i| remap[i] as usize).collect())
+        .collect();
+    PolyMesh::new(positions, &faces).expect("valid")
+}
+
+fn volume(mesh: &PolyMesh) -> Analysis {
+    analyze(mesh, Method::Volume, MassSpec::Density(1.0)).expect("volume")
+}
+
+fn codes(a: &Analysis) -> Vec<&'static str> {
+    a.warnings.iter().map(|w| w.code()).collect()
+}
+
+fn warning<'a>(a: &'a Analysis, code: &str) -> &'a massprops::Warning {
+    a.warnings
+        .iter()
+        .find(|w| w.code() == code)
+        .unwrap_or_else(|| panic!("no {code} in {:?}", a.warnings))
+}
+
+#[test]
+fn faces_listed_twice_count_once() {
+    // Unit cube about the origin: about its centre, each face carries a sixth of the volume.
+    for repeated in [1, 3, 6] {
+        let mut b = cuboid(1.0, [0.0; 3]);
+        let extra: Vec<Vec<usize>> = b.faces[..repeated].to_vec();
+        b.faces.extend(extra);
+        let a = volume(&b.build());
+        assert_rel(a.properties.mass, 1.0, 1e-15, "counted once");
+        assert_mat(
+            &a.properties.inertia_com,
+            &box_tensor(1.0, 1.0, 1.0, 1.0),
+            1e-15,
+            "cube",
+        );
+        assert_eq!(codes(&a), ["duplicate_faces"], "{repeated}");
+        let w = &a.warnings[0];
+        assert_eq!(w.count, repeated);
+        assert_eq!(w.faces, (6..6 + repeated.min(5)).collect::<Vec<_>>());
+        assert_rel(
+            w.effect_on_mass.expect("known"),
+            repeated as f64 / 6.0,
+            1e-14,
+            "what they would add",
+        );
+    }
+    // A whole mesh doubled, rotated copies of each cycle: twice the mass, and no false flip.
+    let mut b = cuboid(2.0, [5.0, 0.0, 0.0]);
+    let again: Vec<Vec<usize>> = b
+        .faces
+        .iter()
+        .map(|f| {
+            let mut f = f.clone();
+            f.rotate_left(1);
+            f
+        })
+        .collect();
+    b.faces.extend(again);
+    let a = volume(&b.build());
+    assert_rel(a.properties.mass, 8.0, 1e-15, "doubled cube");
+    assert_eq!(codes(&a), ["duplicate_faces"]);
+    assert_rel(
+        a.warnings[0].effect_on_mass.expect("known"),
+        1.0,
+        1e-14,
+        "2x",
+    );
+    assert!(!a.flipped);
+}
+
+#[test]
+fn an_internal_wall_between_two_boxes_goes_and_joins_them() {
+    // Two unit boxes sharing the face x = 1, each listing it (opposite windings).
+    let mut b = cuboid(1.0, [0.5, 0.5, 0.5]);
+    b.append(&cuboid(1.0, [1.5, 0.5, 0.5]));
+    let a = volume(&welded(&b));
+    assert_rel(a.properties.mass, 2.0, 1e-15, "two boxes");
+    assert_eq!(codes(&a), ["opposite_duplicate_faces"]);
+    assert_eq!(a.warnings[0].count, 2);
+    assert_eq!(a.warnings[0].effect_on_mass, Some(0.0));
+    assert_eq!(a.shells.len(), 1, "{:?}", a.shells);
+    assert!(a.shells[0].closed);
+    assert_eq!(a.shells[0].faces, 10);
+    // A thin wall keeps one copy of the shared face: 11 unit faces.
+    let s = analyze(&welded(&b), Method::Shell, MassSpec::Density(1.0)).expect("area");
+    assert_rel(s.properties.mass, 11.0, 1e-15, "one wall");
+    // Where the wall meets the outer faces, three faces share an edge (a T-joint).
+    assert_eq!(codes(&s), ["opposite_duplicate_faces", "nonmanifold_edges"]);
+    assert_rel(
+        s.warnings[0].effect_on_mass.expect("known"),
+        1.0 / 11.0,
+        1e-15,
+        "a face",
+    );
+}
+
+#[test]
+fn a_box_with_an_inward_box_inside_is_a_cavity() {
+    let mut b = cuboid(3.0, [0.0; 3]);
+    let mut inner = cuboid(1.0, [0.5, 0.2, -0.3]);
+    inner.faces.iter_mut().for_each(|f| f.reverse());
+    b.append(&inner);
+    let a = volume(&b.build());
+    assert!(a.warnings.is_empty(), "{:?}", a.warnings);
+    assert_rel(a.properties.mass, 26.0, 1e-15, "27 - 1");
+    // Closed form: the solid box minus the small one, each by the parallel-axis theorem.
+    let c = Vector3::new(0.5, 0.2, -0.3);
+    let com = -c / 26.0;
+    let shift = |m: f64, d: Vector3<f64>| {
+        (nalgebra::Matrix3::identity() * d.norm_squared() - d * d.transpose()) * m
+    };
+    let want = box_tensor(27.0, 3.0, 3.0, 3.0) + shift(27.0, -com)
+        - (box_tensor(1.0, 1.0, 1.0, 1.0) + shift(1.0, c - com));
+    assert_mat(&a.properties.inertia_com, &want, 1e-14, "hollow box");
+    let shells: Vec<(Orientation, Option<usize>)> =
+        a.shells.iter().map(|s| (s.orientation, s.depth)).collect();
+    assert_eq!(
+        shells,
+        [
+            (Orientation::Outward, Some(0)),
+            (Orientation::Inward, Some(1))
+        ]
+    );
+}
+
+#[test]
+fn an_outward_inner_wall_is_a_nested_shell_and_counts_twice() {
+    let mut b = cuboid(3.0, [0.0; 3]);
+    b.append(&cuboid(1.0, [0.5, 0.2, -0.3]));
+    let a = volume(&b.build());
+    assert_rel(a.properties.mass, 28.0, 1e-15, "sum as written");
+    assert_eq!(codes(&a), ["nested_shell"]);
+    let w = &a.warnings[0];
+    assert_eq!(w.defect, Defect::NestedShell { shells: vec![1] });
+    assert_eq!(w.faces, (6..11).collect::<Vec<_>>());
+    assert_rel(
+        w.effect_on_mass.expect("known"),
+        1.0 / 28.0,
+        1e-14,
+        "inner box",
+    );
+    assert_eq!(a.shells[1].depth, Some(1));
+}
+
+#[test]
+fn overlapping_boxes_report_the_volume_they_count_twice() {
+    // A 2 × 2 × 2 box and a diamond prism (a square turned 45°, corners (1,1) (2,0) (3,1) (2,2))
+    // of the same height: they share the triangle (1,1) (2,0) (2,2), area 1, so volume 2.
+    let mut b = cuboid(2.0, [1.0, 1.0, 1.0]);
+    let diamond = [(1.0, 1.0), (2.0, 0.0), (3.0, 1.0), (2.0, 2.0)];
+    let diamond: Vec<Point2<f64>> = diamond.iter().map(|&(x, y)| Point2::new(x, y)).collect();
+    // Counter-clockwise: (2,0) (3,1) (2,2) (1,1).
+    let ccw = [diamond[1], diamond[2], diamond[3], diamond[0]];
+    b.append(&shapes::prism(&ccw, 0.0, 2.0));
+    let a = volume(&b.build());
+    assert_rel(a.properties.mass, 8.0 + 4.0, 1e-14, "the sum");
+    assert_eq!(codes(&a), ["overlapping_shells"]);
+    let w = &a.warnings[0];
+    let Defect::OverlappingShells {
+        ref pairs,
+        volume,
+        uncertainty,
+        compared,
+        candidates,
+    } = w.defect
+    else {
+        panic!("{w:?}")
+    };
+    assert_eq!(
+        (pairs.as_slice(), compared, candidates),
+        ([(0, 1)].as_slice(), 1, 1)
+    );
+    assert!(uncertainty > 0.0 && uncertainty < 0.02, "{uncertainty}");
+    assert!(
+        (volume - 2.0).abs() < 4.0 * uncertainty,
+        "{volume} ± {uncertainty}"
+    );
+    assert_rel(
+        w.effect_on_mass.expect("known"),
+        volume / 12.0,
+        1e-15,
+        "counted twice",
+    );
+    assert_eq!(
+        a.shells.iter().map(|s| s.depth).collect::<Vec<_>>(),
+        [Some(0), Some(0)]
+    );
+}
+
+#[test]
+fn a_zero_budget_says_the_comparison_was_cut_short() {
+    let mut b = cuboid(2.0, [1.0, 1.0, 1.0]);
+    b.append(&cuboid(2.0, [2.0, 1.0, 1.0]));
+    let repairs = Repairs {
+        overlap_budget: std::time::Duration::ZERO,
+        ..Default::default()
+    };
+    let a =
+        analyze_with(&b.build(), Method::Volume, MassSpec::Density(1.0), &repairs).expect("volume");
+    let w = warning(&a, "overlapping_shells");
+    assert!(matches!(
+        w.defect,
+        Defect::OverlappingShells {
+            compared: 0,
+            candidates: 1,
+            ..
+        }
+    ));
+    assert!(a.shells.iter().all(|s| s.depth.is_none()));
+}
+
+#[test]
+fn float32_cracks_are_closed_not_called_holes() {
+    // The top face of a unit cube refers to copies of its corners moved by up to 1e-8.
+    let mut b = cuboid(1.0, [0.0; 3]);
+    let top = b.faces[1].clone();
+    let mut moved = Vec::new();
+    for (k, &i) in top.iter().enumerate() {
+        let delta = Vector3::new(1e-8, -0.5e-8, 0.7e-8) * (k as f64 + 1.0) / 4.0;
+        b.positions.push(b.positions[i] + delta);
+        moved.push(b.positions.len() - 1);
+    }
+    b.faces[1] = moved;
+    let mesh = b.build();
+    assert_eq!(massprops::diagnose(&mesh).open_edges, 8);
+    let a = volume(&mesh);
+    assert_eq!(codes(&a), ["cracks_closed"]);
+    let w = &a.warnings[0];
+    assert_eq!(w.count, 8, "boundary edges closed");
+    let Defect::CracksClosed { largest_gap } = w.defect else {
+        panic!("{w:?}")
+    };
+    let biggest = Vector3::new(1e-8, -0.5e-8, 0.7e-8).norm();
+    assert_rel(largest_gap, biggest, 1e-6, "largest move");
+    assert!(w.effect_on_mass.expect("known").abs() < 1e-7);
+    assert_rel(a.properties.mass, 1.0, 1e-7, "the cube");
+    assert!(a.shells.len() == 1 && a.shells[0].closed);
+
+    // Welding exactly leaves the seam open; the caps then close it (two loops: the top's own
+    // rim and the hole's), again with the cube's volume.
+    let exact = Repairs {
+        weld: Weld::Exact,
+        ..Default::default()
+    };
+    let a = analyze_with(&mesh, Method::Volume, MassSpec::Density(1.0), &exact).expect("capped");
+    assert_eq!(codes(&a), ["holes_capped"]);
+    assert_eq!(a.warnings[0].count, 2);
+    assert_rel(a.properties.mass, 1.0, 1e-7, "capped");
+    // A gap wider than the tolerance is a hole, not a crack.
+    let coarse = Repairs {
+        weld: Weld::Distance(1e-9),
+        ..Default::default()
+    };
+    let a = analyze_with(&mesh, Method::Volume, MassSpec::Density(1.0), &coarse).expect("capped");
+    assert_eq!(codes(&a), ["holes_capped"]);
+}
+
+#[test]
+fn a_separate_inward_box_is_turned_outward() {
+    let mut b = cuboid(1.0, [0.0; 3]);
+    let mut other = cuboid(1.0, [3.0, 0.0, 0.0]);
+    other.faces.iter_mut().for_each(|f| f.reverse());
+    b.append(&other);
+    let a = volume(&b.build());
+    assert_rel(a.properties.mass, 2.0, 1e-15, "two boxes");
+    assert_rel(a.properties.center_of_mass.x, 1.5, 1e-15, "between them");
+    assert!(!a.flipped);
+    assert_eq!(codes(&a), ["flipped"]);
+    let w = &a.warnings[0];
+    assert_eq!(
+        w.defect,
+        Defect::Flipped {
+            shells: vec![1],
+            whole: false
+        }
+    );
+    // As wound, the two would cancel: the turn added the second box twice over.
+    assert_rel(w.effect_on_mass.expect("known"), -1.0, 1e-14, "-2 x 1/2");
+}
+
+#[test]
+fn the_sample_bodies_raise_no_false_alarm() {
+    for (name, _, body) in shapes::samples() {
+        let a = volume(&body.build());
+        assert!(a.warnings.is_empty(), "{name}: {:?}", a.warnings);
+        assert!(a.shells.iter().all(|s| s.closed), "{name}");
+    }
+}
+
+#[test]
+fn refusing_holes_or_a_bad_weld_distance_is_an_error() {
+    let mut b = cuboid(1.0, [0.0; 3]);
+    b.faces.pop();
+    let refuse = Repairs {
+        holes: Holes::Refuse,
+        ..Default::default()
+    };
+    assert!(analyze_with(&b.build(), Method::Volume, MassSpec::Density(1.0), &refuse).is_err());
+    let bad = Repairs {
+        weld: Weld::Distance(-1.0),
+        ..Default::default()
+    };
+    let e = analyze_with(&b.build(), Method::Volume, MassSpec::Density(1.0), &bad)
+        .expect_err("negative");
+    assert!(e.to_string().contains("weld distance"), "{e}");
+}
