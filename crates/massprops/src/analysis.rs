@@ -203,6 +203,14 @@ impl Defect {
     }
 }
 
+impl Analysis {
+    /// Adds warnings found elsewhere (by a file reader), in the order of [`Defect::code`]'s list.
+    pub fn add_warnings(&mut self, more: impl IntoIterator<Item = Warning>) {
+        self.warnings.extend(more);
+        self.warnings.sort_by_key(|w| rank(w.code()));
+    }
+}
+
 /// Computes the chosen method's mass properties, the approximations and the diagnostics, with
 /// the default handling of defects ([`Repairs::default`]).
 pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analysis, MeshError> {
@@ -466,8 +474,13 @@ fn warnings(
             *e /= scale;
         }
     }
-    w.sort_by_key(|w| ORDER.iter().position(|&c| c == w.code()));
+    w.sort_by_key(|w| rank(w.code()));
     w
+}
+
+/// A code's place in [`ORDER`].
+fn rank(code: &str) -> Option<usize> {
+    ORDER.iter().position(|&c| c == code)
 }
 
 /// The order warnings are listed in.

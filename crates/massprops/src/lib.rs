@@ -52,7 +52,7 @@ pub use diagnostics::{MeshDiagnostics, diagnose};
 pub use error::MeshError;
 pub use integrals::{IntegrationPath, VolumeIntegrals, volume_integrals};
 #[cfg(feature = "io")]
-pub use io::{load_mesh, parse_mesh, parse_obj, parse_stl};
+pub use io::{MeshFile, load_mesh, parse_mesh, parse_obj, parse_stl};
 pub use mesh::{PolyMesh, weld_exact};
 pub use principal::{
     DEGENERACY_TOLERANCE, Degeneracy, PrincipalInertia, principal_inertia, symmetric_eigen,

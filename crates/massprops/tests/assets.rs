@@ -17,7 +17,9 @@ fn asset(name: &str) -> MassProperties {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../assets")
         .join(format!("{name}.obj"));
-    let mesh = load_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mesh = load_mesh(&path)
+        .unwrap_or_else(|e| panic!("{name}: {e}"))
+        .mesh;
     let d = diagnose(&mesh);
     assert!(
         d.is_closed() && d.is_consistently_oriented(),

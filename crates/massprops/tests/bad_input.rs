@@ -14,7 +14,7 @@ use massprops::{
 use nalgebra::{Matrix3, Point3, Vector3};
 
 fn obj(text: &str) -> Result<PolyMesh, MeshError> {
-    parse_mesh(text.as_bytes(), Path::new("part.obj"))
+    parse_mesh(text.as_bytes(), Path::new("part.obj")).map(|f| f.mesh)
 }
 
 /// The error's message, which must name the file and, where given, the line.
@@ -357,24 +357,61 @@ fn malformed_lines_are_named() {
 }
 
 #[test]
-fn faces_with_fewer_than_three_corners_name_the_line() {
-    let text = CUBE_OBJ.replacen("f 5 6 7 8", "f 5 6", 1);
-    let msg = obj_error(&text);
-    assert!(msg.contains("line 11") && msg.contains("2 corner"), "{msg}");
-    let text = CUBE_OBJ.replacen("f 5 6 7 8", "f 5", 1);
-    let msg = obj_error(&text);
-    assert!(msg.contains("line 11") && msg.contains("1 corner"), "{msg}");
-    // Point and polyline elements before the bad face do not shift the count.
+fn records_of_fewer_than_three_corners_are_skipped_and_named_by_line() {
+    let file = |text: &str| parse_mesh(text.as_bytes(), Path::new("part.obj")).expect("read");
+    let lines_of = |f: &massprops::MeshFile| match &f.warnings[..] {
+        [w] => {
+            assert_eq!(w.code(), "two_corner_faces");
+            assert_eq!(w.effect_on_mass, Some(0.0));
+            let Defect::TwoCornerFaces { lines } = &w.defect else {
+                panic!("{w:?}")
+            };
+            (w.count, lines.clone())
+        }
+        other => panic!("{other:?}"),
+    };
+    // The top (line 11) written as a segment: skipped; the five other faces remain, and the
+    // hole it leaves is capped back to the unit cube.
+    let f = file(&CUBE_OBJ.replacen("f 5 6 7 8", "f 5 6", 1));
+    assert_eq!(lines_of(&f), (1, vec![11]));
+    assert_eq!(f.mesh.face_count(), 5);
+    assert_eq!(f.face_lines, vec![10, 12, 13, 14, 15]);
+    let a = f
+        .analyze(Method::Volume, MassSpec::Density(1.0), &Default::default())
+        .expect("capped");
+    assert_rel(a.properties.mass, 1.0, 1e-15, "capped cube");
+    let codes: Vec<&str> = a.warnings.iter().map(|w| w.code()).collect();
+    assert_eq!(codes, ["holes_capped", "two_corner_faces"]);
+    // One corner too; points and polylines before them do not shift the lines.
     let text = CUBE_OBJ
         .replacen("f 1 4 3 2", "p 1\nl 1 2\nf 1 4 3 2", 1)
-        .replacen("f 5 6 7 8", "f 5 6", 1);
-    let msg = obj_error(&text);
-    assert!(msg.contains("line 13") && msg.contains("2 corner"), "{msg}");
-    let text = CUBE_OBJ
-        .replacen("f 1 4 3 2", "f 1 4 3 2\np 1 2 3", 1)
-        .replacen("f 5 6 7 8", "f 5 6", 1);
-    let msg = obj_error(&text);
-    assert!(msg.contains("line 12"), "{msg}");
+        .replacen("f 5 6 7 8", "f 5 6\nf 5", 1);
+    let f = file(&text);
+    assert_eq!(lines_of(&f), (2, vec![13, 14]));
+    assert_eq!(f.face_lines, vec![12, 15, 16, 17, 18]);
+}
+
+#[test]
+fn a_byte_order_mark_does_not_shift_the_vertices() {
+    let plain = obj(CUBE_OBJ).expect("valid");
+    let with_mark = format!("\u{feff}{CUBE_OBJ}");
+    assert_eq!(obj(&with_mark).expect("valid"), plain);
+    // Even when the first line is a vertex: it would otherwise be lost.
+    let first_vertex = CUBE_OBJ.replacen("# unit cube\n", "", 1);
+    let with_mark = format!("\u{feff}{first_vertex}");
+    assert_eq!(obj(&with_mark).expect("valid"), plain);
+    // An ASCII STL with a mark is still ASCII.
+    let stl = format!(
+        "\u{feff}{}",
+        ascii_stl(&shapes::cube().triangulated(), "solid cube")
+    );
+    let f = parse_mesh(stl.as_bytes(), Path::new("cube.stl")).expect("ascii");
+    assert_eq!(f.mesh.face_count(), 12);
+    // Each face's line is its facet's: the second line, then every seventh.
+    assert_eq!(
+        f.face_lines,
+        (0..12).map(|t| 2 + 7 * t).collect::<Vec<u32>>()
+    );
 }
 
 #[test]
@@ -503,7 +540,7 @@ fn stl_binary_and_ascii_give_the_obj_result() {
     for (what, bytes) in files {
         let path = scratch("box.stl");
         std::fs::write(&path, &bytes).expect("temp dir is writable");
-        let loaded = load_mesh(&path);
+        let loaded = load_mesh(&path).map(|f| f.mesh);
         std::fs::remove_file(&path).expect("remove the scratch file");
         let m = loaded.unwrap_or_else(|e| panic!("{what}: {e}"));
         let d = diagnose(&m);
@@ -540,6 +577,11 @@ fn stl_binary_and_ascii_give_the_obj_result() {
         text.contains(&format!("triangles 5 to {}", n - 1)),
         "{text}"
     );
+    // The same with a header that starts with "solid", as many CAD exporters write.
+    let mut solid_header = binary_stl(&b, b"solid exported by CAD");
+    solid_header.truncate(84 + 50 * 5 + 7);
+    let cut = parse_mesh(&solid_header, Path::new("cut.stl")).expect_err("truncated");
+    assert!(cut.to_string().contains("cut short"), "{cut}");
     let stub = parse_mesh(&short[..40], Path::new("stub.stl")).expect_err("no header");
     assert!(stub.to_string().contains("84-byte header"), "{stub}");
     assert!(matches!(e, MeshError::Malformed { .. }), "{e:?}");

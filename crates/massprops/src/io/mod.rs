@@ -10,10 +10,41 @@ use std::path::Path;
 pub use obj::parse_obj;
 pub use stl::parse_stl;
 
-use crate::{MeshError, PolyMesh};
+use crate::{Analysis, MassSpec, MeshError, Method, PolyMesh, Repairs, Warning, analyze_with};
+
+/// A mesh read from a file, with what a report needs to name its faces.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshFile {
+    /// The mesh, positions welded where identical.
+    pub mesh: PolyMesh,
+    /// The one-based file line of each face (OBJ: its `f` record; ASCII STL: its `facet`); empty
+    /// for binary STL, whose face `t` is simply the file's triangle `t`.
+    pub face_lines: Vec<u32>,
+    /// What the reader skipped (OBJ records of fewer than three corners).
+    pub warnings: Vec<Warning>,
+}
+
+impl MeshFile {
+    /// [`analyze_with`] on the mesh, with the reader's warnings added in their place.
+    pub fn analyze(
+        &self,
+        method: Method,
+        spec: MassSpec,
+        repairs: &Repairs,
+    ) -> Result<Analysis, MeshError> {
+        let mut analysis = analyze_with(&self.mesh, method, spec, repairs)?;
+        analysis.add_warnings(self.warnings.iter().cloned());
+        Ok(analysis)
+    }
+
+    /// The file line of face `f`, when the format has lines.
+    pub fn line_of(&self, f: usize) -> Option<usize> {
+        self.face_lines.get(f).map(|&l| l as usize)
+    }
+}
 
 /// Loads an `.obj` or `.stl` file (chosen by extension, case-insensitive) as one body.
-pub fn load_mesh(path: &Path) -> Result<PolyMesh, MeshError> {
+pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
     let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
         path: path.to_path_buf(),
         source,
@@ -22,7 +53,7 @@ pub fn load_mesh(path: &Path) -> Result<PolyMesh, MeshError> {
 }
 
 /// Parses a file already in memory; `path` names it in messages and gives the format.
-pub fn parse_mesh(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
+pub fn parse_mesh(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())

@@ -8,12 +8,18 @@ use std::path::Path;
 
 use nalgebra::Point3;
 
+use super::MeshFile;
+use crate::diagnostics::EXAMPLES;
 use crate::mesh::weld_exact;
-use crate::{MeshError, PolyMesh};
+use crate::{Defect, MeshError, PolyMesh, Warning};
 
-/// Parses OBJ text: all objects and groups form one body; `l` and `p` elements are skipped;
-/// positions are welded exactly.
-pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
+/// Parses OBJ text: all objects and groups form one body; `l` and `p` elements are skipped, and
+/// so are `f` records of fewer than three corners (reported as [`Defect::TwoCornerFaces`]);
+/// positions are welded exactly. A UTF-8 byte-order mark at the start is ignored.
+pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
+    // Windows exporters often start with a byte-order mark, which tobj would read as part of the
+    // first keyword, losing the first vertex and shifting every face index by one.
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     let text = std::str::from_utf8(bytes).map_err(|e| MeshError::Malformed {
         path: path.to_path_buf(),
         line: Some(line_of_offset(bytes, e.valid_up_to())),
@@ -38,9 +44,10 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
     let mut indices = Vec::new();
     let mut arities = Vec::new();
     // tobj returns `f` and `l` lines alike as elements (an `l` of three or more points looks like
-    // a face), in file order; `p` lines it drops. Their lines are only looked up when needed.
-    let mut lines: Option<Vec<(usize, bool)>> = None;
-    let polylines = has_polylines(text);
+    // a face), in file order; `p` lines it drops.
+    let lines = element_lines(text);
+    let mut face_lines = Vec::new();
+    let mut two_corner = Vec::new();
     let mut element = 0usize;
     for model in &models {
         let m = &model.mesh;
@@ -61,33 +68,36 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
         for arity in model_arities {
             let face = &m.indices[start..start + arity];
             start += arity;
-            let this = element;
+            let (line, polyline) = lines.get(element).copied().unwrap_or((0, false));
             element += 1;
-            if arity < 3 || polylines {
-                let lines = lines.get_or_insert_with(|| element_lines(text));
-                match lines.get(this) {
-                    // Polylines bound no volume: not part of the body.
-                    Some(&(_, true)) => continue,
-                    Some(&(line, false)) if arity < 3 => {
-                        return Err(MeshError::InFile {
-                            path: path.to_path_buf(),
-                            line: Some(line),
-                            source: Box::new(MeshError::TooFewCorners {
-                                face: arities.len(),
-                                corners: arity,
-                            }),
-                        });
-                    }
-                    _ => {}
-                }
+            // Polylines bound no volume: not part of the body.
+            if polyline {
+                continue;
+            }
+            // Segments written as faces (`f 1 2`): no area, skipped and reported.
+            if arity < 3 {
+                two_corner.push(line);
+                continue;
             }
             indices.extend(face.iter().map(|&i| i + base));
             arities.push(arity);
+            face_lines.push(line as u32);
         }
     }
     let (welded, remap) = weld_exact(&positions);
     let indices = indices.into_iter().map(|i| remap[i as usize]).collect();
-    PolyMesh::from_flat(welded, indices, &arities).map_err(|e| {
+    let mut warnings = Vec::new();
+    if !two_corner.is_empty() {
+        warnings.push(Warning {
+            count: two_corner.len(),
+            defect: Defect::TwoCornerFaces {
+                lines: two_corner.iter().copied().take(EXAMPLES).collect(),
+            },
+            faces: Vec::new(),
+            effect_on_mass: Some(0.0),
+        });
+    }
+    let mesh = PolyMesh::from_flat(welded, indices, &arities).map_err(|e| {
         let (line, source) = match e {
             // The welded index means nothing to the user: name the file's vertex and its line.
             MeshError::NonFiniteVertex { value, .. } => {
@@ -110,6 +120,11 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
             line,
             source: Box::new(source),
         }
+    })?;
+    Ok(MeshFile {
+        mesh,
+        face_lines,
+        warnings,
     })
 }
 
@@ -154,12 +169,6 @@ fn keywords(text: &str) -> impl Iterator<Item = (usize, &str)> {
     text.lines()
         .enumerate()
         .filter_map(|(i, line)| line.split_whitespace().next().map(|kw| (i + 1, kw)))
-}
-
-/// Whether the file has any polyline (`l`) element. The substring test skips the line scan for
-/// the usual file, which has none.
-fn has_polylines(text: &str) -> bool {
-    (text.contains("l ") || text.contains("l\t")) && keywords(text).any(|(_, kw)| kw == "l")
 }
 
 /// For each element tobj returns (each `f` or `l` line, in order): its one-based line number and

@@ -5,17 +5,27 @@ use std::path::Path;
 
 use nalgebra::Point3;
 
+use super::MeshFile;
 use crate::mesh::weld_exact;
 use crate::{MeshError, PolyMesh};
 
-/// Parses STL bytes into a welded triangle mesh.
-pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
+/// Parses STL bytes into a welded triangle mesh. Face `t` is the file's triangle `t`; for ASCII
+/// files, each face's line is that of its `facet`.
+pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let malformed = |message: String| MeshError::Malformed {
         path: path.to_path_buf(),
         line: None,
         message,
     };
-    check_binary_length(bytes).map_err(malformed)?;
+    let ascii = is_ascii(bytes);
+    // A byte-order mark before `solid` (Windows editors) would hide the ASCII keyword.
+    let bytes = match bytes.strip_prefix(b"\xEF\xBB\xBF") {
+        Some(rest) if ascii => rest,
+        _ => bytes,
+    };
+    if !ascii {
+        check_binary_length(bytes).map_err(malformed)?;
+    }
     let patched = patch_for_detection(bytes);
     let mut cursor = Cursor::new(patched.as_deref().unwrap_or(bytes));
     let reader = stl_io::create_stl_reader(&mut cursor)
@@ -47,24 +57,50 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<PolyMesh, MeshError> {
     }
     let (positions, remap) = weld_exact(&corners);
     let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
-    PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
+    let mesh = PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
         path: path.to_path_buf(),
         line: None,
         source: Box::new(e),
+    })?;
+    let face_lines = if ascii {
+        facet_lines(bytes)
+    } else {
+        Vec::new()
+    };
+    Ok(MeshFile {
+        mesh,
+        face_lines,
+        warnings: Vec::new(),
     })
 }
 
-/// A binary STL (one that does not open with `solid`) is an 84-byte header, whose last four bytes
+/// Whether the bytes are an ASCII STL: they open with `solid` (after an optional byte-order
+/// mark) and their first kilobyte holds no NUL byte. A binary STL's 80-byte header may also
+/// open with `solid` (many CAD exporters write one), but its triangle count and attribute bytes
+/// are all but certain to hold a zero byte.
+fn is_ascii(bytes: &[u8]) -> bool {
+    let text = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    text.starts_with(b"solid") && !text[..text.len().min(1024)].contains(&0)
+}
+
+/// The one-based line of each `facet` keyword, in order.
+fn facet_lines(bytes: &[u8]) -> Vec<u32> {
+    bytes
+        .split(|&b| b == b'\n')
+        .enumerate()
+        .filter(|(_, line)| line.trim_ascii_start().starts_with(b"facet"))
+        .map(|(i, _)| (i + 1) as u32)
+        .collect()
+}
+
+/// A binary STL is an 84-byte header, whose last four bytes
 /// count the triangles, then 50 bytes a triangle. A file cut short (an interrupted download or
 /// copy) is named as such, with how much is missing, rather than as an I/O error mid-triangle.
 fn check_binary_length(bytes: &[u8]) -> Result<(), String> {
-    if bytes.starts_with(b"solid") {
-        return Ok(());
-    }
     let Some(count) = bytes.get(80..84) else {
         return Err(format!(
-            "the file is cut short: {} bytes, less than a binary STL's 84-byte header (and it does \
-             not start with \"solid\" as an ASCII STL does)",
+            "the file is cut short: {} bytes, less than a binary STL's 84-byte header (and it is \
+             not ASCII STL text, which starts with \"solid\")",
             bytes.len()
         ));
     };
