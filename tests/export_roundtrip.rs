@@ -689,15 +689,42 @@ fn output_file_frames_and_unphysical_bodies() {
     let out = run(&["export", b.file.path(), "--format", "urdf", "--mass", "-1"]);
     assert_eq!(out.status.code(), Some(2));
 
-    // A unit cube plus a small inside-out cube far away: negative mass out there makes two
-    // moments negative. Refused with exit code 3 and an explanation.
+    // A unit cube plus a small inside-out cube far away: once negative mass out there (two
+    // moments negative); now the separate inward cube is turned outward, with a warning.
     let mut mesh = shapes::cube();
     let mut hole = shapes::cuboid(Vector3::repeat(0.5), Point3::new(3.0, 0.0, 0.0));
     for f in &mut hole.faces {
         f.reverse();
     }
     mesh.append(&hole);
-    let bad = TempFile::new("bad.obj", shapes::to_obj("bad", "bad", &mesh).as_bytes());
+    let turned = TempFile::new(
+        "turned.obj",
+        shapes::to_obj("turned", "turned", &mesh).as_bytes(),
+    );
+    let out = run(&[
+        "export",
+        turned.path(),
+        "--format",
+        "mjcf",
+        "--density",
+        "1",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("turned outward"), "{stderr}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("mass=\"1.125\""), "{stdout}");
+
+    // A 1 × 0.2 × 0.2 bar whose two end faces are wound the wrong way within the one shell:
+    // a negative principal moment. Refused with exit code 3 and an explanation.
+    let mut bar = shapes::cuboid(Vector3::new(1.0, 0.2, 0.2), Point3::origin());
+    for f in &mut bar.faces {
+        let x: Vec<f64> = f.iter().map(|&i| bar.positions[i].x).collect();
+        if x.iter().all(|&v| v == x[0]) {
+            f.reverse();
+        }
+    }
+    let bad = TempFile::new("bad.obj", shapes::to_obj("bad", "bad", &bar).as_bytes());
     let out = run(&["export", bad.path(), "--format", "mjcf"]);
     assert_eq!(out.status.code(), Some(3));
     let stderr = String::from_utf8_lossy(&out.stderr);

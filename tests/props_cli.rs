@@ -51,7 +51,7 @@ fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
     ] {
         assert!(j.get(key).is_some(), "missing {key}");
     }
-    assert_eq!(j["schema_version"], 2);
+    assert_eq!(j["schema_version"], 3);
     assert_eq!(j["method"], "volume");
     // Two boxes: crossbar 0.08 × 0.012 × 0.012 centred at y = 0.006, stem 0.012 × 0.05 × 0.012
     // centred at y = −0.025.
@@ -271,13 +271,36 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
     let j = props_json(&[file.path()]);
     assert_eq!(j["mesh"]["closed"], false);
     assert_eq!(j["mesh"]["open_edges"], 4);
-    assert_eq!(j["warnings"][0]["code"], "open_mesh");
-    assert_eq!(j["warnings"][0]["boundary_edges"], 4);
-    assert!(
-        j["warnings"][0]["message"]
-            .as_str()
-            .is_some_and(|w| w.contains("open"))
+    // Capped: the unit cube again, and the warning says the cap holds a sixth of it (the
+    // pyramid from the centre), names the faces around the hole with their lines.
+    assert!(close(f(&j["volume"]), 1.0, 1e-15));
+    let w = &j["warnings"][0];
+    assert_eq!(w["code"], "holes_capped");
+    assert_eq!(
+        (w["count"].as_u64(), w["boundary_edges"].as_u64()),
+        (Some(1), Some(4))
     );
+    assert!(close(f(&w["effect_on_mass"]), -1.0 / 6.0, 1e-15), "{w}");
+    assert!(close(f(&w["cap_area_fraction"]), 0.2, 1e-15), "{w}");
+    assert_eq!(w["faces"], serde_json::json!([1, 2, 3, 4]));
+    assert_eq!(w["face_lines"], serde_json::json!([10, 11, 12, 13]));
+    let message = w["message"].as_str().expect("text");
+    assert!(
+        message.contains("1 (line 10)") && message.contains("+17 %"),
+        "{message}"
+    );
+    assert_eq!(j["shells"][0]["closed"], false);
+    assert_eq!(j["shells"][0]["depth"], 0);
+    // Refused on request, naming the hole; a bad --weld is a usage error.
+    let out = run(&["props", file.path(), "--holes", "refuse"]);
+    assert_eq!(out.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("1 hole(s), around faces 1, 2, 3, 4"),
+        "{stderr}"
+    );
+    let out = run(&["props", file.path(), "--weld", "tight"]);
+    assert_eq!(out.status.code(), Some(2));
 
     // The same cube closed but wound inwards: same numbers, flipped and a warning.
     let inward = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
@@ -300,15 +323,43 @@ f 1 4 3 2\nf 5 6 2 1\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\n";
         .iter()
         .find(|w| w["code"] == "inconsistent_winding")
         .expect("the winding warning");
-    assert_eq!(w["edges"], 4);
-    let pairs = w["examples"].as_array().expect("face pairs");
+    assert_eq!(w["count"], 4);
+    let pairs = w["face_pairs"].as_array().expect("face pairs");
     assert_eq!(pairs.len(), 4);
     for p in pairs {
         let (a, b) = (p[0].as_u64(), p[1].as_u64());
         assert!((a == Some(1)) != (b == Some(1)), "{p}");
     }
     let message = w["message"].as_str().expect("text");
-    assert!(message.contains("faces 0 and 1"), "{message}");
+    assert!(
+        message.contains("faces 0 (line 9) and 1 (line 10)"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_duplicated_face_counts_once_and_the_json_says_what_it_would_have_added() {
+    let cube = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
+    let file = TempFile::new("doubled-top.obj", cube);
+    let j = props_json(&[file.path()]);
+    assert!(close(f(&j["mass"]), 1.0, 1e-15));
+    assert_eq!(j["warnings"].as_array().map(Vec::len), Some(1));
+    let w = &j["warnings"][0];
+    assert_eq!(w["code"], "duplicate_faces");
+    assert_eq!(
+        (w["count"].as_u64(), &w["faces"]),
+        (Some(1), &serde_json::json!([6]))
+    );
+    assert_eq!(w["face_lines"], serde_json::json!([15]));
+    // About the cube's centre the top face carries the pyramid of a sixth of the volume.
+    assert!(close(f(&w["effect_on_mass"]), 1.0 / 6.0, 1e-15), "{w}");
+    assert_eq!(
+        j["shells"],
+        serde_json::json!([{
+            "faces": 6, "closed": true, "volume": 1.0, "orientation": "outward", "depth": 0
+        }])
+    );
 }
 
 #[test]

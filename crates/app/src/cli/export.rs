@@ -6,6 +6,7 @@ use clap::Args;
 use massprops::{MassSpec, Method};
 
 use super::error::{CliError, positive};
+use super::repair::RepairArgs;
 use crate::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, Material, UpAxis,
     density_per_cubic_unit, export,
@@ -42,6 +43,9 @@ pub struct ExportArgs {
     /// Write to FILE instead of standard output.
     #[arg(long, short)]
     pub output: Option<PathBuf>,
+    /// How cracks and holes in the mesh are handled.
+    #[command(flatten)]
+    pub repair: RepairArgs,
 }
 
 /// Runs `export`.
@@ -61,8 +65,10 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
         )),
     };
     let file = args.file.display();
-    let mesh = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
-    let analysis = massprops::analyze(&mesh, Method::Volume, spec)
+    let repairs = args.repair.repairs(1.0)?;
+    let loaded = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
+    let analysis = loaded
+        .analyze(Method::Volume, spec, &repairs)
         .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
     // Mass given: make it exact (density = m / V, then m = ρV, can miss by an ulp).
     let properties = match spec {
@@ -73,7 +79,10 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
         MassSpec::Density(_) => analysis.properties,
     };
     for w in &analysis.warnings {
-        eprintln!("warning: {file}: {}", super::report::warning_text(w));
+        eprintln!(
+            "warning: {file}: {}",
+            super::report::warning_text(w, &loaded.face_lines)
+        );
     }
     let options = ExportOptions {
         format: args.format,

@@ -5,6 +5,7 @@
 pub mod error;
 pub mod export;
 pub mod props;
+pub mod repair;
 pub mod report;
 pub mod simulate;
 

@@ -7,6 +7,7 @@ use clap::{Args, ValueEnum};
 use massprops::{MassSpec, Method};
 
 use super::error::{CliError, positive};
+use super::repair::RepairArgs;
 use super::report;
 
 /// Mass-distribution method, as named on the command line.
@@ -56,6 +57,9 @@ pub struct PropsArgs {
     /// Print the time spent reading and computing to stderr.
     #[arg(long)]
     pub timings: bool,
+    /// How cracks and holes in the mesh are handled.
+    #[command(flatten)]
+    pub repair: RepairArgs,
 }
 
 /// Runs `props`.
@@ -66,35 +70,41 @@ pub fn run(args: &PropsArgs) -> Result<(), CliError> {
         (Some(d), None) => MassSpec::Density(positive("--density", d)?),
         (None, None) => MassSpec::Density(1.0),
     };
+    let repairs = args.repair.repairs(args.scale)?;
     let start = Instant::now();
-    let mut mesh = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
+    let mut loaded =
+        massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
     let parsed = Instant::now();
     if args.scale != 1.0 {
-        mesh = mesh
+        loaded.mesh = loaded
+            .mesh
             .map_positions(|p| p * args.scale)
             .map_err(|e| CliError::Input(format!("{}: {e}", args.file.display())))?;
     }
+    let mesh = &loaded.mesh;
     let scaled = Instant::now();
     // Timed alone only on request: `analyze` integrates again below, with the diagnostics.
     let integration = args.timings.then(|| {
-        let _ = massprops::solid_properties(&mesh, massprops::IntegrationPath::Auto);
+        let _ = massprops::solid_properties(mesh, massprops::IntegrationPath::Auto);
         scaled.elapsed()
     });
     let analyzed = Instant::now();
-    let analysis = massprops::analyze(&mesh, args.method.into(), spec)
+    let analysis = loaded
+        .analyze(args.method.into(), spec, &repairs)
         .map_err(|e| CliError::Input(format!("{}: {e}", args.file.display())))?;
     let computed = Instant::now();
     let file = args.file.display().to_string();
+    let lines = &loaded.face_lines;
     if args.json {
-        println!("{}", report::json(&file, args.scale, &analysis));
+        println!("{}", report::json(&file, args.scale, &analysis, lines));
     } else {
-        print!("{}", report::table(&file, args.scale, &analysis));
+        print!("{}", report::table(&file, args.scale, &analysis, lines));
     }
     if let Some(integration) = integration {
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
         eprintln!(
             "timings ({} triangles): read+parse+weld {:.1} ms, volume integration {:.1} ms, \
-             full analysis (integration, diagnostics, approximations) {:.1} ms",
+             full analysis (integration, diagnostics, defects, approximations) {:.1} ms",
             mesh.triangle_count(),
             ms(parsed - start),
             ms(integration),

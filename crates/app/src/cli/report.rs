@@ -2,7 +2,9 @@
 
 use std::fmt::Write as _;
 
-use massprops::{Analysis, Comparison, Degeneracy, MassProperties, Method, Warning};
+use massprops::{
+    Analysis, Comparison, Defect, Degeneracy, MassProperties, Method, Orientation, Warning,
+};
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde_json::{Value, json};
 
@@ -10,7 +12,10 @@ use crate::export::TENSOR_CONVENTION;
 
 /// Version of the JSON schema printed by `props --json`; bumped on any incompatible change.
 /// 2: each warning is an object `{code, message, …its data}` instead of a sentence.
-pub const SCHEMA_VERSION: u32 = 2;
+/// 3: each warning has `count`, `faces` (and `face_lines`) and `effect_on_mass`; the codes are
+/// those of real-mesh defects (`open_mesh` became `holes_capped`; `non_manifold_edges` and
+/// `non_planar_faces` lost their inner underscore); `shells` lists the connected shells.
+pub const SCHEMA_VERSION: u32 = 3;
 
 fn rows(m: &Matrix3<f64>) -> Value {
     json!([
@@ -53,8 +58,8 @@ fn approximation_json(approx: &MassProperties, exact: &MassProperties) -> Value 
     })
 }
 
-/// The `props --json` object.
-pub fn json(file: &str, scale: f64, a: &Analysis) -> Value {
+/// The `props --json` object; `lines[f]` is face f's line in the file (empty when it has none).
+pub fn json(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> Value {
     let p = &a.properties;
     let d = &a.diagnostics;
     let (lo, hi) = d.bounding_box;
@@ -106,54 +111,121 @@ pub fn json(file: &str, scale: f64, a: &Analysis) -> Value {
             "nonplanar_faces": d.nonplanar_faces,
             "flipped": a.flipped,
         },
-        "warnings": a.warnings.iter().map(warning_json).collect::<Vec<_>>(),
+        "shells": shells_json(a),
+        "warnings": a.warnings.iter().map(|w| warning_json(w, lines)).collect::<Vec<_>>(),
     })
 }
 
-/// The command line's wording of a massprops warning (indices count from 0, as everywhere).
-pub fn warning_text(w: &Warning) -> String {
-    match w {
-        Warning::OpenMesh {
-            boundary_edges,
-            examples,
+/// The command line's wording of a massprops warning. Faces count from 0, as everywhere; where
+/// the file has lines (`lines[f]` is face f's), each example face names its line too.
+pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
+    let faces = faces_text(&w.faces, lines);
+    let effect = w.effect_on_mass.map(percent).unwrap_or_default();
+    let count = w.count;
+    match &w.defect {
+        Defect::DuplicateFaces => format!(
+            "{count} duplicate face(s) (the same corners, wound the same way, as another face; \
+             {faces}): each is counted once; counted twice they would have added {effect} to \
+             the mass"
+        ),
+        Defect::OppositeDuplicateFaces => format!(
+            "{count} face(s) listed together with their reverse (internal walls; {faces}): they \
+             enclose nothing, so a solid leaves both out and a thin shell keeps one copy"
+        ),
+        Defect::OverlappingShells {
+            pairs,
+            volume,
+            uncertainty,
+            compared,
+            candidates,
         } => {
-            let examples: Vec<String> = examples.iter().map(|(a, b)| format!("{a}-{b}")).collect();
-            format!(
-                "the mesh is open: {boundary_edges} boundary edge(s) (e.g. between vertices {}, \
-                 counting from 0); a solid's volume is not defined by an open surface and these \
-                 numbers depend on where the holes are. Close the mesh, or use --method shell for \
-                 a sheet",
-                examples.join(", ")
-            )
+            let mut text = if pairs.is_empty() {
+                String::from("no overlapping closed shells were found")
+            } else {
+                let u = w
+                    .effect_on_mass
+                    .filter(|&e| e != 0.0)
+                    .map(|e| percent((e * uncertainty / volume).abs()))
+                    .unwrap_or_default();
+                format!(
+                    "{count} pair(s) of closed shells overlap (shells {}; {faces}): their common \
+                     volume, {} ± {} (one standard error, mesh units cubed), is counted twice, \
+                     adding {effect} ± {u} to the mass; the numbers are the sum of the shells",
+                    shell_pairs(pairs),
+                    significant(*volume, 3),
+                    significant(*uncertainty, 2),
+                )
+            };
+            if compared < candidates {
+                let _ = write!(
+                    text,
+                    " (only {compared} of the {candidates} pairs of shells whose boxes meet were \
+                     compared within the time budget)"
+                );
+            }
+            text
         }
-        Warning::NonManifoldEdges { count, examples } => format!(
-            "{count} non-manifold edge(s) (shared by more than two faces; e.g. {}, counting from \
-             0): touching or overlapping parts are each counted in full, so overlapping volume \
-             counts twice",
-            edge_faces(examples)
+        Defect::NestedShell { shells } => format!(
+            "{count} closed shell(s) wound outward inside another solid (shell {}; {faces}): each \
+             is counted as solid again, adding {effect} to the mass; if it is meant as a cavity, \
+             reverse its faces (it would then remove as much)",
+            join(shells)
         ),
-        Warning::InconsistentWinding { edges, examples } => format!(
-            "{edges} edge(s) where neighbouring faces wind in opposite senses (e.g. faces {}, \
-             counting from 0: one of each pair is flipped); the volume method counts flipped \
-             faces as negative volume",
-            face_pairs(examples)
+        Defect::CracksClosed { largest_gap } => format!(
+            "{count} open edge(s) closed by merging vertices at most {} apart (float32 rounding \
+             in the file; {faces}): the mass changed by {effect}",
+            significant(*largest_gap, 3)
         ),
-        Warning::Flipped => "the faces wind clockwise seen from outside (negative signed \
-                             volume): the result was flipped to that of the outward-wound mesh"
+        Defect::HolesCapped {
+            boundary_edges,
+            cap_area_fraction,
+        } => format!(
+            "{count} hole(s) ({boundary_edges} open edges; {faces}) capped by fans from their \
+             centres: the caps are {} of the surface and add {} to the mass (how much the result \
+             depends on how the holes are closed)",
+            percent(*cap_area_fraction),
+            w.effect_on_mass.map(|e| percent(-e)).unwrap_or_default()
+        ),
+        Defect::NonplanarFaces { uncertainty } => format!(
+            "{count} non-planar polygon(s) ({faces}), each integrated projected onto its best-fit \
+             plane: triangulating them otherwise would change the mass by up to {}",
+            percent(*uncertainty)
+        ),
+        Defect::TwoCornerFaces { lines } => format!(
+            "{count} `f` record(s) of fewer than three corners skipped (line {}): segments bound \
+             no volume",
+            join(lines)
+        ),
+        Defect::InconsistentWinding { face_pairs } => format!(
+            "{count} edge(s) where neighbouring faces wind in opposite senses (faces {}; one of \
+             each pair is flipped): the volume method counts flipped faces as negative volume",
+            face_pairs_text(face_pairs, lines)
+        ),
+        Defect::Flipped { whole: true, .. } => "the faces wind clockwise seen from outside \
+             (negative signed volume): the results are those of the outward-wound mesh"
             .to_owned(),
-        Warning::DegenerateFaces { count, examples } => format!(
-            "{count} degenerate face(s) of zero area (e.g. face {}, counting from 0); they \
-             contribute nothing",
-            join(examples)
+        Defect::Flipped { shells, .. } => format!(
+            "{count} shell(s) wound inward and inside no other (shell {}; {faces}) were turned \
+             outward: counted as wound they would have changed the mass by {effect}",
+            join(shells)
         ),
-        Warning::NonPlanarFaces { count, examples } => format!(
-            "{count} non-planar polygon(s) (e.g. face {}, counting from 0); each is integrated as \
-             the polygon projected onto its best-fit plane",
-            join(examples)
+        Defect::DegenerateFaces => {
+            format!("{count} face(s) of zero area ({faces}): they contribute nothing")
+        }
+        Defect::NonmanifoldEdges { edges } => format!(
+            "{count} non-manifold edge(s) (shared by more than two faces; e.g. {}): the shells \
+             that meet there are each counted in full, and any overlap is reported separately",
+            edge_faces(edges, lines)
         ),
         // massprops may add warnings; their code still names them.
-        other => format!("{} (see the massprops documentation)", other.code()),
+        _ => format!("{} (see the massprops documentation)", w.code()),
     }
+}
+
+/// A relative change as a signed percentage to two significant digits: "+9.4 %", "-1.2e-7 %".
+fn percent(x: f64) -> String {
+    let sign = if x > 0.0 { "+" } else { "" };
+    format!("{sign}{} %", significant(x * 100.0, 2))
 }
 
 /// Indices as "1, 4, 9".
@@ -164,57 +236,131 @@ fn join(v: &[usize]) -> String {
         .join(", ")
 }
 
-/// Non-manifold edges as "edge 3-7 (faces 1, 4, 9)".
-fn edge_faces(examples: &[((u32, u32), Vec<usize>)]) -> String {
-    examples
-        .iter()
-        .map(|((a, b), faces)| format!("edge {a}-{b} (faces {})", join(faces)))
-        .collect::<Vec<_>>()
-        .join(", ")
+/// One face as "12" or "12 (line 40)".
+fn face_text(f: usize, lines: &[u32]) -> String {
+    match lines.get(f) {
+        Some(line) => format!("{f} (line {line})"),
+        None => f.to_string(),
+    }
 }
 
-/// Face pairs as "4 and 9, 12 and 13".
-fn face_pairs(examples: &[(usize, usize)]) -> String {
-    examples
+/// "e.g. faces 12 (line 40), 13 (line 41), counting from 0", or "faces not named".
+fn faces_text(faces: &[usize], lines: &[u32]) -> String {
+    if faces.is_empty() {
+        return "no face of the file".to_owned();
+    }
+    let list: Vec<String> = faces.iter().map(|&f| face_text(f, lines)).collect();
+    format!("e.g. faces {}, counting from 0", list.join(", "))
+}
+
+/// Shell pairs as "0 and 1, 2 and 5".
+fn shell_pairs(pairs: &[(usize, usize)]) -> String {
+    pairs
         .iter()
         .map(|(a, b)| format!("{a} and {b}"))
         .collect::<Vec<_>>()
         .join(", ")
 }
 
-/// A warning in JSON: `{"code", "message", …}` plus the variant's data under the names of its
-/// fields (vertex pairs as two-element arrays).
-fn warning_json(w: &Warning) -> Value {
-    let mut object = json!({ "code": w.code(), "message": warning_text(w) });
-    let data = match w {
-        Warning::OpenMesh {
+/// Non-manifold edges as "edge 3-7 (faces 1, 4 (line 9))".
+fn edge_faces(examples: &[((u32, u32), Vec<usize>)], lines: &[u32]) -> String {
+    examples
+        .iter()
+        .map(|((a, b), faces)| {
+            let faces: Vec<String> = faces.iter().map(|&f| face_text(f, lines)).collect();
+            format!("edge {a}-{b} (faces {})", faces.join(", "))
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Face pairs as "4 and 9, 12 and 13", with lines where known.
+fn face_pairs_text(examples: &[(usize, usize)], lines: &[u32]) -> String {
+    examples
+        .iter()
+        .map(|&(a, b)| format!("{} and {}", face_text(a, lines), face_text(b, lines)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A warning in JSON: `{code, message, count, faces, effect_on_mass}`, `face_lines` where the
+/// file has lines, and the defect's own data.
+fn warning_json(w: &Warning, lines: &[u32]) -> Value {
+    let mut object = json!({
+        "code": w.code(),
+        "message": warning_text(w, lines),
+        "count": w.count,
+        "faces": w.faces,
+        "effect_on_mass": w.effect_on_mass,
+    });
+    if !lines.is_empty() {
+        object["face_lines"] = json!(
+            w.faces
+                .iter()
+                .map(|&f| lines.get(f).copied())
+                .collect::<Vec<_>>()
+        );
+    }
+    let data = match &w.defect {
+        Defect::OverlappingShells {
+            pairs,
+            volume,
+            uncertainty,
+            compared,
+            candidates,
+        } => json!({
+            "pairs": pairs.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
+            "overlap_volume": volume,
+            "uncertainty": uncertainty,
+            "compared": compared,
+            "candidates": candidates,
+        }),
+        Defect::NestedShell { shells } => json!({ "shells": shells }),
+        Defect::CracksClosed { largest_gap } => json!({ "largest_gap": largest_gap }),
+        Defect::HolesCapped {
             boundary_edges,
-            examples,
+            cap_area_fraction,
         } => json!({
             "boundary_edges": boundary_edges,
-            "examples": examples.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
+            "cap_area_fraction": cap_area_fraction,
         }),
-        Warning::NonManifoldEdges { count, examples } => json!({
-            "count": count,
-            "examples": examples
+        Defect::NonplanarFaces { uncertainty } => json!({ "uncertainty": uncertainty }),
+        Defect::TwoCornerFaces { lines } => json!({ "lines": lines }),
+        Defect::InconsistentWinding { face_pairs } => json!({
+            "face_pairs": face_pairs.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
+        }),
+        Defect::Flipped { shells, whole } => json!({ "shells": shells, "whole": whole }),
+        Defect::NonmanifoldEdges { edges } => json!({
+            "edges": edges
                 .iter()
                 .map(|((a, b), faces)| json!({ "edge": [a, b], "faces": faces }))
                 .collect::<Vec<_>>(),
         }),
-        Warning::InconsistentWinding { edges, examples } => json!({
-            "edges": edges,
-            "examples": examples.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
-        }),
-        Warning::DegenerateFaces { count, examples }
-        | Warning::NonPlanarFaces { count, examples } => {
-            json!({ "count": count, "examples": examples })
-        }
         _ => json!({}),
     };
     if let (Some(object), Value::Object(data)) = (object.as_object_mut(), data) {
         object.extend(data);
     }
     object
+}
+
+/// The shells in JSON.
+fn shells_json(a: &Analysis) -> Value {
+    json!(
+        a.shells
+            .iter()
+            .map(|s| json!({
+                "faces": s.faces,
+                "closed": s.closed,
+                "volume": s.volume,
+                "orientation": match s.orientation {
+                    Orientation::Outward => "outward",
+                    Orientation::Inward => "inward",
+                },
+                "depth": s.depth,
+            }))
+            .collect::<Vec<_>>()
+    )
 }
 
 /// Significant digits of the human table (JSON keeps every digit).
@@ -307,7 +453,7 @@ fn comparison_line(out: &mut String, name: &str, c: &Comparison, approx: &MassPr
 }
 
 /// The human-readable `props` table.
-pub fn table(file: &str, scale: f64, a: &Analysis) -> String {
+pub fn table(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> String {
     let p = &a.properties;
     let d = &a.diagnostics;
     let mut s = String::new();
@@ -410,15 +556,50 @@ pub fn table(file: &str, scale: f64, a: &Analysis) -> String {
         d.degenerate_faces,
         d.nonplanar_faces
     );
+    shell_lines(&mut s, a);
     if a.warnings.is_empty() {
         let _ = writeln!(s, "\nNo warnings.");
     } else {
         let _ = writeln!(s, "\nWarnings:");
         for w in &a.warnings {
-            let _ = writeln!(s, "  - {}", warning_text(w));
+            let _ = writeln!(s, "  - {}", warning_text(w, lines));
         }
     }
     s
+}
+
+/// How many shells the table lists one by one.
+const TABLE_SHELLS: usize = 8;
+
+/// "Shells: 2" and a line for each of the first few.
+fn shell_lines(s: &mut String, a: &Analysis) {
+    let _ = writeln!(s, "  shells {}", a.shells.len());
+    if a.shells.len() < 2 {
+        return;
+    }
+    for (i, shell) in a.shells.iter().take(TABLE_SHELLS).enumerate() {
+        let depth = shell
+            .depth
+            .map_or_else(|| "depth not known".to_owned(), |d| format!("depth {d}"));
+        let _ = writeln!(
+            s,
+            "    shell {i}: {} faces, {}, {}, {depth}, volume {}",
+            shell.faces,
+            if shell.closed {
+                "closed"
+            } else {
+                "open (capped)"
+            },
+            match shell.orientation {
+                Orientation::Outward => "outward",
+                Orientation::Inward => "inward",
+            },
+            significant(shell.volume, TABLE_DIGITS)
+        );
+    }
+    if a.shells.len() > TABLE_SHELLS {
+        let _ = writeln!(s, "    … and {} more", a.shells.len() - TABLE_SHELLS);
+    }
 }
 
 #[cfg(test)]

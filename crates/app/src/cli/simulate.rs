@@ -101,8 +101,23 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
     if let Some(path) = &args.mesh {
         let density = positive("--density", args.density.unwrap_or(1.0))?;
         let input = |e: massprops::MeshError| CliError::Input(format!("{}: {e}", path.display()));
-        let mesh = massprops::load_mesh(path).map_err(input)?;
-        let mut props = massprops::mass_properties(&mesh, density).map_err(input)?;
+        // The body `props` reports for the same file: its defects handled the same way.
+        let file = massprops::load_mesh(path).map_err(input)?;
+        let analysis = file
+            .analyze(
+                massprops::Method::Volume,
+                massprops::MassSpec::Density(density),
+                &massprops::Repairs::default(),
+            )
+            .map_err(input)?;
+        for w in &analysis.warnings {
+            eprintln!(
+                "warning: {}: {}",
+                path.display(),
+                super::report::warning_text(w, &file.face_lines)
+            );
+        }
+        let mut props = analysis.properties;
         if let Some(m) = args.mass {
             props = props.with_mass(m).map_err(input)?;
         }

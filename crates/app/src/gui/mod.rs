@@ -237,8 +237,13 @@ impl LabApp {
                         panels::sphere::show(ui, &self.lab, &mut self.panels);
                     });
             }
-            self.view
-                .show(ui, &self.lab, self.scene.as_ref(), &mut commands);
+            self.view.show(
+                ui,
+                &self.lab,
+                self.scene.as_ref(),
+                self.panels.selected_warning,
+                &mut commands,
+            );
         });
         if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
             ctx.debug_painter().text(

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::thread;
 
-use massprops::{Analysis, MassSpec, Method, PolyMesh};
+use massprops::{Analysis, MassSpec, MeshFile, Method, PolyMesh, Repairs};
 
 use super::geometry::TriMesh;
 use super::picking::Bvh;
@@ -65,17 +65,34 @@ pub struct LoadedBody {
     pub sphere: (nalgebra::Point3<f64>, f64),
     /// Exact, bounding-box and point-mass properties at density 1, plus diagnostics and warnings.
     pub analysis: Analysis,
+    /// The file line of each face (empty when the format has none), for the warnings' words.
+    pub face_lines: Vec<u32>,
+    /// For each warning of `analysis`, its example faces: (face index, corner vertices of
+    /// `mesh`), for highlighting.
+    pub warning_faces: Vec<Vec<(usize, Vec<u32>)>>,
 }
 
 impl LoadedBody {
-    /// Analyses `poly`.
+    /// Analyses a mesh read from a file (its defects handled as massprops does by default).
     ///
     /// # Errors
-    /// The mesh encloses no volume (open, inconsistently wound) or is otherwise unusable; the
+    /// The mesh encloses no volume even with its holes capped, or is otherwise unusable; the
     /// message names the cause and `name`.
-    pub fn new(name: &str, poly: &PolyMesh) -> Result<Self, String> {
-        let analysis = massprops::analyze(poly, Method::Volume, MassSpec::Density(1.0))
+    pub fn new(name: &str, file: &MeshFile) -> Result<Self, String> {
+        let analysis = file
+            .analyze(Method::Volume, MassSpec::Density(1.0), &Repairs::default())
             .map_err(|e| format!("{name}: {e}"))?;
+        let poly = &file.mesh;
+        let warning_faces = analysis
+            .warnings
+            .iter()
+            .map(|w| {
+                w.faces
+                    .iter()
+                    .map(|&f| (f, poly.face(f).to_vec()))
+                    .collect()
+            })
+            .collect();
         let mesh = TriMesh::from_poly(poly);
         let bvh = Bvh::build(&mesh);
         Ok(Self {
@@ -84,7 +101,19 @@ impl LoadedBody {
             mesh,
             bvh,
             analysis,
+            face_lines: file.face_lines.clone(),
+            warning_faces,
         })
+    }
+
+    /// [`LoadedBody::new`] for a mesh built in code (no file, no lines).
+    pub fn built(name: &str, mesh: PolyMesh) -> Result<Self, String> {
+        let file = MeshFile {
+            mesh,
+            face_lines: Vec::new(),
+            warnings: Vec::new(),
+        };
+        Self::new(name, &file)
     }
 
     /// A built-in sample by label.
@@ -96,14 +125,14 @@ impl LoadedBody {
             .iter()
             .find(|(l, ..)| *l == label)
             .ok_or_else(|| format!("no sample called '{label}'"))?;
-        let poly = massprops::parse_mesh(text.as_bytes(), Path::new(file))
+        let file = massprops::parse_mesh(text.as_bytes(), Path::new(file))
             .map_err(|e| format!("{label}: {e}"))?;
-        Self::new(label, &poly)
+        Self::new(label, &file)
     }
 
     /// The default body: the T-handle.
     pub fn t_handle() -> Result<Self, String> {
-        Self::new("T-handle", &massprops::shapes::t_handle().build())
+        Self::built("T-handle", massprops::shapes::t_handle().build())
     }
 }
 
@@ -192,10 +221,10 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
         progress("reading", bytes.len() as f32 / total as f32);
     }
     progress("parsing", 0.0);
-    let poly = massprops::parse_mesh(&bytes, path).map_err(|e| e.to_string())?;
+    let file = massprops::parse_mesh(&bytes, path).map_err(|e| e.to_string())?;
     drop(bytes);
     progress("mass properties and picking index", 0.0);
-    LoadedBody::new(&name, &poly).map_err(|e| format!("{}: {e}", path.display()))
+    LoadedBody::new(&name, &file).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 #[cfg(test)]

@@ -6,6 +6,7 @@ use super::dialogs::DialogPurpose;
 use crate::lab::{Command, Lab};
 
 pub mod compare;
+pub mod diagnostics;
 pub mod help;
 pub mod plots;
 pub mod side;
@@ -39,6 +40,9 @@ pub struct PanelState {
     pub record_stop: bool,
     /// Seconds left of the running recording (set by the app each frame).
     pub recording: Option<f64>,
+    /// The mesh warning whose faces the 3D view highlights (an index into the primary body's
+    /// warnings).
+    pub selected_warning: Option<usize>,
 }
 
 impl Default for PanelState {
@@ -56,6 +60,7 @@ impl Default for PanelState {
             record_request: false,
             record_stop: false,
             recording: None,
+            selected_warning: None,
         }
     }
 }

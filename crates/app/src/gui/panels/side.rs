@@ -31,7 +31,7 @@ pub fn show(
         motion_section(ui, lab, commands, s);
         super::compare::show(ui, lab, s, state, commands);
         interaction_section(ui, lab, s);
-        diagnostics_section(ui, lab);
+        super::diagnostics::show(ui, lab, state);
         ui.separator();
         if ui.button("Reset settings").clicked() {
             commands.push(Command::ResetSettings);
@@ -431,42 +431,6 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
             let f = primary.string_max_force(lab.settings());
             ui.small(format!("F max = {f:.4e} N"));
         });
-}
-
-fn diagnostics_section(ui: &mut egui::Ui, lab: &Lab) {
-    let a = &lab.primary().body().analysis;
-    egui::CollapsingHeader::new(if a.warnings.is_empty() {
-        "Mesh diagnostics".to_owned()
-    } else {
-        format!("Mesh diagnostics ({} warnings)", a.warnings.len())
-    })
-    .default_open(!a.warnings.is_empty())
-    .show(ui, |ui| {
-        let d = &a.diagnostics;
-        ui.label(format!(
-            "{} vertices, {} faces ({} triangles), {} edges",
-            d.vertices, d.faces, d.triangles, d.edges
-        ));
-        ui.label(format!(
-            "open edges {}, non-manifold {}, inconsistent {}, degenerate faces {}, non-planar {}",
-            d.open_edges,
-            d.nonmanifold_edges,
-            d.inconsistent_edges,
-            d.degenerate_faces,
-            d.nonplanar_faces
-        ));
-        if let Some(v) = a.volume {
-            ui.label(format!(
-                "volume {v:.5e} m³ (unscaled), area {:.5e} m²",
-                d.surface_area
-            ));
-        }
-        // `Flipped` is among the warnings, so it is said once.
-        for w in &a.warnings {
-            let text = crate::gui::warnings::warning_text(w);
-            ui.add(egui::Label::new(RichText::new(text).color(Color32::YELLOW)).wrap());
-        }
-    });
 }
 
 #[cfg(test)]

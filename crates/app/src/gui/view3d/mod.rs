@@ -107,6 +107,7 @@ impl View3d {
         ui: &mut egui::Ui,
         lab: &Lab,
         scene: Option<&Arc<Mutex<Scene>>>,
+        highlight: Option<usize>,
         commands: &mut Vec<Command>,
     ) {
         let shown = (
@@ -162,7 +163,7 @@ impl View3d {
                 );
             }
         }
-        self.paint_overlay(ui, rect, lab);
+        self.paint_overlay(ui, rect, lab, highlight);
         let mut hint = HINT.to_owned();
         if lab.settings().view.wireframe
             && lab.primary().body().mesh.edges.len() > WIREFRAME_MAX_EDGES
@@ -280,8 +281,8 @@ impl View3d {
         }
     }
 
-    fn paint_overlay(&self, ui: &egui::Ui, rect: egui::Rect, lab: &Lab) {
-        let overlay = Overlay::build(lab, Instant::now());
+    fn paint_overlay(&self, ui: &egui::Ui, rect: egui::Rect, lab: &Lab, highlight: Option<usize>) {
+        let overlay = Overlay::build(lab, Instant::now(), highlight);
         let painter = ui.painter_at(rect);
         let size = convert::size(rect.size());
         let project = |p: &Point3<f64>| {

@@ -68,6 +68,7 @@ const FORCE_COLOR: Color32 = Color32::from_rgb(255, 110, 110);
 const GUIDE_COLOR: Color32 = Color32::from_rgb(200, 200, 200);
 const EQUIVALENT_COLOR: Color32 = Color32::from_rgb(80, 220, 230);
 const EXACT_COM_COLOR: Color32 = Color32::from_rgb(120, 220, 255);
+const HIGHLIGHT_COLOR: Color32 = Color32::from_rgb(255, 60, 200);
 
 impl Overlay {
     fn line(&mut self, a: Point3<f64>, b: Point3<f64>, color: Color32, width: f32) {
@@ -107,8 +108,8 @@ impl Overlay {
     }
 
     /// The overlay for the lab's current state: every layer of [`LAYERS`] in order, over the
-    /// primary specimen.
-    pub fn build(lab: &Lab, now: Instant) -> Self {
+    /// primary specimen; `highlight` is the mesh warning whose faces are outlined.
+    pub fn build(lab: &Lab, now: Instant, highlight: Option<usize>) -> Self {
         let specimen = lab.primary();
         let body = specimen.sim().body();
         let ctx = Context {
@@ -119,6 +120,7 @@ impl Overlay {
             com: body.position(),
             radius: specimen.bounding_sphere().1,
             now,
+            highlight,
         };
         let mut o = Overlay::default();
         for layer in LAYERS {
@@ -140,6 +142,8 @@ struct Context<'a> {
     /// Bounding-sphere radius of the scaled body: the length scale of guides and arrows.
     radius: f64,
     now: Instant,
+    /// The mesh warning whose faces are outlined.
+    highlight: Option<usize>,
 }
 
 impl Context<'_> {
@@ -166,7 +170,7 @@ impl Context<'_> {
 type Layer = fn(&mut Overlay, &Context<'_>);
 
 /// The layers, bottom first.
-const LAYERS: [Layer; 10] = [
+const LAYERS: [Layer; 11] = [
     wireframe,
     bounding_box,
     principal_axes,
@@ -177,7 +181,36 @@ const LAYERS: [Layer; 10] = [
     l_arrow,
     poke,
     string,
+    highlighted_faces,
 ];
+
+/// The example faces of the selected mesh warning: outlined, with a dot and their number, drawn
+/// over everything (they may be small or hidden behind other faces).
+fn highlighted_faces(o: &mut Overlay, c: &Context<'_>) {
+    let body = c.specimen.body();
+    let Some(faces) = c.highlight.and_then(|i| body.warning_faces.get(i)) else {
+        return;
+    };
+    let positions = &body.mesh.positions;
+    for (f, corners) in faces {
+        let world: Vec<Point3<f64>> = corners
+            .iter()
+            .map(|&v| c.placement.to_world(&positions[v as usize]))
+            .collect();
+        for (k, &a) in world.iter().enumerate() {
+            o.line(a, world[(k + 1) % world.len()], HIGHLIGHT_COLOR, 3.0);
+        }
+        let centre =
+            Point3::from(world.iter().map(|p| p.coords).sum::<Vector3<f64>>() / world.len() as f64);
+        o.markers.push((centre, HIGHLIGHT_COLOR));
+        o.labels.push(Label {
+            at: centre,
+            text: format!("face {f}"),
+            color: HIGHLIGHT_COLOR,
+            align: Align2::LEFT_BOTTOM,
+        });
+    }
+}
 
 fn wireframe(o: &mut Overlay, c: &Context<'_>) {
     let mesh = &c.specimen.body().mesh;
@@ -518,7 +551,7 @@ mod tests {
         settings.view.poinsot = true;
         lab.apply(Command::Settings(Box::new(settings)));
         lab.advance_for(6.0);
-        let o = Overlay::build(&lab, Instant::now());
+        let o = Overlay::build(&lab, Instant::now(), None);
         let body = lab.primary().sim().body();
         let n = body.angular_momentum().normalize();
         let &(tip, _) = o
@@ -568,7 +601,7 @@ mod tests {
             ..ViewSettings::default()
         };
         lab.apply(Command::Settings(Box::new(settings)));
-        let o = Overlay::build(&lab, Instant::now());
+        let o = Overlay::build(&lab, Instant::now(), None);
         let com = lab.primary().sim().body().position();
         // The book is a 1 × 4 × 7 box: its equivalent box has half-diagonal √(0.25+4+12.25).
         let box_edges = o

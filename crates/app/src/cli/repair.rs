@@ -1,0 +1,57 @@
+//! `--weld` and `--holes`: how `props` and `export` handle cracks and holes in a mesh (the
+//! command line's face of `massprops::Repairs`).
+
+use clap::{Args, ValueEnum};
+use massprops::{Holes, Repairs, Weld};
+
+use super::error::CliError;
+
+/// What to do with the holes that remain after cracks are closed.
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum HolesArg {
+    /// Close each hole with a fan of triangles from its centre; the output says how much the
+    /// caps add.
+    Cap,
+    /// Refuse an open mesh (exit code 3, naming the holes).
+    Refuse,
+}
+
+/// Mesh repair options shared by `props` and `export`.
+#[derive(Args, Debug)]
+pub struct RepairArgs {
+    /// Which vertices on open edges are merged to close cracks: `exact` (identical coordinates
+    /// only), `auto` (within 1e-6 of the bounding-box diagonal: float32 rounding), or a distance
+    /// in the mesh's units (before --scale).
+    #[arg(long, default_value = "auto", value_name = "exact|auto|DIST")]
+    pub weld: String,
+    /// What to do with holes (for the volume and for approximations at a given density).
+    #[arg(long, value_enum, default_value_t = HolesArg::Cap)]
+    pub holes: HolesArg,
+}
+
+impl RepairArgs {
+    /// The options for massprops; `scale` converts a weld distance to the scaled mesh.
+    pub fn repairs(&self, scale: f64) -> Result<Repairs, CliError> {
+        let weld = match self.weld.as_str() {
+            "exact" => Weld::Exact,
+            "auto" => Weld::Auto,
+            text => match text.parse::<f64>() {
+                Ok(d) if d.is_finite() && d > 0.0 => Weld::Distance(d * scale),
+                _ => {
+                    return Err(CliError::Usage(format!(
+                        "--weld takes exact, auto or a positive distance, not {text:?}"
+                    )));
+                }
+            },
+        };
+        let holes = match self.holes {
+            HolesArg::Cap => Holes::Cap,
+            HolesArg::Refuse => Holes::Refuse,
+        };
+        Ok(Repairs {
+            weld,
+            holes,
+            ..Repairs::default()
+        })
+    }
+}

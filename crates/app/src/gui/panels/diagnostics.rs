@@ -1,0 +1,76 @@
+//! The Mesh diagnostics section: what the mesh is made of (faces, edges, shells) and each warning
+//! with its effect on the mass; clicking a warning highlights its faces in the 3D view.
+
+use egui::{Color32, RichText};
+use massprops::Orientation;
+
+use super::PanelState;
+use crate::gui::warnings;
+use crate::lab::Lab;
+
+/// Shows the section for the primary specimen's body.
+pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
+    let body = lab.primary().body();
+    let a = &body.analysis;
+    if state
+        .selected_warning
+        .is_some_and(|i| i >= a.warnings.len())
+    {
+        state.selected_warning = None;
+    }
+    egui::CollapsingHeader::new(if a.warnings.is_empty() {
+        "Mesh diagnostics".to_owned()
+    } else {
+        format!("Mesh diagnostics ({} warnings)", a.warnings.len())
+    })
+    .default_open(!a.warnings.is_empty())
+    .show(ui, |ui| {
+        let d = &a.diagnostics;
+        ui.label(format!(
+            "{} vertices, {} faces ({} triangles), {} edges",
+            d.vertices, d.faces, d.triangles, d.edges
+        ));
+        ui.label(shells_line(a));
+        if let Some(v) = a.volume {
+            ui.label(format!(
+                "volume {v:.5e} m³ (unscaled), area {:.5e} m²",
+                d.surface_area
+            ));
+        }
+        if a.warnings.is_empty() {
+            ui.label("No defects found: the numbers are exact for this mesh.");
+            return;
+        }
+        ui.small("Click a warning to highlight its faces.");
+        for (i, w) in a.warnings.iter().enumerate() {
+            let selected = state.selected_warning == Some(i);
+            let mut title = warnings::title(w);
+            if let Some(effect) = warnings::effect(w) {
+                title = format!("{title}: {effect}");
+            }
+            let text = RichText::new(title).color(Color32::YELLOW).strong();
+            if ui.selectable_label(selected, text).clicked() {
+                state.selected_warning = if selected { None } else { Some(i) };
+            }
+            ui.add(egui::Label::new(warnings::warning_text(w, &body.face_lines)).wrap());
+        }
+    });
+}
+
+/// "2 shells: 1 solid, 1 cavity" and the like.
+fn shells_line(a: &massprops::Analysis) -> String {
+    let closed: Vec<&massprops::Shell> = a.shells.iter().filter(|s| s.closed).collect();
+    let cavities = closed
+        .iter()
+        .filter(|s| s.orientation == Orientation::Inward && s.depth.is_some_and(|d| d % 2 == 1))
+        .count();
+    let open = a.shells.len() - closed.len();
+    let mut parts = vec![format!("{} closed", closed.len())];
+    if cavities > 0 {
+        parts.push(format!("{cavities} of them cavities"));
+    }
+    if open > 0 {
+        parts.push(format!("{open} open (capped)"));
+    }
+    format!("{} shell(s): {}", a.shells.len(), parts.join(", "))
+}
