@@ -9,13 +9,18 @@ use std::collections::HashMap;
 use nalgebra::Point3;
 
 use super::{Builder, Cleaned, UnionFind, face_volume, input_faces};
+use crate::MeshError;
 use crate::analysis::{Defect, Warning};
 
 /// Merges boundary vertices within `tolerance` and reports what that closed.
-pub(super) fn close(work: &mut Cleaned<'_>, tolerance: f64, reference: Point3<f64>) {
+pub(super) fn close(
+    work: &mut Cleaned<'_>,
+    tolerance: f64,
+    reference: Point3<f64>,
+) -> Result<(), MeshError> {
     let open_before = work.table.groups().filter(|g| g.len() == 1).count();
     if open_before == 0 || tolerance <= 0.0 {
-        return;
+        return Ok(());
     }
     let mesh = &work.mesh;
     let positions = mesh.positions();
@@ -59,7 +64,7 @@ pub(super) fn close(work: &mut Cleaned<'_>, tolerance: f64, reference: Point3<f6
         }
     }
     if !merged_any {
-        return;
+        return Ok(());
     }
     let mut largest_gap: f64 = 0.0;
     for &v in &boundary {
@@ -94,8 +99,19 @@ pub(super) fn close(work: &mut Cleaned<'_>, tolerance: f64, reference: Point3<f6
         }
     }
     let faces = input_faces(work.origin.as_deref(), changed.iter().copied());
+    if builder.is_empty() {
+        let (lo, hi) = work.mesh.bounding_box();
+        return Err(MeshError::ZeroVolume {
+            volume: 0.0,
+            diagonal: (hi - lo).norm(),
+            cause: format!(
+                "closing its cracks (merging open-edge vertices up to {tolerance:e} apart) \
+                 collapses every face: the weld distance is larger than the mesh's details"
+            ),
+        });
+    }
     let positions = positions.to_vec();
-    builder.finish_into(work, positions);
+    builder.finish_into(work, positions)?;
     let open_after = work.table.groups().filter(|g| g.len() == 1).count();
     work.warnings.push(Warning {
         defect: Defect::CracksClosed { largest_gap },
@@ -103,6 +119,7 @@ pub(super) fn close(work: &mut Cleaned<'_>, tolerance: f64, reference: Point3<f6
         faces,
         effect_on_mass: Some(effect),
     });
+    Ok(())
 }
 
 /// [`face_volume`] of a face not (yet) in a mesh.

@@ -116,7 +116,9 @@ pub(super) fn remove(
         return false;
     }
     let positions = mesh.positions().to_vec();
-    builder.finish_into(work, positions);
+    if builder.finish_into(work, positions).is_err() {
+        return false;
+    }
     work.warnings.extend(warnings);
     true
 }

@@ -74,7 +74,7 @@ pub(super) fn cap(
         work.origin.as_deref(),
         loops.iter().flatten().map(|&s| sides[s].1),
     );
-    builder.finish_into(work, positions);
+    builder.finish_into(work, positions)?;
     work.warnings.push(Warning {
         defect: Defect::HolesCapped {
             boundary_edges: capped_sides,

@@ -126,7 +126,7 @@ pub(crate) fn clean<'a>(
     };
     let reference = mesh.reference_point();
     if uses_volume && let Some(tolerance) = weld_tolerance(mesh, repairs.weld)? {
-        cracks::close(&mut work, tolerance, reference);
+        cracks::close(&mut work, tolerance, reference)?;
     }
     let mut parts = shells::split(&work.mesh, &work.table);
     if duplicates::remove(&mut work, &parts, reference, uses_volume) {
@@ -147,7 +147,7 @@ pub(crate) fn clean<'a>(
     };
     work.shells = shells::describe(&work, &parts, &volumes, &relations);
     if uses_volume {
-        orient(&mut work, &parts, &volumes, &solids, &relations);
+        orient(&mut work, &parts, &volumes, &solids, &relations)?;
     }
     Ok(work)
 }
@@ -172,7 +172,7 @@ fn orient(
     volumes: &[f64],
     solids: &[bool],
     relations: &overlap::Relations,
-) {
+) -> Result<(), MeshError> {
     let mut flip = vec![false; parts.len()];
     for s in 0..parts.len() {
         if solids[s] {
@@ -216,7 +216,8 @@ fn orient(
                 builder.push(face, f as u32);
             }
         }
-        builder.finish_into(work, work.mesh.positions().to_vec());
+        let positions = work.mesh.positions().to_vec();
+        builder.finish_into(work, positions)?;
     }
     let mut nested = Vec::new();
     let mut added = 0.0;
@@ -248,6 +249,7 @@ fn orient(
         w.faces = input_faces(work.origin.as_deref(), w.faces.iter().map(|&f| f as u32));
         work.warnings.push(w);
     }
+    Ok(())
 }
 
 /// Up to [`EXAMPLES`] input faces (ascending, without caps) for faces of the working mesh.
@@ -292,8 +294,13 @@ impl Builder {
         self.arities.is_empty()
     }
 
-    /// Replaces the working mesh, its origins and its edges by the faces built.
-    pub fn finish_into(self, work: &mut Cleaned<'_>, positions: Vec<Point3<f64>>) {
+    /// Replaces the working mesh, its origins and its edges by the faces built. Fails only when
+    /// no face is left (a weld that collapses every face).
+    pub fn finish_into(
+        self,
+        work: &mut Cleaned<'_>,
+        positions: Vec<Point3<f64>>,
+    ) -> Result<(), MeshError> {
         let composed = self
             .origin
             .iter()
@@ -303,14 +310,11 @@ impl Builder {
                 (None, o) => o,
             })
             .collect();
-        // The faces are the old ones rearranged (every index in range, every coordinate finite)
-        // and caps of three corners, so the mesh is valid; a mesh left without faces is not
-        // reachable, as a repair never removes every face of a non-empty mesh.
-        let mesh = PolyMesh::from_flat(positions, self.indices, &self.arities)
-            .expect("a repaired mesh is built from a valid one");
+        let mesh = PolyMesh::from_flat(positions, self.indices, &self.arities)?;
         work.table = EdgeTable::new(&mesh);
         work.mesh = Cow::Owned(mesh);
         work.origin = Some(composed);
+        Ok(())
     }
 }
 
