@@ -3,8 +3,8 @@
 //! for users is the caller's, as a command line and a window say different things).
 
 use crate::approximations::{bounding_box_properties, point_mass_properties};
-use crate::defects::{self, Cleaned, Repairs, Shell, input_faces, nonplanar};
-use crate::diagnostics::{MeshDiagnostics, diagnose_with};
+use crate::defects::{self, Cleaned, Holes, Repairs, Shell, input_faces, nonplanar};
+use crate::diagnostics::{MeshDiagnostics, diagnose_with, edge_report};
 use crate::edges::EdgeTable;
 use crate::integrals::IntegrationPath;
 use crate::properties::{MassProperties, positive};
@@ -238,9 +238,10 @@ pub fn analyze_with(
         (method, spec),
         (Method::Shell, _) | (Method::Points | Method::BoundingBox, MassSpec::Mass(_))
     );
-    let cleaned = defects::clean(mesh, table, repairs, uses_volume)?;
+    let cleaned = defects::clean(mesh, table, repairs, uses_volume, diagnostics.surface_area)?;
     let body: &PolyMesh = &cleaned.mesh;
-    let solid = solid_properties(body, IntegrationPath::Auto).map_err(|e| explain(e, &diagnostics));
+    let solid = solid_properties(body, IntegrationPath::Auto)
+        .map_err(|e| explain(e, &diagnostics, repairs.holes == Holes::Cap));
     let volume = solid.as_ref().ok().map(|s| s.volume);
     let solid_flipped = solid.as_ref().is_ok_and(|s| s.flipped);
     let (properties, density, scale) = match (method, spec) {
@@ -357,9 +358,21 @@ fn check_range(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<(), Me
 }
 
 /// Replaces a zero-volume error's generic cause by what the diagnostics found: a mesh with
-/// inconsistently wound faces can cancel its own volume exactly.
-fn explain(e: MeshError, d: &MeshDiagnostics) -> MeshError {
+/// inconsistently wound faces can cancel its own volume exactly; an open one that encloses
+/// nothing even once capped is a sheet.
+fn explain(e: MeshError, d: &MeshDiagnostics, capped: bool) -> MeshError {
     match e {
+        MeshError::ZeroVolume {
+            volume, diagonal, ..
+        } if capped && d.open_edges > 0 && d.inconsistent_edges == 0 => MeshError::ZeroVolume {
+            volume,
+            diagonal,
+            cause: format!(
+                "it has {} open edge(s), and even with its holes capped it encloses nothing: it \
+                 is a sheet (a plane, a terrain, cloth); use the shell method for its mass",
+                d.open_edges
+            ),
+        },
         MeshError::ZeroVolume {
             volume, diagonal, ..
         } if d.inconsistent_edges > 0 || d.open_edges > 0 || d.nonmanifold_edges > 0 => {
@@ -400,16 +413,26 @@ fn warnings(
     // Edge defects as they remain after the repairs, named by the input's faces.
     let origin = cleaned.origin.as_deref();
     let repaired;
-    let edges = if origin.is_some() {
-        repaired = diagnose_with(&cleaned.mesh, &cleaned.table);
-        &repaired
-    } else {
-        input
-    };
+    let (nonmanifold, nonmanifold_examples, inconsistent, inconsistent_examples) =
+        if cleaned.edges_changed {
+            repaired = edge_report(&cleaned.table);
+            (
+                repaired.nonmanifold,
+                &repaired.nonmanifold_examples,
+                repaired.inconsistent,
+                &repaired.inconsistent_examples,
+            )
+        } else {
+            (
+                input.nonmanifold_edges,
+                &input.nonmanifold_edge_examples,
+                input.inconsistent_edges,
+                &input.inconsistent_face_examples,
+            )
+        };
     let to_input = |f: usize| origin.map_or(f, |o| o[f] as usize);
-    if edges.nonmanifold_edges > 0 {
-        let examples: Vec<((u32, u32), Vec<usize>)> = edges
-            .nonmanifold_edge_examples
+    if nonmanifold > 0 {
+        let examples: Vec<((u32, u32), Vec<usize>)> = nonmanifold_examples
             .iter()
             .map(|(pair, faces)| (*pair, faces.iter().map(|&f| to_input(f)).collect()))
             .collect();
@@ -418,14 +441,13 @@ fn warnings(
             defect: Defect::NonmanifoldEdges {
                 edges: examples.clone(),
             },
-            count: edges.nonmanifold_edges,
+            count: nonmanifold,
             faces: input_faces(None, faces),
             effect_on_mass: Some(0.0),
         });
     }
-    if edges.inconsistent_edges > 0 {
-        let pairs: Vec<(usize, usize)> = edges
-            .inconsistent_face_examples
+    if inconsistent > 0 {
+        let pairs: Vec<(usize, usize)> = inconsistent_examples
             .iter()
             .map(|&(a, b)| (to_input(a), to_input(b)))
             .collect();
@@ -434,7 +456,7 @@ fn warnings(
             defect: Defect::InconsistentWinding {
                 face_pairs: pairs.clone(),
             },
-            count: edges.inconsistent_edges,
+            count: inconsistent,
             faces: input_faces(None, faces),
             effect_on_mass: None,
         });

@@ -165,17 +165,18 @@ pub(crate) fn face_shape(
     (0.5 * twice_area, degenerate, nonplanar)
 }
 
-struct EdgeReport {
-    edges: usize,
-    open: usize,
-    nonmanifold: usize,
-    inconsistent: usize,
-    open_examples: Vec<(u32, u32)>,
-    nonmanifold_examples: Vec<((u32, u32), Vec<usize>)>,
-    inconsistent_examples: Vec<(usize, usize)>,
+/// What the edge table says, with examples (as in [`MeshDiagnostics`]).
+pub(crate) struct EdgeReport {
+    pub edges: usize,
+    pub open: usize,
+    pub nonmanifold: usize,
+    pub inconsistent: usize,
+    pub open_examples: Vec<(u32, u32)>,
+    pub nonmanifold_examples: Vec<((u32, u32), Vec<usize>)>,
+    pub inconsistent_examples: Vec<(usize, usize)>,
 }
 
-fn edge_report(table: &EdgeTable) -> EdgeReport {
+pub(crate) fn edge_report(table: &EdgeTable) -> EdgeReport {
     let mut report = EdgeReport {
         edges: 0,
         open: 0,

@@ -145,7 +145,7 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
                 let u = w
                     .effect_on_mass
                     .filter(|&e| e != 0.0)
-                    .map(|e| percent((e * uncertainty / volume).abs()))
+                    .map(|e| percent((e * uncertainty / volume).abs()).replace('+', ""))
                     .unwrap_or_default();
                 format!(
                     "{count} pair(s) of closed shells overlap (shells {}; {faces}): their common \

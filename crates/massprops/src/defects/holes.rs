@@ -7,17 +7,22 @@ use std::collections::HashMap;
 
 use nalgebra::{Point3, Vector3};
 
+use super::shells::Part;
 use super::{Builder, CAP, Cleaned, fan_volume, input_faces};
 use crate::analysis::{Defect, Warning};
 use crate::integrals::mirtich::newell_normal;
 use crate::{Holes, MeshError};
 
-/// Caps every boundary loop (or refuses, per `holes`); returns whether any cap was added.
+/// Caps every boundary loop (or refuses, per `holes`).
+/// `surface` is the file's surface area, which the caps' area is given as a fraction of. Each
+/// cap joins the shell of its hole's first face, which is closed once all its holes are.
 pub(super) fn cap(
     work: &mut Cleaned<'_>,
+    parts: &mut [Part],
     holes: Holes,
     reference: Point3<f64>,
-) -> Result<bool, MeshError> {
+    surface: f64,
+) -> Result<(), MeshError> {
     let sides: Vec<((u32, u32), u32)> = work
         .table
         .groups()
@@ -25,7 +30,7 @@ pub(super) fn cap(
         .map(|g| (g[0].directed(), g[0].face))
         .collect();
     if sides.is_empty() {
-        return Ok(false);
+        return Ok(());
     }
     let loops = chain(&sides);
     let around = input_faces(work.origin.as_deref(), sides.iter().map(|s| s.1));
@@ -37,7 +42,7 @@ pub(super) fn cap(
         });
     }
     if loops.is_empty() {
-        return Ok(false);
+        return Ok(());
     }
     let mesh = &work.mesh;
     let mut positions = mesh.positions().to_vec();
@@ -45,8 +50,18 @@ pub(super) fn cap(
     for (f, face) in mesh.faces().enumerate() {
         builder.push(face, f as u32);
     }
+    let mut shell_of = vec![0usize; mesh.face_count()];
+    for (s, part) in parts.iter().enumerate() {
+        for &f in &part.faces {
+            shell_of[f as usize] = s;
+        }
+    }
+    let mut capped_sides = vec![0usize; parts.len()];
+    let mut next_face = mesh.face_count() as u32;
     let (mut cap_area, mut cap_volume) = (0.0, 0.0);
     for hole in &loops {
+        let shell = shell_of[sides[hole[0]].1 as usize];
+        capped_sides[shell] += hole.len();
         let corners = hole
             .iter()
             .map(|&s| positions[sides[s].0.0 as usize].coords);
@@ -61,23 +76,24 @@ pub(super) fn cap(
             let points: Vec<Vector3<f64>> = triangle.iter().map(|&i| at(i)).collect();
             cap_area += 0.5 * newell_normal(&points).norm();
             builder.push(&triangle, CAP);
+            parts[shell].faces.push(next_face);
+            next_face += 1;
         }
     }
-    let surface: f64 = (0..mesh.face_count())
-        .map(|f| {
-            let points: Vec<Vector3<f64>> = mesh.face_points(f).map(|p| p.coords).collect();
-            0.5 * newell_normal(&points).norm()
-        })
-        .sum();
-    let capped_sides: usize = loops.iter().map(Vec::len).sum();
+    for (part, capped) in parts.iter_mut().zip(capped_sides) {
+        if capped > 0 && !part.unbalanced && capped == part.open_sides {
+            part.closed = true;
+        }
+    }
+    let boundary_edges: usize = loops.iter().map(Vec::len).sum();
     let faces = input_faces(
         work.origin.as_deref(),
         loops.iter().flatten().map(|&s| sides[s].1),
     );
-    builder.finish_into(work, positions)?;
+    builder.finish_keeping_edges(work, positions)?;
     work.warnings.push(Warning {
         defect: Defect::HolesCapped {
-            boundary_edges: capped_sides,
+            boundary_edges,
             cap_area_fraction: if surface > 0.0 {
                 cap_area / surface
             } else {
@@ -89,7 +105,7 @@ pub(super) fn cap(
         // The file's surface lacks what the caps hold.
         effect_on_mass: Some(-cap_volume),
     });
-    Ok(true)
+    Ok(())
 }
 
 /// Chains directed boundary sides (from, to) into closed loops, each a list of indices into

@@ -95,8 +95,12 @@ pub(crate) struct Cleaned<'a> {
     /// For each face of `mesh`, the input face it came from ([`CAP`] for a cap); `None` when
     /// the faces are the input's.
     pub origin: Option<Vec<u32>>,
-    /// The edges of `mesh`.
+    /// The edges of `mesh` as of the last repair that changed which faces meet (cracks,
+    /// duplicates). Caps and flips leave it valid for every face it has: caps only pair open
+    /// edges and come after the faces, and a flip turns a whole shell.
     pub table: EdgeTable,
+    /// Cracks or duplicates changed which faces meet: `table` is not the input's.
+    pub edges_changed: bool,
     /// The shells of the input as found, with depth when known.
     pub shells: Vec<Shell>,
     /// Findings, with effects in volume units (area units when the volume is not used).
@@ -109,17 +113,20 @@ pub(crate) struct Cleaned<'a> {
 pub(crate) const CAP: u32 = u32::MAX;
 
 /// Finds and handles the defects of `mesh`. `uses_volume`: whether the numbers come from the
-/// enclosed volume (cracks, holes, nesting and orientation only matter then).
+/// enclosed volume (cracks, holes, nesting and orientation only matter then); `surface_area`:
+/// the mesh's, for the caps' share.
 pub(crate) fn clean<'a>(
     mesh: &'a PolyMesh,
     table: EdgeTable,
     repairs: &Repairs,
     uses_volume: bool,
+    surface_area: f64,
 ) -> Result<Cleaned<'a>, MeshError> {
     let mut work = Cleaned {
         mesh: Cow::Borrowed(mesh),
         origin: None,
         table,
+        edges_changed: false,
         shells: Vec::new(),
         warnings: Vec::new(),
         flipped_whole: false,
@@ -132,11 +139,14 @@ pub(crate) fn clean<'a>(
     if duplicates::remove(&mut work, &parts, reference, uses_volume) {
         parts = shells::split(&work.mesh, &work.table);
     }
-    if uses_volume
-        && parts.iter().any(|s| !s.closed)
-        && holes::cap(&mut work, repairs.holes, reference)?
-    {
-        parts = shells::split(&work.mesh, &work.table);
+    if uses_volume && parts.iter().any(|s| !s.closed) {
+        holes::cap(
+            &mut work,
+            &mut parts,
+            repairs.holes,
+            reference,
+            surface_area,
+        )?;
     }
     let volumes = shells::volumes(&work.mesh, &parts, reference);
     let solids = shells::solids(&work.mesh, &parts, &volumes);
@@ -217,7 +227,7 @@ fn orient(
             }
         }
         let positions = work.mesh.positions().to_vec();
-        builder.finish_into(work, positions)?;
+        builder.finish_keeping_edges(work, positions)?;
     }
     let mut nested = Vec::new();
     let mut added = 0.0;
@@ -294,9 +304,22 @@ impl Builder {
         self.arities.is_empty()
     }
 
-    /// Replaces the working mesh, its origins and its edges by the faces built. Fails only when
-    /// no face is left (a weld that collapses every face).
+    /// Replaces the working mesh and its origins by the faces built, and its edge table by
+    /// theirs. Fails only when no face is left (a weld that collapses every face).
     pub fn finish_into(
+        self,
+        work: &mut Cleaned<'_>,
+        positions: Vec<Point3<f64>>,
+    ) -> Result<(), MeshError> {
+        self.finish_keeping_edges(work, positions)?;
+        work.table = EdgeTable::new(&work.mesh);
+        work.edges_changed = true;
+        Ok(())
+    }
+
+    /// [`Builder::finish_into`] for a repair that keeps `work.table` valid (see
+    /// [`Cleaned::table`]): caps appended, shells turned.
+    pub fn finish_keeping_edges(
         self,
         work: &mut Cleaned<'_>,
         positions: Vec<Point3<f64>>,
@@ -311,7 +334,6 @@ impl Builder {
             })
             .collect();
         let mesh = PolyMesh::from_flat(positions, self.indices, &self.arities)?;
-        work.table = EdgeTable::new(&mesh);
         work.mesh = Cow::Owned(mesh);
         work.origin = Some(composed);
         Ok(())

@@ -11,7 +11,6 @@ use super::overlap::Relations;
 use super::{CAP, Cleaned, UnionFind, face_volume};
 use crate::PolyMesh;
 use crate::edges::EdgeTable;
-use crate::integrals::mirtich::newell_normal;
 use crate::solid::ZERO_VOLUME_RATIO;
 
 /// Whether a closed shell's faces point away from what it encloses.
@@ -44,6 +43,11 @@ pub struct Shell {
 pub(crate) struct Part {
     pub faces: Vec<u32>,
     pub closed: bool,
+    /// Edges used by one face only (of this shell): what caps can close.
+    pub open_sides: usize,
+    /// An edge that several faces share is used more often one way than the other by this
+    /// shell's faces: open in a way caps do not close.
+    pub unbalanced: bool,
 }
 
 /// Splits the working mesh into shells, ordered by their first face.
@@ -64,6 +68,8 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
             parts.push(Part {
                 faces: Vec::new(),
                 closed: true,
+                open_sides: 0,
+                unbalanced: false,
             });
         }
         parts[index[root] as usize].faces.push(f);
@@ -74,6 +80,7 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
             1 => {
                 let s = shell_of(&mut sets, group[0].face);
                 parts[s].closed = false;
+                parts[s].open_sides += 1;
             }
             2 => {}
             _ => {
@@ -90,6 +97,7 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
                 for (s, b) in balance {
                     if b != 0 {
                         parts[s].closed = false;
+                        parts[s].unbalanced = true;
                     }
                 }
             }
@@ -118,20 +126,27 @@ pub(crate) fn solids(mesh: &PolyMesh, parts: &[Part], volumes: &[f64]) -> Vec<bo
     let (lo, hi) = mesh.bounding_box();
     let diagonal = (hi - lo).norm();
     let floor = ZERO_VOLUME_RATIO * diagonal.powi(3);
+    // Twice the area, by cross products from each face's first corner (no allocation).
+    let twice_area = |f: u32| {
+        let face = mesh.face(f as usize);
+        let at = |i: u32| mesh.positions()[i as usize];
+        let a = at(face[0]);
+        let n: Vector3<f64> = face[1..]
+            .windows(2)
+            .map(|w| (at(w[0]) - a).cross(&(at(w[1]) - a)))
+            .sum();
+        n.norm()
+    };
     parts
         .iter()
         .zip(volumes)
         .map(|(p, &v)| {
-            let area: f64 = p
-                .faces
-                .iter()
-                .map(|&f| {
-                    let corners: Vec<Vector3<f64>> =
-                        mesh.face_points(f as usize).map(|q| q.coords).collect();
-                    0.5 * newell_normal(&corners).norm()
-                })
-                .sum();
-            p.closed && v.abs() > floor.max(AUTO_WELD_RATIO * area * diagonal)
+            // Most shells are plainly solid: their volume beats any area the test could find.
+            if !p.closed || v.abs() <= floor {
+                return false;
+            }
+            let area: f64 = 0.5 * p.faces.iter().map(|&f| twice_area(f)).sum::<f64>();
+            v.abs() > AUTO_WELD_RATIO * area * diagonal
         })
         .collect()
 }
