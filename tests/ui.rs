@@ -8,6 +8,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
 use inertia_lab::gui::LabApp;
+use inertia_lab::gui::view3d::overlay::Overlay;
 use inertia_lab::lab::Variant;
 use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassSpec};
 use rbcore::RotationModel;
@@ -226,6 +227,48 @@ fn a_long_named_open_mesh_keeps_the_layout() {
         (axes.center().y - after.center().y).abs() < 2.0,
         "the toolbar is one row"
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A mesh with a face listed twice: the diagnostics say so with the effect on the mass, and
+/// clicking the warning outlines that face in the 3D view (and clicking again clears it).
+#[test]
+fn clicking_a_mesh_warning_highlights_its_faces() {
+    let dir = std::env::temp_dir().join(format!("inertia-lab-ui-warning-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("doubled-top.obj");
+    let cube = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
+    std::fs::write(&path, cube).expect("write");
+    let mut h = harness_of_size([1280.0, 1400.0]);
+    frames(&mut h, 2);
+    h.get_by_label("Path").focus();
+    h.get_by_label("Path").type_text(&path.display().to_string());
+    frames(&mut h, 1);
+    h.get_by_label("Load").click();
+    for _ in 0..500 {
+        h.step();
+        if h.state().lab().loading().is_none() {
+            break;
+        }
+    }
+    frames(&mut h, 3);
+    let title = "Duplicate faces (1): +17 % mass";
+    assert!(h.query_by_label(title).is_some(), "{:?}", h.state().lab().message());
+    assert!(h.query_by_label_contains("face 6 (line 15)").is_some());
+    assert_eq!(h.state().selected_warning(), None);
+    h.get_by_label(title).click();
+    frames(&mut h, 1);
+    assert_eq!(h.state().selected_warning(), Some(0));
+    let overlay = Overlay::build(h.state().lab(), std::time::Instant::now(), Some(0));
+    let labels: Vec<&str> = overlay.labels.iter().map(|l| l.text.as_str()).collect();
+    assert!(labels.contains(&"face 6"), "{labels:?}");
+    // The top face's four sides, at z = 1 of the unit cube (placed about its centre of mass).
+    let none = Overlay::build(h.state().lab(), std::time::Instant::now(), None);
+    assert_eq!(overlay.segments.len(), none.segments.len() + 4);
+    h.get_by_label(title).click();
+    frames(&mut h, 1);
+    assert_eq!(h.state().selected_warning(), None);
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -159,6 +159,11 @@ impl LabApp {
         &self.lab
     }
 
+    /// The mesh warning whose faces the 3D view highlights, if one is selected.
+    pub fn selected_warning(&self) -> Option<usize> {
+        self.panels.selected_warning
+    }
+
     /// Applies a command at once (the startup file given on the command line).
     pub fn command(&mut self, c: Command) {
         self.lab.apply(c);
