@@ -357,7 +357,7 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
     assert_eq!(
         j["shells"],
         serde_json::json!([{
-            "faces": 6, "closed": true, "volume": 1.0, "orientation": "outward", "depth": 0
+            "faces": 6, "closed": true, "capped": false, "volume": 1.0, "orientation": "outward", "depth": 0
         }])
     );
 }

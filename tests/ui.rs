@@ -243,7 +243,8 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
     let mut h = harness_of_size([1280.0, 1400.0]);
     frames(&mut h, 2);
     h.get_by_label("Path").focus();
-    h.get_by_label("Path").type_text(&path.display().to_string());
+    h.get_by_label("Path")
+        .type_text(&path.display().to_string());
     frames(&mut h, 1);
     h.get_by_label("Load").click();
     for _ in 0..500 {
@@ -254,7 +255,11 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
     }
     frames(&mut h, 3);
     let title = "Duplicate faces (1): +17 % mass";
-    assert!(h.query_by_label(title).is_some(), "{:?}", h.state().lab().message());
+    assert!(
+        h.query_by_label(title).is_some(),
+        "{:?}",
+        h.state().lab().message()
+    );
     assert!(h.query_by_label_contains("face 6 (line 15)").is_some());
     assert_eq!(h.state().selected_warning(), None);
     h.get_by_label(title).click();

@@ -327,3 +327,49 @@ fn refusing_holes_or_a_bad_weld_distance_is_an_error() {
         .expect_err("negative");
     assert!(e.to_string().contains("weld distance"), "{e}");
 }
+
+#[test]
+fn a_single_inner_wall_closes_one_half_and_the_other_is_capped() {
+    // A 2 × 1 × 1 box whose long faces are split at x = 1, plus one wall at x = 1 wound towards
+    // +x: every edge of the wall has three faces. Around each, the left half's face pairs with
+    // the wall (they bound the left cube), so the left half is a closed shell; the right half
+    // lacks its wall and is capped. Together: the box, volume 2.
+    let p = |x: f64, y: f64, z: f64| Point3::new(x, y, z);
+    let mut positions = Vec::new();
+    for x in [0.0, 1.0, 2.0] {
+        for (y, z) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            positions.push(p(x, y, z));
+        }
+    }
+    // Vertex (k, c): x index k, corner c of the square (y, z) loop above.
+    let v = |k: usize, c: usize| 4 * k + c;
+    let mut faces = vec![
+        vec![v(0, 0), v(0, 3), v(0, 2), v(0, 1)], // x = 0, facing -x
+        vec![v(2, 0), v(2, 1), v(2, 2), v(2, 3)], // x = 2, facing +x
+    ];
+    for k in 0..2 {
+        for c in 0..4 {
+            let d = (c + 1) % 4;
+            faces.push(vec![v(k, c), v(k, d), v(k + 1, d), v(k + 1, c)]);
+        }
+    }
+    faces.push(vec![v(1, 0), v(1, 1), v(1, 2), v(1, 3)]); // the wall, facing +x
+    let mesh = PolyMesh::new(positions, &faces).expect("valid");
+    let a = volume(&mesh);
+    assert_rel(a.properties.mass, 2.0, 1e-15, "the whole box");
+    assert_mat(
+        &a.properties.inertia_com,
+        &box_tensor(2.0, 2.0, 1.0, 1.0),
+        1e-14,
+        "the whole box",
+    );
+    assert_eq!(a.shells.len(), 2, "{:?}", a.shells);
+    assert_eq!(
+        a.shells
+            .iter()
+            .map(|s| (s.faces, s.closed, s.capped))
+            .collect::<Vec<_>>(),
+        [(6, true, false), (5, false, true)]
+    );
+    assert!(codes(&a).contains(&"holes_capped"), "{:?}", a.warnings);
+}

@@ -352,6 +352,7 @@ fn shells_json(a: &Analysis) -> Value {
             .map(|s| json!({
                 "faces": s.faces,
                 "closed": s.closed,
+                "capped": s.capped,
                 "volume": s.volume,
                 "orientation": match s.orientation {
                     Orientation::Outward => "outward",

@@ -336,8 +336,14 @@ impl Lab {
         let body = Arc::new(body);
         self.start_all(&self.plan(), &body, self.preset_axis)?;
         self.generation += 1;
+        // The diagnostics sit low in the side panel: the message line says whether to look.
+        let warnings = match body.analysis.warnings.len() {
+            0 => String::new(),
+            1 => "; 1 mesh warning, under Mesh diagnostics".to_owned(),
+            n => format!("; {n} mesh warnings, under Mesh diagnostics"),
+        };
         self.info(format!(
-            "loaded {} ({} triangles)",
+            "loaded {} ({} triangles){warnings}",
             body.name,
             body.mesh.triangles.len()
         ));

@@ -1,4 +1,5 @@
-//! Holes: boundary edges (used by one face) are chained into loops, each loop is closed by a fan
+//! Holes: each shell's open sides (an edge only one of its faces uses: a hole's rim, or the rim
+//! of a wall that another shell owns) are chained into loops, each loop is closed by a fan
 //! of triangles from the centroid of its corners, wound against the loop so that the cap's
 //! edges pair with the boundary's. The result is the volume of the capped solid; how much the
 //! caps carry (area and volume) says whether the holes matter.
@@ -23,11 +24,9 @@ pub(super) fn cap(
     reference: Point3<f64>,
     surface: f64,
 ) -> Result<(), MeshError> {
-    let sides: Vec<((u32, u32), u32)> = work
-        .table
-        .groups()
-        .filter(|g| g.len() == 1)
-        .map(|g| (g[0].directed(), g[0].face))
+    let sides: Vec<((u32, u32), u32)> = parts
+        .iter()
+        .flat_map(|p| p.boundary.iter().copied())
         .collect();
     if sides.is_empty() {
         return Ok(());
@@ -81,7 +80,7 @@ pub(super) fn cap(
         }
     }
     for (part, capped) in parts.iter_mut().zip(capped_sides) {
-        if capped > 0 && !part.unbalanced && capped == part.open_sides {
+        if capped > 0 && !part.unbalanced && capped == part.boundary.len() {
             part.closed = true;
         }
     }

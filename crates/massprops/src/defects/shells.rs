@@ -1,8 +1,12 @@
 //! Shells: the connected pieces of a surface, faces joined across manifold edges.
 //!
-//! An edge used by exactly two faces joins them; an edge used by three or more (two parts that
-//! touch along it) joins nothing, so touching parts stay separate shells. A shell is closed when
-//! each of its edges is used as often in one direction as in the other by its own faces.
+//! An edge used by exactly two faces joins them. Around an edge used by more (two parts that
+//! touch along it, a fin), the faces are ordered by angle about the edge and each face is joined
+//! to its neighbour on its inner side (opposite its normal) when that neighbour's inner side
+//! faces back and it runs the edge the other way: the radial pairing of non-manifold solid
+//! modelling (Weiler's radial edge structure), which keeps touching solids apart and joins the
+//! two sides of each wedge of material. A shell is closed when each of its edges is used as
+//! often in one direction as in the other by its own faces.
 
 use nalgebra::{Point3, Vector3};
 
@@ -10,7 +14,7 @@ use super::AUTO_WELD_RATIO;
 use super::overlap::Relations;
 use super::{CAP, Cleaned, UnionFind, face_volume};
 use crate::PolyMesh;
-use crate::edges::EdgeTable;
+use crate::edges::{EdgeTable, HalfEdge};
 use crate::solid::ZERO_VOLUME_RATIO;
 
 /// Whether a closed shell's faces point away from what it encloses.
@@ -27,8 +31,11 @@ pub enum Orientation {
 pub struct Shell {
     /// Faces of the file in this shell (duplicates removed, caps not counted).
     pub faces: usize,
-    /// Closed in the file (after closing cracks); an open shell's holes were capped.
+    /// Closed in the file (after closing cracks).
     pub closed: bool,
+    /// Open, and its holes were capped (an open shell that is not capped meets other shells
+    /// along edges it uses unevenly, which caps do not close).
+    pub capped: bool,
     /// Signed volume as wound in the file (of the capped shell when it was open).
     pub volume: f64,
     /// The sign of `volume`.
@@ -43,10 +50,11 @@ pub struct Shell {
 pub(crate) struct Part {
     pub faces: Vec<u32>,
     pub closed: bool,
-    /// Edges used by one face only (of this shell): what caps can close.
-    pub open_sides: usize,
-    /// An edge that several faces share is used more often one way than the other by this
-    /// shell's faces: open in a way caps do not close.
+    /// The shell's open sides, as their faces run them (from, to), with the face: edges that
+    /// one of its faces uses and no other of its faces runs back. What caps can close.
+    pub boundary: Vec<((u32, u32), u32)>,
+    /// An edge that several faces share is run two or more times more one way than the other
+    /// by this shell's faces (inconsistent winding): open in a way caps do not close.
     pub unbalanced: bool,
 }
 
@@ -55,8 +63,14 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
     let n = mesh.face_count();
     let mut sets = UnionFind::new(n);
     for group in table.groups() {
-        if group.len() == 2 {
-            sets.union(group[0].face, group[1].face);
+        match group.len() {
+            1 => {}
+            2 => sets.union(group[0].face, group[1].face),
+            _ => {
+                for (a, b) in radial_pairs(mesh, group) {
+                    sets.union(a, b);
+                }
+            }
         }
     }
     let mut index = vec![u32::MAX; n];
@@ -68,7 +82,7 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
             parts.push(Part {
                 faces: Vec::new(),
                 closed: true,
-                open_sides: 0,
+                boundary: Vec::new(),
                 unbalanced: false,
             });
         }
@@ -80,11 +94,12 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
             1 => {
                 let s = shell_of(&mut sets, group[0].face);
                 parts[s].closed = false;
-                parts[s].open_sides += 1;
+                parts[s].boundary.push((group[0].directed(), group[0].face));
             }
             2 => {}
             _ => {
-                // Each shell meeting here must use the edge as often each way.
+                // Each shell meeting here must use the edge as often each way; one side left
+                // over is a hole's edge (a half whose wall another shell has).
                 let mut balance: Vec<(usize, i32)> = Vec::new();
                 for side in group {
                     let s = shell_of(&mut sets, side.face);
@@ -95,15 +110,84 @@ pub(crate) fn split(mesh: &PolyMesh, table: &EdgeTable) -> Vec<Part> {
                     }
                 }
                 for (s, b) in balance {
-                    if b != 0 {
-                        parts[s].closed = false;
-                        parts[s].unbalanced = true;
+                    if b == 0 {
+                        continue;
+                    }
+                    parts[s].closed = false;
+                    let leftover = group.iter().find(|side| {
+                        side.forward == (b > 0) && shell_of(&mut sets, side.face) == s
+                    });
+                    match leftover {
+                        Some(side) if b.abs() == 1 => {
+                            parts[s].boundary.push((side.directed(), side.face));
+                        }
+                        _ => parts[s].unbalanced = true,
                     }
                 }
             }
         }
     }
     parts
+}
+
+/// The pairs of faces around a non-manifold edge that bound one wedge of material: each face's
+/// nearest neighbour in angle on the side opposite its normal, when the choice is mutual and the
+/// two run the edge in opposite directions.
+fn radial_pairs(mesh: &PolyMesh, group: &[HalfEdge]) -> Vec<(u32, u32)> {
+    let at = |i: u32| mesh.positions()[i as usize];
+    let (lo, hi) = (at(group[0].lo), at(group[0].hi));
+    let Some(axis) = (hi - lo).try_normalize(0.0) else {
+        return Vec::new();
+    };
+    let u = axis
+        .cross(&Vector3::x())
+        .try_normalize(1e-6)
+        .unwrap_or_else(|| {
+            axis.cross(&Vector3::y())
+                .try_normalize(0.0)
+                .unwrap_or_else(Vector3::z)
+        });
+    let v = axis.cross(&u);
+    // Each side: its angle about the edge, and ±1: which way (in angle) its material lies.
+    let mut sides: Vec<(f64, f64, usize)> = Vec::with_capacity(group.len());
+    for (k, side) in group.iter().enumerate() {
+        let face = mesh.face(side.face as usize);
+        let centre = face.iter().map(|&i| at(i).coords).sum::<Vector3<f64>>() / face.len() as f64;
+        let out = centre - lo.coords;
+        let w = out - axis * axis.dot(&out);
+        let normal: Vector3<f64> = face[1..]
+            .windows(2)
+            .map(|p| (at(p[0]) - at(face[0])).cross(&(at(p[1]) - at(face[0]))))
+            .sum();
+        let turn = normal.dot(&axis.cross(&w));
+        if w.norm() == 0.0 || turn == 0.0 {
+            continue;
+        }
+        // The normal points towards increasing angle when `turn` > 0: the material lies the
+        // other way.
+        sides.push((w.dot(&v).atan2(w.dot(&u)), -turn.signum(), k));
+    }
+    sides.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let n = sides.len();
+    if n < 2 {
+        return Vec::new();
+    }
+    let partner = |i: usize| {
+        if sides[i].1 > 0.0 {
+            (i + 1) % n
+        } else {
+            (i + n - 1) % n
+        }
+    };
+    let mut pairs = Vec::new();
+    for i in 0..n {
+        let j = partner(i);
+        let (a, b) = (&group[sides[i].2], &group[sides[j].2]);
+        if i < j && partner(j) == i && a.forward != b.forward {
+            pairs.push((a.face, b.face));
+        }
+    }
+    pairs
 }
 
 /// The signed volume of each shell about `reference` (the enclosed volume for a closed shell).
@@ -165,9 +249,11 @@ pub(crate) fn describe(
         .enumerate()
         .map(|(s, (part, &volume))| {
             let faces = part.faces.iter().filter(|&&f| from_file(f)).count();
+            let capped = faces < part.faces.len();
             Shell {
                 faces,
-                closed: part.closed && faces == part.faces.len(),
+                closed: part.closed && !capped,
+                capped,
                 volume,
                 orientation: if volume < 0.0 {
                     Orientation::Inward

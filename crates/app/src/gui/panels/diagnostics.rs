@@ -64,13 +64,17 @@ fn shells_line(a: &massprops::Analysis) -> String {
         .iter()
         .filter(|s| s.orientation == Orientation::Inward && s.depth.is_some_and(|d| d % 2 == 1))
         .count();
-    let open = a.shells.len() - closed.len();
+    let capped = a.shells.iter().filter(|s| s.capped).count();
+    let uneven = a.shells.len() - closed.len() - capped;
     let mut parts = vec![format!("{} closed", closed.len())];
     if cavities > 0 {
         parts.push(format!("{cavities} of them cavities"));
     }
-    if open > 0 {
-        parts.push(format!("{open} open (capped)"));
+    if capped > 0 {
+        parts.push(format!("{capped} open (capped)"));
+    }
+    if uneven > 0 {
+        parts.push(format!("{uneven} joined unevenly to others"));
     }
     format!("{} shell(s): {}", a.shells.len(), parts.join(", "))
 }
