@@ -25,11 +25,21 @@ pub fn title(w: &Warning) -> String {
     format!("{what} ({})", w.count)
 }
 
-/// The effect on the mass as a signed percentage ("+9.4 % mass"), or the uncertainty for
-/// non-flat polygons ("± 0.3 % mass"); `None` when it is not known.
+/// The effect on the mass as a signed percentage ("+9.4 % mass"), what capped holes add ("caps
+/// add 1.4 % mass"), or the uncertainty for non-flat polygons ("± 0.3 % mass"); `None` when it is
+/// not known.
 pub fn effect(w: &Warning) -> Option<String> {
-    if let Defect::NonplanarFaces { uncertainty } = w.defect {
-        return Some(format!("± {} mass", percent(uncertainty)));
+    match w.defect {
+        Defect::NonplanarFaces { uncertainty } => {
+            return Some(format!("± {} mass", percent(uncertainty)));
+        }
+        // The caps' share reads more plainly than what the holes "remove".
+        Defect::HolesCapped { .. } => {
+            let added = -w.effect_on_mass?;
+            let verb = if added >= 0.0 { "add" } else { "remove" };
+            return Some(format!("caps {verb} {} mass", percent(added.abs())));
+        }
+        _ => {}
     }
     let e = w.effect_on_mass?;
     Some(if e == 0.0 {
@@ -263,7 +273,7 @@ mod tests {
         }
         assert_eq!(title(&all[0]), "Duplicate faces (2)");
         assert_eq!(effect(&all[0]).as_deref(), Some("+33 % mass"));
-        assert_eq!(effect(&all[5]).as_deref(), Some("−17 % mass"));
+        assert_eq!(effect(&all[5]).as_deref(), Some("caps add 17 % mass"));
         assert_eq!(effect(&all[4]).as_deref(), Some("+1.0e-7 % mass"));
         assert_eq!(effect(&all[6]).as_deref(), Some("± 0.30 % mass"));
         assert_eq!(effect(&all[8]), None);

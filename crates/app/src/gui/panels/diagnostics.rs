@@ -21,7 +21,10 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     egui::CollapsingHeader::new(if a.warnings.is_empty() {
         "Mesh diagnostics".to_owned()
     } else {
-        format!("Mesh diagnostics ({} warnings)", a.warnings.len())
+        match a.warnings.len() {
+            1 => "Mesh diagnostics (1 warning)".to_owned(),
+            n => format!("Mesh diagnostics ({n} warnings)"),
+        }
     })
     .default_open(!a.warnings.is_empty())
     .show(ui, |ui| {

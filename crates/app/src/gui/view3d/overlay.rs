@@ -185,13 +185,15 @@ const LAYERS: [Layer; 11] = [
 ];
 
 /// The example faces of the selected mesh warning: outlined, with a dot and their number, drawn
-/// over everything (they may be small or hidden behind other faces).
+/// over everything (they may be small or hidden behind other faces). Faces whose centres lie
+/// close together (around one small hole) share one label.
 fn highlighted_faces(o: &mut Overlay, c: &Context<'_>) {
     let body = c.specimen.body();
     let Some(faces) = c.highlight.and_then(|i| body.warning_faces.get(i)) else {
         return;
     };
     let positions = &body.mesh.positions;
+    let mut labelled: Vec<(Point3<f64>, Vec<usize>)> = Vec::new();
     for (f, corners) in faces {
         let world: Vec<Point3<f64>> = corners
             .iter()
@@ -203,14 +205,32 @@ fn highlighted_faces(o: &mut Overlay, c: &Context<'_>) {
         let centre =
             Point3::from(world.iter().map(|p| p.coords).sum::<Vector3<f64>>() / world.len() as f64);
         o.markers.push((centre, HIGHLIGHT_COLOR));
+        match labelled
+            .iter_mut()
+            .find(|(at, _)| (at - centre).norm() < LABEL_MERGE * c.radius)
+        {
+            Some((_, list)) => list.push(*f),
+            None => labelled.push((centre, vec![*f])),
+        }
+    }
+    for (at, list) in labelled {
+        let names: Vec<String> = list.iter().map(usize::to_string).collect();
+        let text = match names.len() {
+            1 => format!("face {}", names[0]),
+            _ => format!("faces {}", names.join(", ")),
+        };
         o.labels.push(Label {
-            at: centre,
-            text: format!("face {f}"),
+            at,
+            text,
             color: HIGHLIGHT_COLOR,
             align: Align2::LEFT_BOTTOM,
         });
     }
 }
+
+/// Highlighted faces whose centres are closer than this fraction of the body's radius share a
+/// label.
+const LABEL_MERGE: f64 = 0.3;
 
 fn wireframe(o: &mut Overlay, c: &Context<'_>) {
     let mesh = &c.specimen.body().mesh;
