@@ -392,6 +392,61 @@ fn records_of_fewer_than_three_corners_are_skipped_and_named_by_line() {
 }
 
 #[test]
+fn every_solid_of_an_ascii_stl_is_read_and_names_a_part() {
+    // stl_io alone reads the first block and silently drops the rest.
+    let a = ascii_stl(&shapes::cube(), "solid first");
+    let b = ascii_stl(
+        &shapes::cuboid(Vector3::repeat(1.0), Point3::new(3.0, 0.0, 0.0)),
+        "solid",
+    );
+    let text = format!("{a}{b}");
+    let f = parse_mesh(text.as_bytes(), Path::new("two.stl")).expect("ascii");
+    assert_eq!(f.mesh.face_count(), 24);
+    assert_eq!(f.part_names, ["first", ""]);
+    assert_eq!(f.face_parts, [vec![0; 12], vec![1; 12]].concat());
+    // The second block's facets keep their lines: 12 facets of 7 lines after two heading lines.
+    assert_eq!(f.face_lines[12], 2 + 7 * 12 + 2);
+    let p = mass_properties(&f.mesh, 1.0).expect("closed");
+    assert_rel(p.mass, 2.0, 1e-15, "two cubes");
+}
+
+#[test]
+fn obj_objects_or_else_groups_name_the_parts() {
+    let cube = |k: usize| {
+        let o = 8 * k;
+        let v: String = (0..8)
+            .map(|i| {
+                let (x, y, z) = (i & 1, (i >> 1) & 1, (i >> 2) & 1);
+                format!("v {} {y} {z}\n", x + 3 * k)
+            })
+            .collect();
+        let f: String = [
+            [1, 3, 4, 2],
+            [5, 6, 8, 7],
+            [1, 2, 6, 5],
+            [3, 7, 8, 4],
+            [1, 5, 7, 3],
+            [2, 4, 8, 6],
+        ]
+        .iter()
+        .map(|q| format!("f {} {} {} {}\n", q[0] + o, q[1] + o, q[2] + o, q[3] + o))
+        .collect();
+        (v, f)
+    };
+    let ((v0, f0), (v1, f1)) = (cube(0), cube(1));
+    let with_objects = format!("{v0}{v1}o head\ng a\n{f0}o handle\ng b\n{f1}");
+    let f = parse_mesh(with_objects.as_bytes(), Path::new("parts.obj")).expect("reads");
+    assert_eq!(f.part_names, ["head", "handle"]);
+    assert_eq!(f.face_parts, [vec![0; 6], vec![1; 6]].concat());
+    let with_groups = format!("{v0}{v1}g a\n{f0}g b\n{f1}");
+    let f = parse_mesh(with_groups.as_bytes(), Path::new("parts.obj")).expect("reads");
+    assert_eq!(f.part_names, ["a", "b"]);
+    let neither = format!("{v0}{v1}{f0}{f1}");
+    let f = parse_mesh(neither.as_bytes(), Path::new("parts.obj")).expect("reads");
+    assert!(f.part_names.is_empty() && f.face_parts.is_empty());
+}
+
+#[test]
 fn a_byte_order_mark_does_not_shift_the_vertices() {
     let plain = obj(CUBE_OBJ).expect("valid");
     let with_mark = format!("\u{feff}{CUBE_OBJ}");

@@ -112,6 +112,8 @@ impl LoadedBody {
             mesh,
             face_lines: Vec::new(),
             warnings: Vec::new(),
+            part_names: Vec::new(),
+            face_parts: Vec::new(),
         };
         Self::new(name, &file)
     }

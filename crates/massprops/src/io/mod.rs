@@ -22,6 +22,11 @@ pub struct MeshFile {
     pub face_lines: Vec<u32>,
     /// What the reader skipped (OBJ records of fewer than three corners).
     pub warnings: Vec<Warning>,
+    /// The names of the file's parts: OBJ objects (`o`), or groups (`g`) when it has no
+    /// objects; ASCII STL `solid` blocks. Empty when the file names none.
+    pub part_names: Vec<String>,
+    /// For each face, its part (an index into `part_names`); empty when that is.
+    pub face_parts: Vec<u32>,
 }
 
 impl MeshFile {

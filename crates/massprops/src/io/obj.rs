@@ -45,7 +45,8 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let mut arities = Vec::new();
     // tobj returns `f` and `l` lines alike as elements (an `l` of three or more points looks like
     // a face), in file order; `p` lines it drops.
-    let lines = element_lines(text);
+    let records = element_lines(text);
+    let mut kept: Vec<Record> = Vec::new();
     let mut face_lines = Vec::new();
     let mut two_corner = Vec::new();
     let mut element = 0usize;
@@ -68,7 +69,13 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         for arity in model_arities {
             let face = &m.indices[start..start + arity];
             start += arity;
-            let (line, polyline) = lines.get(element).copied().unwrap_or((0, false));
+            let record = records.elements.get(element).copied().unwrap_or(Record {
+                line: 0,
+                polyline: false,
+                object: 0,
+                group: 0,
+            });
+            let (line, polyline) = (record.line, record.polyline);
             element += 1;
             // Polylines bound no volume: not part of the body.
             if polyline {
@@ -82,6 +89,7 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             indices.extend(face.iter().map(|&i| i + base));
             arities.push(arity);
             face_lines.push(line as u32);
+            kept.push(record);
         }
     }
     let (welded, remap) = weld_exact(&positions);
@@ -121,10 +129,13 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             source: Box::new(source),
         }
     })?;
+    let (part_names, face_parts) = parts(&records, &kept);
     Ok(MeshFile {
         mesh,
         face_lines,
         warnings,
+        part_names,
+        face_parts,
     })
 }
 
@@ -171,24 +182,92 @@ fn keywords(text: &str) -> impl Iterator<Item = (usize, &str)> {
         .filter_map(|(i, line)| line.split_whitespace().next().map(|kw| (i + 1, kw)))
 }
 
-/// For each element tobj returns (each `f` or `l` line, in order): its one-based line number and
-/// whether it is a polyline.
-fn element_lines(text: &str) -> Vec<(usize, bool)> {
+/// One `f` or `l` record: its one-based line, whether it is a polyline, and the object and group
+/// (indices into [`Records::objects`] and [`Records::groups`]) in force there.
+#[derive(Clone, Copy)]
+struct Record {
+    line: usize,
+    polyline: bool,
+    object: u32,
+    group: u32,
+}
+
+/// The elements tobj returns (each `f` or `l` record, in order) and the object and group names.
+struct Records {
+    elements: Vec<Record>,
+    /// Names of `o` statements; index 0 is the unnamed part before the first.
+    objects: Vec<String>,
+    /// Names of `g` statements, likewise.
+    groups: Vec<String>,
+}
+
+fn element_lines(text: &str) -> Records {
     // Bytes, not `str::lines` and `split_whitespace`: this runs on every file, and a scan of
     // bytes takes a fraction of the time on a million-face file.
-    let mut out = Vec::new();
+    let mut records = Records {
+        elements: Vec::new(),
+        objects: vec![UNNAMED.to_owned()],
+        groups: vec![UNNAMED.to_owned()],
+    };
+    let (mut object, mut group) = (0u32, 0u32);
     for (i, line) in text.as_bytes().split(|&b| b == b'\n').enumerate() {
         let line = line.trim_ascii_start();
-        let polyline = match line.first() {
-            Some(b'f') => false,
-            Some(b'l') => true,
-            _ => continue,
-        };
-        if line.get(1).is_none_or(u8::is_ascii_whitespace) {
-            out.push((i + 1, polyline));
+        let keyword_ends = line.get(1).is_none_or(u8::is_ascii_whitespace);
+        if !keyword_ends {
+            continue;
+        }
+        let name = || String::from_utf8_lossy(line[1..].trim_ascii()).into_owned();
+        match line.first() {
+            Some(b'f') | Some(b'l') => records.elements.push(Record {
+                line: i + 1,
+                polyline: line[0] == b'l',
+                object,
+                group,
+            }),
+            Some(b'o') => {
+                records.objects.push(name());
+                object = (records.objects.len() - 1) as u32;
+            }
+            Some(b'g') => {
+                records.groups.push(name());
+                group = (records.groups.len() - 1) as u32;
+            }
+            _ => {}
         }
     }
-    out
+    records
+}
+
+/// The name of the faces before a file's first `o` (or `g`).
+const UNNAMED: &str = "unnamed";
+
+/// The parts of the kept faces (objects, or groups when the file has no `o`): the names, and
+/// for each face its part; both empty when the file names neither. Parts of the same name are
+/// one part, and names without faces are dropped.
+fn parts(records: &Records, kept: &[Record]) -> (Vec<String>, Vec<u32>) {
+    let by_object = records.objects.len() > 1;
+    if !by_object && records.groups.len() <= 1 {
+        return (Vec::new(), Vec::new());
+    }
+    let mut names: Vec<String> = Vec::new();
+    let faces = kept
+        .iter()
+        .map(|r| {
+            let name = if by_object {
+                &records.objects[r.object as usize]
+            } else {
+                &records.groups[r.group as usize]
+            };
+            match names.iter().position(|n| n == name) {
+                Some(i) => i as u32,
+                None => {
+                    names.push(name.clone());
+                    (names.len() - 1) as u32
+                }
+            }
+        })
+        .collect();
+    (names, faces)
 }
 
 /// Finds the line `tobj` rejected, by re-checking the lines of the kind its error names.

@@ -26,12 +26,64 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     if !ascii {
         check_binary_length(bytes).map_err(malformed)?;
     }
-    let patched = patch_for_detection(bytes);
-    let mut cursor = Cursor::new(patched.as_deref().unwrap_or(bytes));
+    let mut corners = Vec::new();
+    let mut part_names = Vec::new();
+    let mut face_parts = Vec::new();
+    if ascii {
+        // stl_io reads the first `solid … endsolid` block and silently stops there: each block
+        // is read on its own, and its name names a part.
+        for (name, block) in solid_blocks(bytes) {
+            let patched = patch_bare_solid(block);
+            read_triangles(
+                patched.as_deref().unwrap_or(block),
+                &mut corners,
+                &malformed,
+            )?;
+            part_names.push(name);
+            face_parts.resize(corners.len() / 3, (part_names.len() - 1) as u32);
+        }
+    } else {
+        let patched = patch_binary_header(bytes);
+        read_triangles(
+            patched.as_deref().unwrap_or(bytes),
+            &mut corners,
+            &malformed,
+        )?;
+    }
+    let (positions, remap) = weld_exact(&corners);
+    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
+    let mesh = PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
+        path: path.to_path_buf(),
+        line: None,
+        source: Box::new(e),
+    })?;
+    let face_lines = if ascii {
+        facet_lines(bytes)
+    } else {
+        Vec::new()
+    };
+    Ok(MeshFile {
+        mesh,
+        face_lines,
+        warnings: Vec::new(),
+        part_names,
+        face_parts,
+    })
+}
+
+/// Reads every triangle of one STL (binary, or one ASCII `solid` block), appending its corners;
+/// triangles are numbered on from those already read.
+fn read_triangles(
+    bytes: &[u8],
+    corners: &mut Vec<Point3<f64>>,
+    malformed: &dyn Fn(String) -> MeshError,
+) -> Result<(), MeshError> {
+    let first = corners.len() / 3;
+    let mut cursor = Cursor::new(bytes);
     let reader = stl_io::create_stl_reader(&mut cursor)
         .map_err(|e| malformed(format!("not a readable STL file: {e}")))?;
-    let mut corners = Vec::new();
-    for (t, triangle) in reader.enumerate() {
+    for (k, triangle) in reader.enumerate() {
+        let t = first + k;
         let triangle = triangle.map_err(|e| {
             malformed(format!(
                 "triangle {t} (counting from 0) cannot be read: {e}"
@@ -55,23 +107,32 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
                 .map(|v| Point3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))),
         );
     }
-    let (positions, remap) = weld_exact(&corners);
-    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
-    let mesh = PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
-        path: path.to_path_buf(),
-        line: None,
-        source: Box::new(e),
-    })?;
-    let face_lines = if ascii {
-        facet_lines(bytes)
-    } else {
-        Vec::new()
-    };
-    Ok(MeshFile {
-        mesh,
-        face_lines,
-        warnings: Vec::new(),
-    })
+    Ok(())
+}
+
+/// The `solid NAME … endsolid` blocks of an ASCII STL: each block's name (empty when it has
+/// none) and its bytes. Text after the last `endsolid` that opens no block is ignored, as
+/// readers do with trailing blank lines.
+fn solid_blocks(bytes: &[u8]) -> Vec<(String, &[u8])> {
+    let mut blocks = Vec::new();
+    let mut start: Option<(usize, String)> = None;
+    let mut offset = 0;
+    for line in bytes.split_inclusive(|&b| b == b'\n') {
+        let text = line.trim_ascii();
+        if start.is_none() && text.starts_with(b"solid") {
+            let name = String::from_utf8_lossy(text[5..].trim_ascii()).into_owned();
+            start = Some((offset, name));
+        } else if text.starts_with(b"endsolid")
+            && let Some((from, name)) = start.take()
+        {
+            blocks.push((name, &bytes[from..offset + line.len()]));
+        }
+        offset += line.len();
+    }
+    if let Some((from, name)) = start {
+        blocks.push((name, &bytes[from..]));
+    }
+    blocks
 }
 
 /// Whether the bytes are an ASCII STL: they open with `solid` (after an optional byte-order
@@ -119,28 +180,27 @@ fn check_binary_length(bytes: &[u8]) -> Result<(), String> {
     Ok(())
 }
 
-/// `stl_io` takes a file for ASCII exactly when its first line starts with `"solid "`. Two common
-/// kinds of file defeat that test, and get a patched copy:
-/// - binary files whose free-form 80-byte header starts with `"solid "` (many CAD exporters write
-///   one): recognised by their size, 84 + 50 × the triangle count, and the header's first byte
-///   changed (the header carries no data);
-/// - ASCII files that open with a bare `solid` line (no name): a space is added after `solid`.
-fn patch_for_detection(bytes: &[u8]) -> Option<Vec<u8>> {
-    let binary_size = bytes
-        .get(80..84)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .is_some_and(|n| 84 + 50 * n as u64 == bytes.len() as u64);
-    if binary_size && bytes.starts_with(b"solid") {
-        let mut copy = bytes.to_vec();
-        copy[0] = b'_';
-        return Some(copy);
+/// A binary STL whose free-form 80-byte header starts with `"solid "` (many CAD exporters write
+/// one) would be read as ASCII by `stl_io`: its first byte is changed in a copy (the header
+/// carries no data).
+fn patch_binary_header(bytes: &[u8]) -> Option<Vec<u8>> {
+    if !bytes.starts_with(b"solid") {
+        return None;
     }
-    let first_line = bytes.split(|&b| b == b'\n').next().unwrap_or_default();
-    if !binary_size && first_line.trim_ascii_end() == b"solid" {
-        let mut copy = Vec::with_capacity(bytes.len() + 1);
-        copy.extend_from_slice(b"solid ");
-        copy.extend_from_slice(&bytes[5..]);
-        return Some(copy);
+    let mut copy = bytes.to_vec();
+    copy[0] = b'_';
+    Some(copy)
+}
+
+/// `stl_io` takes a file for ASCII only when its first line starts with `"solid "`: a block
+/// that opens with a bare `solid` line (no name) gets the space in a copy.
+fn patch_bare_solid(block: &[u8]) -> Option<Vec<u8>> {
+    let first_line = block.split(|&b| b == b'\n').next().unwrap_or_default();
+    if first_line.trim_ascii_end() != b"solid" {
+        return None;
     }
-    None
+    let mut copy = Vec::with_capacity(block.len() + 1);
+    copy.extend_from_slice(b"solid ");
+    copy.extend_from_slice(&block[5..]);
+    Some(copy)
 }
