@@ -100,6 +100,32 @@ pub enum MeshError {
         /// Some faces on the holes' edges (zero-based).
         faces: Vec<usize>,
     },
+    /// A part of a composite body cannot be used.
+    #[error("part \"{part}\": {source}")]
+    InPart {
+        /// The part's name.
+        part: String,
+        /// Why.
+        source: Box<MeshError>,
+    },
+    /// The voids of a composite body remove as much material as there is, or more, or leave an
+    /// inertia tensor no body has.
+    #[error(
+        "the voids remove more than there is: {}",
+        match moments {
+            None => format!("the total mass is {mass:e}, not positive"),
+            Some(m) => format!(
+                "the total mass is {mass:e} but the principal moments {m:?} are not those of a \
+                 body (each must be positive and I1 + I2 ≥ I3)"
+            ),
+        }
+    )]
+    VoidTooLarge {
+        /// The total mass found.
+        mass: f64,
+        /// The principal moments found, when the mass was positive.
+        moments: Option<[f64; 3]>,
+    },
     /// The shell method found no surface area.
     #[error("the mesh has zero surface area")]
     ZeroArea,

@@ -31,6 +31,7 @@
 
 mod analysis;
 mod approximations;
+mod composite;
 mod defects;
 mod diagnostics;
 mod edges;
@@ -38,6 +39,7 @@ mod error;
 pub mod integrals;
 #[cfg(feature = "io")]
 mod io;
+mod materials;
 mod mesh;
 mod principal;
 mod properties;
@@ -47,12 +49,17 @@ mod solid;
 
 pub use analysis::{Analysis, Defect, MassSpec, Method, Warning, analyze, analyze_with};
 pub use approximations::{bounding_box_properties, point_mass_properties};
-pub use defects::{AUTO_WELD_RATIO, Holes, Orientation, Repairs, Shell, Weld};
+pub use composite::{Composite, Fill, Part, PartProperties, composite};
+pub use defects::{AUTO_WELD_RATIO, Holes, Orientation, Repairs, Shell, Weld, shell_faces};
 pub use diagnostics::{MeshDiagnostics, diagnose};
 pub use error::MeshError;
 pub use integrals::{IntegrationPath, VolumeIntegrals, volume_integrals};
 #[cfg(feature = "io")]
-pub use io::{MeshFile, load_mesh, parse_mesh, parse_obj, parse_stl};
+pub use io::{
+    BodyFile, LENGTH_UNITS, MaterialEntry, MeshFile, PartEntry, load_mesh, parse_mesh, parse_obj,
+    parse_stl,
+};
+pub use materials::{MATERIALS, Material, material, material_names};
 pub use mesh::{PolyMesh, weld_exact};
 pub use principal::{
     DEGENERACY_TOLERANCE, Degeneracy, PrincipalInertia, principal_inertia, symmetric_eigen,

@@ -196,6 +196,27 @@ impl PolyMesh {
         out
     }
 
+    /// The mesh made of some of the faces (each index below `face_count`), with only the
+    /// vertices they use, renumbered in order.
+    pub fn subset(&self, faces: &[u32]) -> Result<Self, MeshError> {
+        let mut new_index = vec![u32::MAX; self.positions.len()];
+        let mut positions = Vec::new();
+        let mut indices = Vec::new();
+        let mut arities = Vec::with_capacity(faces.len());
+        for &f in faces {
+            let face = self.face(f as usize);
+            for &i in face {
+                if new_index[i as usize] == u32::MAX {
+                    new_index[i as usize] = positions.len() as u32;
+                    positions.push(self.positions[i as usize]);
+                }
+                indices.push(new_index[i as usize]);
+            }
+            arities.push(face.len());
+        }
+        Self::from_flat(positions, indices, &arities)
+    }
+
     /// The same mesh with every vertex mapped through `f` (e.g. a rigid motion or a scale).
     pub fn map_positions(&self, f: impl Fn(Point3<f64>) -> Point3<f64>) -> Result<Self, MeshError> {
         let positions = self.positions.iter().map(|&p| f(p)).collect();

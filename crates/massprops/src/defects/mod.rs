@@ -174,6 +174,16 @@ fn weld_tolerance(mesh: &PolyMesh, weld: Weld) -> Result<Option<f64>, MeshError>
     }
 }
 
+/// The faces of each connected shell of `mesh` (faces joined across edges, non-manifold edges by
+/// radial pairing), in order of their first face: how a file that names no parts splits into
+/// parts.
+pub fn shell_faces(mesh: &PolyMesh) -> Vec<Vec<u32>> {
+    shells::split(mesh, &EdgeTable::new(mesh))
+        .into_iter()
+        .map(|p| p.faces)
+        .collect()
+}
+
 /// Turns outward every shell whose outermost container (itself, when it is inside no other) is
 /// wound inward, and reports the shells that still disagree with their depth.
 fn orient(

@@ -2,11 +2,13 @@
 //! `stl_io`). Positions with identical coordinates are welded so per-corner splitting in a file
 //! never changes the topology; every object and group of a file forms one body.
 
+mod body;
 mod obj;
 mod stl;
 
 use std::path::Path;
 
+pub use body::{BodyFile, LENGTH_UNITS, MaterialEntry, PartEntry};
 pub use obj::parse_obj;
 pub use stl::parse_stl;
 
@@ -40,6 +42,28 @@ impl MeshFile {
         let mut analysis = analyze_with(&self.mesh, method, spec, repairs)?;
         analysis.add_warnings(self.warnings.iter().cloned());
         Ok(analysis)
+    }
+
+    /// The file's parts, each a name and its faces: the named parts (objects, groups, STL
+    /// solids), or else the connected shells, named "shell 1", "shell 2", ….
+    pub fn parts(&self) -> Vec<(String, Vec<u32>)> {
+        if self.face_parts.is_empty() {
+            return crate::shell_faces(&self.mesh)
+                .into_iter()
+                .enumerate()
+                .map(|(i, faces)| (format!("shell {}", i + 1), faces))
+                .collect();
+        }
+        let mut parts: Vec<(String, Vec<u32>)> = self
+            .part_names
+            .iter()
+            .map(|n| (n.clone(), Vec::new()))
+            .collect();
+        for (f, &p) in self.face_parts.iter().enumerate() {
+            parts[p as usize].1.push(f as u32);
+        }
+        parts.retain(|p| !p.1.is_empty());
+        parts
     }
 
     /// The file line of face `f`, when the format has lines.

@@ -1,0 +1,432 @@
+//! Body files: a body made of parts, in TOML. Each part names a mesh file (relative to the body
+//! file), optionally one of its objects, its material and where it sits:
+//!
+//! ```toml
+//! units = "mm"                                  # lengths here and in the meshes: m, cm, mm, in, ft
+//! [[part]]
+//! name = "head"
+//! mesh = "head.obj"                             # OBJ or STL
+//! object = "head"                               # optional: one object or group (or STL solid)
+//! density = 7850                                # kg/m³; or material = "steel", or mass = 0.8 (kg)
+//! rotation = { axis = [0, 0, 1], degrees = 90 } # optional; first, about the mesh origin
+//! translation = [0, 320, 0]                     # optional, in `units`
+//! void = false                                  # true: removes material of `density`
+//! thin_wall = 1.5                               # optional: a wall this thick (in `units`)
+//! ```
+//!
+//! Everything is converted to SI on reading: the parts' meshes are in metres.
+
+use std::path::{Path, PathBuf};
+
+use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+use serde::Deserialize;
+use toml::Spanned;
+
+use crate::{Fill, MeshError, Part, load_mesh, material, material_names};
+
+/// Length units a body file may use, with their size in metres.
+pub const LENGTH_UNITS: [(&str, f64); 5] = [
+    ("m", 1.0),
+    ("cm", 0.01),
+    ("mm", 0.001),
+    ("in", 0.0254),
+    ("ft", 0.3048),
+];
+
+/// A body file as written: the parts and their settings, not yet loaded.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyFile {
+    /// The file it was read from (meshes are relative to its folder).
+    pub path: PathBuf,
+    /// The length unit's name (one of [`LENGTH_UNITS`]).
+    pub units: String,
+    /// The parts, in order.
+    pub parts: Vec<PartEntry>,
+}
+
+/// One `[[part]]` of a body file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PartEntry {
+    /// Its name.
+    pub name: String,
+    /// The mesh file, as written (relative to the body file's folder unless absolute).
+    pub mesh: PathBuf,
+    /// One object, group or STL solid of that file; the whole file when `None`.
+    pub object: Option<String>,
+    /// Its material.
+    pub material: MaterialEntry,
+    /// Rotation axis (any length) and angle in degrees, applied first, about the mesh origin.
+    pub rotation: Option<([f64; 3], f64)>,
+    /// Translation, in the file's units.
+    pub translation: [f64; 3],
+    /// A void: removes material of its density.
+    pub void: bool,
+    /// A thin wall of this thickness (in the file's units) on the faces, instead of a solid.
+    pub thin_wall: Option<f64>,
+    /// The line of its `[[part]]` header, for messages.
+    pub line: usize,
+}
+
+/// How a part's mass is given.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MaterialEntry {
+    /// `density = ρ` (kg/m³).
+    Density(f64),
+    /// `material = "steel"`: a preset of [`MATERIALS`](crate::MATERIALS).
+    Preset(String),
+    /// `mass = m` (kg).
+    Mass(f64),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBody {
+    units: Option<Spanned<String>>,
+    #[serde(default)]
+    part: Vec<Spanned<RawPart>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawPart {
+    name: Option<String>,
+    mesh: Option<Spanned<String>>,
+    object: Option<Spanned<String>>,
+    density: Option<Spanned<f64>>,
+    material: Option<Spanned<String>>,
+    mass: Option<Spanned<f64>>,
+    rotation: Option<Spanned<RawRotation>>,
+    translation: Option<[f64; 3]>,
+    #[serde(default)]
+    void: bool,
+    thin_wall: Option<Spanned<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRotation {
+    axis: [f64; 3],
+    degrees: f64,
+}
+
+impl BodyFile {
+    /// Reads a body file (not its meshes).
+    pub fn read(path: &Path) -> Result<Self, MeshError> {
+        let text = std::fs::read_to_string(path).map_err(|source| MeshError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::parse(&text, path)
+    }
+
+    /// Parses body-file text; `path` names it in messages and anchors the meshes' paths.
+    pub fn parse(text: &str, path: &Path) -> Result<Self, MeshError> {
+        let error = |at: Option<usize>, message: String| MeshError::Malformed {
+            path: path.to_path_buf(),
+            line: at.map(|offset| line_of(text, offset)),
+            message,
+        };
+        let raw: RawBody = toml::from_str(text).map_err(|e| {
+            error(
+                e.span().map(|s| s.start),
+                e.message().trim_end().replace('\n', " "),
+            )
+        })?;
+        let units = match &raw.units {
+            None => "m".to_owned(),
+            Some(u) => {
+                let name = u.get_ref().to_ascii_lowercase();
+                if !LENGTH_UNITS.iter().any(|(n, _)| *n == name) {
+                    let names: Vec<&str> = LENGTH_UNITS.iter().map(|(n, _)| *n).collect();
+                    return Err(error(
+                        Some(u.span().start),
+                        format!(
+                            "units: unknown unit {:?} (use one of {})",
+                            u.get_ref(),
+                            names.join(", ")
+                        ),
+                    ));
+                }
+                name
+            }
+        };
+        if raw.part.is_empty() {
+            return Err(error(None, "the body has no [[part]]".to_owned()));
+        }
+        let mut parts = Vec::with_capacity(raw.part.len());
+        for (k, spanned) in raw.part.iter().enumerate() {
+            let at = spanned.span().start;
+            let p = spanned.get_ref();
+            let name = p.name.clone().unwrap_or_else(|| format!("part {}", k + 1));
+            let here = |key: &str, span: Option<usize>, message: String| {
+                error(
+                    Some(span.unwrap_or(at)),
+                    format!("part \"{name}\": {key}: {message}"),
+                )
+            };
+            let Some(mesh) = &p.mesh else {
+                return Err(here(
+                    "mesh",
+                    None,
+                    "missing (the part's OBJ or STL file)".into(),
+                ));
+            };
+            let given = [p.density.is_some(), p.material.is_some(), p.mass.is_some()];
+            let material = match (&p.density, &p.material, &p.mass) {
+                _ if given.iter().filter(|&&g| g).count() > 1 => {
+                    return Err(here(
+                        "density",
+                        None,
+                        "give one of density, material and mass".into(),
+                    ));
+                }
+                (Some(d), _, _) => {
+                    positive_at(*d.get_ref())
+                        .map_err(|m| here("density", Some(d.span().start), m))?;
+                    MaterialEntry::Density(*d.get_ref())
+                }
+                (_, Some(m), _) => {
+                    if material(m.get_ref()).is_none() {
+                        return Err(here(
+                            "material",
+                            Some(m.span().start),
+                            format!(
+                                "unknown material {:?} (the presets: {})",
+                                m.get_ref(),
+                                material_names()
+                            ),
+                        ));
+                    }
+                    MaterialEntry::Preset(m.get_ref().clone())
+                }
+                (_, _, Some(m)) => {
+                    positive_at(*m.get_ref()).map_err(|e| here("mass", Some(m.span().start), e))?;
+                    if p.void || p.thin_wall.is_some() {
+                        return Err(here(
+                            "mass",
+                            Some(m.span().start),
+                            "a void or a thin wall takes a density or a material, not a mass"
+                                .into(),
+                        ));
+                    }
+                    MaterialEntry::Mass(*m.get_ref())
+                }
+                (None, None, None) => {
+                    return Err(here(
+                        "density",
+                        None,
+                        "missing (give density, material or mass)".into(),
+                    ));
+                }
+            };
+            let rotation = match &p.rotation {
+                None => None,
+                Some(r) => {
+                    let raw = r.get_ref();
+                    let axis = Vector3::from(raw.axis);
+                    if !(axis.norm() > 0.0 && axis.iter().all(|c| c.is_finite()))
+                        || !raw.degrees.is_finite()
+                    {
+                        return Err(here(
+                            "rotation",
+                            Some(r.span().start),
+                            "the axis must be a non-zero vector and degrees a number".into(),
+                        ));
+                    }
+                    Some((raw.axis, raw.degrees))
+                }
+            };
+            let thin_wall = match &p.thin_wall {
+                None => None,
+                Some(t) => {
+                    positive_at(*t.get_ref())
+                        .map_err(|m| here("thin_wall", Some(t.span().start), m))?;
+                    if p.void {
+                        return Err(here(
+                            "thin_wall",
+                            Some(t.span().start),
+                            "a void has no wall".into(),
+                        ));
+                    }
+                    Some(*t.get_ref())
+                }
+            };
+            let translation = p.translation.unwrap_or([0.0; 3]);
+            if translation.iter().any(|c| !c.is_finite()) {
+                return Err(here("translation", None, "not a finite vector".into()));
+            }
+            parts.push(PartEntry {
+                name,
+                mesh: PathBuf::from(mesh.get_ref()),
+                object: p.object.as_ref().map(|o| o.get_ref().clone()),
+                material,
+                rotation,
+                translation,
+                void: p.void,
+                thin_wall,
+                line: line_of(text, at),
+            });
+        }
+        Ok(Self {
+            path: path.to_path_buf(),
+            units,
+            parts,
+        })
+    }
+
+    /// The size of the file's length unit in metres.
+    pub fn unit(&self) -> f64 {
+        LENGTH_UNITS
+            .iter()
+            .find(|(n, _)| *n == self.units)
+            .map_or(1.0, |u| u.1)
+    }
+
+    /// Loads every part's mesh (each file once) and builds the parts, in metres.
+    pub fn load(&self) -> Result<Vec<Part>, MeshError> {
+        let folder = self.path.parent().unwrap_or(Path::new(""));
+        let unit = self.unit();
+        let mut loaded: Vec<(PathBuf, crate::MeshFile)> = Vec::new();
+        let mut parts = Vec::with_capacity(self.parts.len());
+        for entry in &self.parts {
+            let at = |message: String| MeshError::Malformed {
+                path: self.path.clone(),
+                line: Some(entry.line),
+                message: format!("part \"{}\": {message}", entry.name),
+            };
+            let file_path = folder.join(&entry.mesh);
+            let index = match loaded.iter().position(|(p, _)| *p == file_path) {
+                Some(i) => i,
+                None => {
+                    if !file_path.is_file() {
+                        return Err(at(format!("mesh: {} does not exist", file_path.display())));
+                    }
+                    loaded.push((file_path.clone(), load_mesh(&file_path)?));
+                    loaded.len() - 1
+                }
+            };
+            let file = &loaded[index].1;
+            let mesh = match &entry.object {
+                None => file.mesh.clone(),
+                Some(object) => {
+                    let parts = file.parts();
+                    let Some((_, faces)) = parts.iter().find(|(n, _)| n == object) else {
+                        let names: Vec<&str> = parts.iter().map(|(n, _)| n.as_str()).collect();
+                        return Err(at(format!(
+                            "object: {} has no object {object:?} (it has: {})",
+                            entry.mesh.display(),
+                            names.join(", ")
+                        )));
+                    };
+                    file.mesh.subset(faces)?
+                }
+            };
+            let mesh = mesh.map_positions(|p| p * unit)?;
+            let density = |m: &MaterialEntry| match m {
+                MaterialEntry::Density(d) => *d,
+                MaterialEntry::Preset(name) => material(name).map_or(f64::NAN, |m| m.density),
+                MaterialEntry::Mass(_) => f64::NAN,
+            };
+            let fill = match (&entry.material, entry.void, entry.thin_wall) {
+                (MaterialEntry::Mass(m), ..) => Fill::Mass { mass: *m },
+                (m, true, _) => Fill::Void {
+                    density: density(m),
+                },
+                (m, false, Some(t)) => Fill::ThinWall {
+                    density: density(m),
+                    thickness: t * unit,
+                },
+                (m, false, None) => Fill::Solid {
+                    density: density(m),
+                },
+            };
+            let rotation = entry
+                .rotation
+                .map_or_else(UnitQuaternion::identity, |(a, deg)| {
+                    UnitQuaternion::from_axis_angle(
+                        &Unit::new_normalize(Vector3::from(a)),
+                        deg.to_radians(),
+                    )
+                });
+            let t = Vector3::from(entry.translation) * unit;
+            parts.push(Part {
+                name: entry.name.clone(),
+                mesh,
+                fill,
+                placement: Isometry3::from_parts(Translation3::from(t), rotation),
+            });
+        }
+        Ok(parts)
+    }
+
+    /// The body file's text (what [`BodyFile::parse`] reads back to the same parts).
+    pub fn to_toml(&self) -> String {
+        let mut s = format!("units = \"{}\"\n", self.units);
+        for p in &self.parts {
+            s.push_str("\n[[part]]\n");
+            s.push_str(&format!("name = {}\n", quoted(&p.name)));
+            s.push_str(&format!("mesh = {}\n", quoted(&p.mesh.to_string_lossy())));
+            if let Some(o) = &p.object {
+                s.push_str(&format!("object = {}\n", quoted(o)));
+            }
+            match &p.material {
+                MaterialEntry::Density(d) => s.push_str(&format!("density = {}\n", number(*d))),
+                MaterialEntry::Preset(m) => s.push_str(&format!("material = {}\n", quoted(m))),
+                MaterialEntry::Mass(m) => s.push_str(&format!("mass = {}\n", number(*m))),
+            }
+            if let Some((axis, degrees)) = p.rotation {
+                s.push_str(&format!(
+                    "rotation = {{ axis = {}, degrees = {} }}\n",
+                    triple(axis),
+                    number(degrees)
+                ));
+            }
+            if p.translation != [0.0; 3] {
+                s.push_str(&format!("translation = {}\n", triple(p.translation)));
+            }
+            if p.void {
+                s.push_str("void = true\n");
+            }
+            if let Some(t) = p.thin_wall {
+                s.push_str(&format!("thin_wall = {}\n", number(t)));
+            }
+        }
+        s
+    }
+}
+
+/// A TOML basic string.
+fn quoted(text: &str) -> String {
+    let escaped = text.replace('\\', "\\\\").replace('"', "\\\"");
+    format!("\"{escaped}\"")
+}
+
+/// A float TOML reads back exactly (shortest round-trip form, with a decimal point).
+fn number(x: f64) -> String {
+    let s = format!("{x:?}");
+    if s.contains(['.', 'e', 'E', 'n', 'i']) {
+        s
+    } else {
+        format!("{s}.0")
+    }
+}
+
+fn triple(v: [f64; 3]) -> String {
+    format!("[{}, {}, {}]", number(v[0]), number(v[1]), number(v[2]))
+}
+
+fn positive_at(x: f64) -> Result<(), String> {
+    if x.is_finite() && x > 0.0 {
+        Ok(())
+    } else {
+        Err(format!("{x} is not a positive number"))
+    }
+}
+
+/// The one-based line of byte `offset` of `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    1 + text.as_bytes()[..offset.min(text.len())]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+}

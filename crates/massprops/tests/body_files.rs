@@ -1,0 +1,187 @@
+//! Body files: a hammer in millimetres against its closed form, the round trip through
+//! `to_toml`, and every error naming the file, the line and the key.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+
+use common::{assert_mat, assert_rel, box_tensor};
+use massprops::{BodyFile, Repairs, composite, shapes};
+use nalgebra::{Matrix3, Point3, Vector3};
+
+/// A folder with two box meshes: `head.obj` (two objects, `head` and `spare`) and `bar.stl`.
+fn folder(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("massprops-body-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    // 100 × 30 × 30 mm head centred at the origin; a spare 10 mm cube far away.
+    let mut head = shapes::cuboid(Vector3::new(100.0, 30.0, 30.0), Point3::origin());
+    let obj_head = shapes::to_obj("head", "a hammer head in mm", &head);
+    let spare = shapes::cuboid(Vector3::repeat(10.0), Point3::new(500.0, 0.0, 0.0));
+    let obj_spare = shapes::to_obj("spare", "", &spare);
+    head.append(&spare);
+    // One file, two objects: the spare's indices follow the head's eight vertices.
+    let spare_part: String = obj_spare
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| {
+            if let Some(rest) = l.strip_prefix("f ") {
+                let shifted: Vec<String> = rest
+                    .split_whitespace()
+                    .map(|i| (i.parse::<usize>().expect("index") + 8).to_string())
+                    .collect();
+                format!("f {}\n", shifted.join(" "))
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect();
+    std::fs::write(dir.join("head.obj"), format!("{obj_head}{spare_part}")).expect("write");
+    std::fs::write(
+        dir.join("bar.obj"),
+        shapes::to_obj(
+            "bar",
+            "a handle in mm",
+            &shapes::cuboid(Vector3::new(30.0, 300.0, 30.0), Point3::origin()),
+        ),
+    )
+    .expect("write");
+    dir
+}
+
+fn steiner(m: f64, d: Vector3<f64>) -> Matrix3<f64> {
+    (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * m
+}
+
+const HAMMER: &str = r#"units = "mm"
+
+[[part]]
+name = "head"
+mesh = "head.obj"
+object = "head"
+material = "steel"
+translation = [0, 315, 0]
+
+[[part]]
+name = "handle"
+mesh = "bar.obj"
+density = 600
+rotation = { axis = [0, 1, 0], degrees = 90 }
+translation = [0, 150, 0]
+"#;
+
+#[test]
+fn a_hammer_in_millimetres_matches_its_closed_form_and_reads_back() {
+    let dir = folder("hammer");
+    let path = dir.join("hammer.toml");
+    std::fs::write(&path, HAMMER).expect("write");
+    let body = BodyFile::read(&path).expect("valid");
+    assert_eq!(body.units, "mm");
+    let c = composite(&body.load().expect("meshes"), &Repairs::default()).expect("two parts");
+    let (mh, ms) = (7850.0 * 0.1 * 0.03 * 0.03, 600.0 * 0.03 * 0.3 * 0.03);
+    let m = mh + ms;
+    let y = (mh * 0.315 + ms * 0.15) / m;
+    assert_rel(c.properties.mass, m, 1e-13, "mass in kg");
+    assert_rel(c.properties.center_of_mass.y, y, 1e-13, "centre in metres");
+    // The square handle turned about its own long axis is the same box.
+    let want = box_tensor(mh, 0.1, 0.03, 0.03)
+        + steiner(mh, Vector3::new(0.0, 0.315 - y, 0.0))
+        + box_tensor(ms, 0.03, 0.3, 0.03)
+        + steiner(ms, Vector3::new(0.0, 0.15 - y, 0.0));
+    assert_mat(&c.properties.inertia_com, &want, 1e-12, "hammer");
+    // The centre of mass lies in the steel head's half.
+    assert!(c.properties.center_of_mass.y > 0.15);
+
+    let again = BodyFile::parse(&body.to_toml(), &path).expect("round trip");
+    assert_eq!(again.parts.len(), 2);
+    for (a, b) in again.parts.iter().zip(&body.parts) {
+        assert_eq!(
+            (
+                &a.name,
+                &a.mesh,
+                &a.object,
+                &a.material,
+                a.rotation,
+                a.translation
+            ),
+            (
+                &b.name,
+                &b.mesh,
+                &b.object,
+                &b.material,
+                b.rotation,
+                b.translation
+            )
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The error for `text` as a body file in `dir`, reading the meshes too.
+fn error(dir: &Path, text: &str) -> String {
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, text).expect("write");
+    match BodyFile::read(&path).and_then(|b| b.load().map(|_| ())) {
+        Ok(()) => panic!("accepted: {text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn every_mistake_names_the_file_the_line_and_the_key() {
+    let dir = folder("errors");
+    let part = "[[part]]\nname = \"head\"\nmesh = \"head.obj\"\n";
+    let cases: [(String, &[&str]); 9] = [
+        (
+            format!("{part}densty = 3\n"),
+            &["bad.toml, line 4", "unknown field `densty`"],
+        ),
+        (
+            format!("{part}material = \"unobtainium\"\n"),
+            &["line 4", "material", "unknown material", "steel", "wood"],
+        ),
+        (
+            "[[part]]\nname = \"head\"\ndensity = 1\n".to_owned(),
+            &["line 1", "part \"head\": mesh: missing"],
+        ),
+        (
+            "[[part]]\nname = \"x\"\nmesh = \"nowhere.obj\"\ndensity = 1\n".to_owned(),
+            &["line 1", "mesh:", "nowhere.obj does not exist"],
+        ),
+        (
+            format!("{part}object = \"handle\"\ndensity = 1\n"),
+            &["line 1", "has no object \"handle\"", "it has: head, spare"],
+        ),
+        (
+            format!("units = \"furlong\"\n{part}density = 1\n"),
+            &["line 1", "units", "furlong", "mm, in, ft"],
+        ),
+        (
+            format!("{part}density = 1\nmass = 2\n"),
+            &["part \"head\"", "one of density, material and mass"],
+        ),
+        (
+            format!("{part}density = -5\n"),
+            &["line 4", "density", "-5 is not a positive number"],
+        ),
+        (format!("{part}\n"), &["part \"head\"", "density: missing"]),
+    ];
+    for (text, wanted) in &cases {
+        let e = error(&dir, text);
+        for w in *wanted {
+            assert!(e.contains(w), "{e:?} lacks {w:?}");
+        }
+    }
+    // A void larger than the solid: the composite says so.
+    let voids = format!(
+        "{part}object = \"spare\"\ndensity = 1\n[[part]]\nname = \"hole\"\nmesh = \"bar.obj\"\ndensity = 1\nvoid = true\n"
+    );
+    let path = dir.join("void.toml");
+    std::fs::write(&path, voids).expect("write");
+    let parts = BodyFile::read(&path)
+        .expect("valid")
+        .load()
+        .expect("meshes");
+    let e = composite(&parts, &Repairs::default()).expect_err("negative mass");
+    assert!(e.to_string().contains("remove more than there is"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}
