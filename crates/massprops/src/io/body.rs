@@ -224,9 +224,10 @@ impl BodyFile {
                 Some(r) => {
                     let raw = r.get_ref();
                     let axis = Vector3::from(raw.axis);
-                    if !(axis.norm() > 0.0 && axis.iter().all(|c| c.is_finite()))
-                        || !raw.degrees.is_finite()
-                    {
+                    let valid = axis.norm() > 0.0
+                        && axis.iter().all(|c| c.is_finite())
+                        && raw.degrees.is_finite();
+                    if !valid {
                         return Err(here(
                             "rotation",
                             Some(r.span().start),
