@@ -943,3 +943,95 @@ fn mesh_counts_of_a_closed_and_an_open_cube_of_quads() {
     assert_eq!(mesh["open_edges"], 4);
     assert!(close(f(&j["surface_area"]), 5.0, 1e-15));
 }
+
+#[test]
+fn the_hammer_body_file_matches_its_closed_form() {
+    // Head: steel box 0.12 × 0.03 × 0.03 centred at (0.02, 0.315, 0). Handle: wooden regular
+    // 24-gon prism of circumradius R = 0.015 along y from 0 to 0.3; per unit mass its polar
+    // moment is R²(2 + cos θ)/6, θ = 2π/24 (n triangles from the centre), and I_xx = I_zz =
+    // R²(2 + cos θ)/12 + L²/12.
+    let j = props_json(&["assets/hammer.toml"]);
+    assert_eq!(j["kind"], "composite");
+    let (n, r, l) = (24.0, 0.015, 0.3);
+    let theta = std::f64::consts::TAU / n;
+    let handle_area = n / 2.0 * r * r * theta.sin();
+    let (mh, ms) = (7850.0 * 0.12 * 0.03 * 0.03, 600.0 * handle_area * l);
+    let m = mh + ms;
+    let com = [mh * 0.02 / m, (mh * 0.315 + ms * 0.15) / m, 0.0];
+    assert!(close(f(&j["mass"]), m, 1e-13));
+    for k in 0..2 {
+        assert!(close(f(&j["center_of_mass"][k]), com[k], 1e-13), "{k}");
+    }
+    let polar = ms * r * r * (2.0 + theta.cos()) / 6.0;
+    let across = ms * (r * r * (2.0 + theta.cos()) / 12.0 + l * l / 12.0);
+    let head = |a: f64, b: f64| mh * (a * a + b * b) / 12.0;
+    let (dx_h, dy_h) = (0.02 - com[0], 0.315 - com[1]);
+    let (dx_s, dy_s) = (-com[0], 0.15 - com[1]);
+    let ixx = head(0.03, 0.03) + mh * dy_h * dy_h + across + ms * dy_s * dy_s;
+    let iyy = head(0.12, 0.03) + mh * dx_h * dx_h + polar + ms * dx_s * dx_s;
+    let izz = head(0.12, 0.03)
+        + mh * (dx_h * dx_h + dy_h * dy_h)
+        + across
+        + ms * (dx_s * dx_s + dy_s * dy_s);
+    let ixy = -(mh * dx_h * dy_h + ms * dx_s * dy_s);
+    let got = &j["inertia_com"];
+    assert!(close(f(&got[0][0]), ixx, 1e-12), "{got}");
+    assert!(close(f(&got[1][1]), iyy, 1e-12), "{got}");
+    assert!(close(f(&got[2][2]), izz, 1e-12), "{got}");
+    assert!(close(f(&got[0][1]), ixy, 1e-12), "{got}");
+    let parts = j["parts"].as_array().expect("parts");
+    assert_eq!(parts.len(), 2);
+    assert_eq!(parts[0]["name"], "head");
+    assert!(close(f(&parts[0]["mass"]), mh, 1e-13));
+    assert!(close(f(&parts[1]["density"]), 600.0, 1e-15));
+    // The centre of mass is in the head's half.
+    assert!(com[1] > 0.15);
+
+    // The same through the mesh file's objects and per-part materials.
+    let k = props_json(&[
+        "assets/hammer.obj",
+        "--material-of",
+        "head=steel",
+        "--density-of",
+        "handle=600",
+    ]);
+    assert!(close(f(&k["mass"]), m, 1e-13));
+    // A part that is not there is named with the ones that are.
+    let out = run(&["props", "assets/hammer.obj", "--density-of", "shaft=600"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("no part \"shaft\" (its parts: handle, head)"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn export_takes_a_body_file() {
+    let out = run(&["export", "assets/hollow_box.toml", "--format", "json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let j: Value = serde_json::from_slice(&out.stdout).expect("json");
+    // 2700 kg/m³ × (2 × 0.3³ − 0.26³).
+    let m = 2700.0 * (2.0 * 0.027 - 0.26f64.powi(3));
+    let text = j.to_string();
+    assert!(text.contains("mass"), "{text}");
+    let mass = j["mass"]
+        .as_f64()
+        .or_else(|| j["mass_kg"].as_f64())
+        .expect("mass");
+    assert!(close(mass, m, 1e-13), "{mass} vs {m}");
+    // A body file brings its own units and materials.
+    let out = run(&[
+        "export",
+        "assets/hammer.toml",
+        "--format",
+        "urdf",
+        "--density",
+        "5",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+}

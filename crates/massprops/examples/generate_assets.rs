@@ -1,4 +1,5 @@
-//! Writes the sample bodies of `massprops::shapes::samples` to `assets/*.obj` at the workspace root.
+//! Writes the sample bodies of `massprops::shapes::samples`, and the parts the body files use, to
+//! `assets/*.obj` at the workspace root.
 
 use std::path::Path;
 
@@ -10,5 +11,14 @@ fn main() -> std::io::Result<()> {
         std::fs::write(&path, massprops::shapes::to_obj(name, comment, &mesh))?;
         println!("wrote {}", path.display());
     }
+    // Parts for the body files (assets/*.toml), not a sample body by itself.
+    let path = dir.join("hollow_box.obj");
+    let parts = massprops::shapes::hollow_box_parts();
+    let comment = "a 0.3 m box and its 0.26 m cavity, for hollow_box.toml; metres";
+    std::fs::write(
+        &path,
+        massprops::shapes::to_obj("hollow_box", comment, &parts),
+    )?;
+    println!("wrote {}", path.display());
     Ok(())
 }

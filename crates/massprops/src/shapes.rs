@@ -10,13 +10,15 @@ use nalgebra::{Isometry3, Point2, Point3, Vector3};
 
 use crate::PolyMesh;
 
-/// A mesh under construction: positions and face loops.
+/// A mesh under construction: positions and face loops, optionally in named parts.
 #[derive(Debug, Clone, Default)]
 pub struct MeshBuilder {
     /// Vertex positions.
     pub positions: Vec<Point3<f64>>,
     /// Faces as vertex-index loops.
     pub faces: Vec<Vec<usize>>,
+    /// Named parts, each from its first face to the next part's: written as OBJ objects.
+    pub objects: Vec<(String, usize)>,
 }
 
 impl MeshBuilder {
@@ -27,6 +29,12 @@ impl MeshBuilder {
     pub fn build(&self) -> PolyMesh {
         PolyMesh::new(self.positions.clone(), &self.faces)
             .expect("generated shapes are valid by construction")
+    }
+
+    /// Appends another part under a name (an OBJ object when written), keeping both.
+    pub fn append_named(&mut self, name: &str, other: &MeshBuilder) -> &mut Self {
+        self.objects.push((name.to_owned(), self.faces.len()));
+        self.append(other)
     }
 
     /// Appends another part, keeping both (no welding).
@@ -50,18 +58,22 @@ impl MeshBuilder {
         self
     }
 
-    /// Splits every face into a triangle fan from its first corner.
+    /// Splits every face into a triangle fan from its first corner (named parts keep their
+    /// faces).
     pub fn triangulated(mut self) -> Self {
-        self.faces = self
-            .faces
-            .iter()
-            .flat_map(|f| {
-                f[1..]
-                    .windows(2)
-                    .map(|w| vec![f[0], w[0], w[1]])
-                    .collect::<Vec<_>>()
-            })
-            .collect();
+        let mut first_triangle = Vec::with_capacity(self.faces.len());
+        let mut triangles = Vec::new();
+        for f in &self.faces {
+            first_triangle.push(triangles.len());
+            triangles.extend(f[1..].windows(2).map(|w| vec![f[0], w[0], w[1]]));
+        }
+        for (_, first) in &mut self.objects {
+            *first = first_triangle
+                .get(*first)
+                .copied()
+                .unwrap_or(triangles.len());
+        }
+        self.faces = triangles;
         self
     }
 }
@@ -78,7 +90,11 @@ pub fn prism(outline: &[Point2<f64>], z0: f64, z1: f64) -> MeshBuilder {
         let j = (i + 1) % n;
         vec![i, j, n + j, n + i]
     }));
-    MeshBuilder { positions, faces }
+    MeshBuilder {
+        positions,
+        faces,
+        objects: Vec::new(),
+    }
 }
 
 /// An axis-aligned box of edge lengths `size` centred on `center`, six quads.
@@ -128,7 +144,11 @@ pub fn elliptic_ring(a: f64, b: f64, width: f64, z0: f64, z1: f64, segments: usi
         faces.push(vec![ob + i, ob + j, ot + j, ot + i]);
         faces.push(vec![ib + j, ib + i, it + i, it + j]);
     }
-    MeshBuilder { positions, faces }
+    MeshBuilder {
+        positions,
+        faces,
+        objects: Vec::new(),
+    }
 }
 
 /// A torus about the z axis: major radius `major`, tube radius `minor`, quads.
@@ -148,7 +168,11 @@ pub fn torus(major: f64, minor: f64, around: usize, tube: usize) -> MeshBuilder 
             (0..tube).map(move |j| vec![at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)])
         })
         .collect();
-    MeshBuilder { positions, faces }
+    MeshBuilder {
+        positions,
+        faces,
+        objects: Vec::new(),
+    }
 }
 
 /// The T-handle ("Dzhanibekov wing nut"): an 80 mm crossbar along x on top of a 50 mm stem along
@@ -193,33 +217,51 @@ pub fn cube() -> MeshBuilder {
 }
 
 /// A hammer: a 300 mm cylindrical handle (radius 15 mm, 24 sides) along y, topped by a
-/// 120 × 30 × 30 mm head offset towards +x (metres). Two touching parts.
+/// 120 × 30 × 30 mm head offset towards +x (metres). Two touching parts, objects `handle` and
+/// `head`.
 pub fn hammer() -> MeshBuilder {
     let handle = cylinder(0.015, 0.0, 0.3, 24).transformed(&y_up());
     let head = cuboid(
         Vector3::new(0.12, 0.03, 0.03),
         Point3::new(0.02, 0.315, 0.0),
     );
-    let mut m = handle;
-    m.append(&head);
+    let mut m = MeshBuilder::default();
+    m.append_named("handle", &handle)
+        .append_named("head", &head);
     m
 }
 
 /// A tennis racket (metres): an elliptical frame (outer semi-axes 135 × 165 mm, 12 mm wide,
 /// 20 mm deep), a 2 mm string bed filling it, and a 270 mm handle of 30 × 25 mm along −y.
+/// Objects `frame`, `strings` and `handle`.
 pub fn tennis_racket() -> MeshBuilder {
     let (a, b, width, depth, segments) = (0.135, 0.165, 0.012, 0.02, 64);
-    let mut m = elliptic_ring(a, b, width, -depth / 2.0, depth / 2.0, segments);
-    m.append(&prism(
-        &ellipse(a - width, b - width, segments),
-        -0.001,
-        0.001,
-    ));
+    let mut m = MeshBuilder::default();
+    m.append_named(
+        "frame",
+        &elliptic_ring(a, b, width, -depth / 2.0, depth / 2.0, segments),
+    );
+    m.append_named(
+        "strings",
+        &prism(&ellipse(a - width, b - width, segments), -0.001, 0.001),
+    );
     let handle_length = 0.27;
-    m.append(&cuboid(
-        Vector3::new(0.03, handle_length, 0.025),
-        Point3::new(0.0, -b - handle_length / 2.0, 0.0),
-    ));
+    m.append_named(
+        "handle",
+        &cuboid(
+            Vector3::new(0.03, handle_length, 0.025),
+            Point3::new(0.0, -b - handle_length / 2.0, 0.0),
+        ),
+    );
+    m
+}
+
+/// Two 0.3 m boxes for the hollow-box sample: `outer` and, inside it, `cavity` (0.26 m, wound
+/// outward like any solid: the body file makes it a void).
+pub fn hollow_box_parts() -> MeshBuilder {
+    let mut m = MeshBuilder::default();
+    m.append_named("outer", &cuboid(Vector3::repeat(0.3), Point3::origin()));
+    m.append_named("cavity", &cuboid(Vector3::repeat(0.26), Point3::origin()));
     m
 }
 
@@ -258,18 +300,25 @@ pub fn samples() -> Vec<(&'static str, &'static str, MeshBuilder)> {
     ]
 }
 
-/// Writes a mesh as OBJ text (one `o` object, shortest round-trip decimal coordinates).
+/// Writes a mesh as OBJ text (shortest round-trip decimal coordinates): one `o` object called
+/// `name`, or one per named part.
 pub fn to_obj(name: &str, comment: &str, mesh: &MeshBuilder) -> String {
     let mut s = String::new();
     // Writing into a String cannot fail.
     let _ = writeln!(
         s,
-        "# {comment}\n# generated by `cargo run -p massprops --example generate_assets`\no {name}"
+        "# {comment}\n# generated by `cargo run -p massprops --example generate_assets`"
     );
+    if mesh.objects.is_empty() {
+        let _ = writeln!(s, "o {name}");
+    }
     for p in &mesh.positions {
         let _ = writeln!(s, "v {} {} {}", p.x, p.y, p.z);
     }
-    for f in &mesh.faces {
+    for (k, f) in mesh.faces.iter().enumerate() {
+        if let Some((object, _)) = mesh.objects.iter().find(|(_, first)| *first == k) {
+            let _ = writeln!(s, "o {object}");
+        }
         s.push('f');
         for i in f {
             let _ = write!(s, " {}", i + 1);

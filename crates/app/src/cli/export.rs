@@ -3,26 +3,32 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use massprops::{MassSpec, Method};
+use massprops::{Fill, MassProperties, MassSpec, Material, Method};
 
 use super::error::{CliError, positive};
+use super::parts::{PartArgs, body_parts, is_body_file, mesh_parts};
 use super::repair::RepairArgs;
 use crate::export::{
-    ExportError, ExportOptions, Format, Frame, LengthUnit, Material, UpAxis,
-    density_per_cubic_unit, export,
+    ExportError, ExportOptions, Format, Frame, LengthUnit, UpAxis, density_per_cubic_unit, export,
 };
+
+/// The default density, water's (kg/m³).
+const WATER: f64 = 1000.0;
 
 /// Arguments of `export`.
 #[derive(Args, Debug)]
 pub struct ExportArgs {
-    /// Mesh file: .obj or .stl (binary or ASCII). All objects and groups form one body.
+    /// Mesh file: .obj or .stl (binary or ASCII), all its parts one body unless parts get their
+    /// own material (--density-of, --material-of, --mass-of); or a body file (.toml) of parts
+    /// with their materials, placements and units.
     pub file: PathBuf,
     /// Output format.
     #[arg(long, value_enum)]
     pub format: Format,
-    /// Length unit of the mesh's coordinates (OBJ and STL carry none).
-    #[arg(long, value_enum, default_value = "m")]
-    pub units: LengthUnit,
+    /// Length unit of the mesh's coordinates (OBJ and STL carry none). Default m; a body file
+    /// gives its own.
+    #[arg(long, value_enum)]
+    pub units: Option<LengthUnit>,
     /// Which mesh axis points up.
     #[arg(long, value_enum, default_value = "y")]
     pub up: UpAxis,
@@ -32,8 +38,9 @@ pub struct ExportArgs {
     /// Total mass in kg instead of a density.
     #[arg(long, conflicts_with = "material", allow_negative_numbers = true)]
     pub mass: Option<f64>,
-    /// A named density: water 1000, pla 1240, aluminium 2700, steel 7850, wood 600 kg/m³.
-    #[arg(long, value_enum)]
+    /// A named density: foam 30, wood 600, water 1000, pla 1240, rubber 1500, aluminium 2700,
+    /// steel 7850, brass 8500, lead 11340 kg/m³.
+    #[arg(long, value_parser = parse_material)]
     pub material: Option<Material>,
     /// Axes the target reads the inertia in (about the centre of mass either way):
     /// com-principal (diagonal + rotation) or origin (the mesh's own axes). Default: origin for
@@ -46,26 +53,60 @@ pub struct ExportArgs {
     /// How cracks and holes in the mesh are handled.
     #[command(flatten)]
     pub repair: RepairArgs,
+    /// Materials of single parts.
+    #[command(flatten)]
+    pub parts: PartArgs,
+}
+
+fn parse_material(name: &str) -> Result<Material, String> {
+    super::parts::preset(name)
 }
 
 /// Runs `export`.
 pub fn run(args: &ExportArgs) -> Result<(), CliError> {
+    let units = args.units.unwrap_or(LengthUnit::M);
+    let per_unit = |rho: f64| density_per_cubic_unit(rho, units);
     let spec = match (args.density, args.mass, args.material) {
         (_, Some(m), _) => MassSpec::Mass(positive("--mass", m)?),
-        (Some(d), None, _) => MassSpec::Density(density_per_cubic_unit(
-            positive("--density", d)?,
-            args.units,
-        )),
-        (None, None, Some(material)) => {
-            MassSpec::Density(density_per_cubic_unit(material.density(), args.units))
-        }
-        (None, None, None) => MassSpec::Density(density_per_cubic_unit(
-            Material::Water.density(),
-            args.units,
-        )),
+        (Some(d), None, _) => MassSpec::Density(per_unit(positive("--density", d)?)),
+        (None, None, Some(material)) => MassSpec::Density(per_unit(material.density)),
+        (None, None, None) => MassSpec::Density(per_unit(WATER)),
     };
     let file = args.file.display();
     let repairs = args.repair.repairs(1.0)?;
+    if is_body_file(&args.file) || args.parts.any() {
+        let (parts, units) = if is_body_file(&args.file) {
+            let given = args.density.is_some() || args.mass.is_some() || args.material.is_some();
+            if given || args.units.is_some() || args.parts.any() {
+                return Err(CliError::Usage(
+                    "a body file gives each part's material, its units and placements: \
+                     --density, --mass, --material, --units and the per-part options do not \
+                     apply"
+                        .to_owned(),
+                ));
+            }
+            (body_parts(&args.file)?.1, LengthUnit::M)
+        } else {
+            let MassSpec::Density(density) = spec else {
+                return Err(CliError::Usage(
+                    "with parts, give each part's mass with --mass-of NAME=M".to_owned(),
+                ));
+            };
+            let loaded =
+                massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
+            let default = Fill::Solid { density };
+            (mesh_parts(&loaded, &args.parts, default, &per_unit)?, units)
+        };
+        let body = massprops::composite(&parts, &repairs)
+            .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
+        for part in &body.parts {
+            for w in &part.warnings {
+                let text = super::report::warning_text(w, &[]);
+                eprintln!("warning: {file}: part {:?}: {text}", part.name);
+            }
+        }
+        return write(args, &body.properties, units);
+    }
     let loaded = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
     let analysis = loaded
         .analyze(Method::Volume, spec, &repairs)
@@ -84,13 +125,23 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
             super::report::warning_text(w, &loaded.face_lines)
         );
     }
+    write(args, &properties, units)
+}
+
+/// Exports `properties` (lengths in `units`) as the arguments say.
+fn write(
+    args: &ExportArgs,
+    properties: &MassProperties,
+    units: LengthUnit,
+) -> Result<(), CliError> {
+    let file = args.file.display();
     let options = ExportOptions {
         format: args.format,
-        units: args.units,
+        units,
         up: args.up,
         frame: args.frame,
     };
-    let out = export(&properties, &options).map_err(|e: ExportError| {
+    let out = export(properties, &options).map_err(|e: ExportError| {
         if e.is_usage() {
             CliError::Usage(e.to_string())
         } else {

@@ -4,6 +4,7 @@
 
 pub mod error;
 pub mod export;
+pub mod parts;
 pub mod props;
 pub mod repair;
 pub mod report;

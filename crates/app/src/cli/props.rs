@@ -4,9 +4,10 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::{Args, ValueEnum};
-use massprops::{MassSpec, Method};
+use massprops::{Fill, MassSpec, Method, Repairs};
 
 use super::error::{CliError, positive};
+use super::parts::{PartArgs, body_parts, is_body_file, mesh_parts};
 use super::repair::RepairArgs;
 use super::report;
 
@@ -37,7 +38,9 @@ impl From<MethodArg> for Method {
 /// Arguments of `props`.
 #[derive(Args, Debug)]
 pub struct PropsArgs {
-    /// Mesh file: .obj or .stl (binary or ASCII). All objects and groups form one body.
+    /// Mesh file: .obj or .stl (binary or ASCII), all its parts one body unless parts get their
+    /// own material (--density-of, --material-of, --mass-of) or --parts is given; or a body
+    /// file (.toml) of parts with their materials and placements.
     pub file: PathBuf,
     /// Density: mass per volume (per area for --method shell). Default 1.
     #[arg(long, conflicts_with = "mass", allow_negative_numbers = true)]
@@ -60,6 +63,12 @@ pub struct PropsArgs {
     /// How cracks and holes in the mesh are handled.
     #[command(flatten)]
     pub repair: RepairArgs,
+    /// Materials of single parts.
+    #[command(flatten)]
+    pub parts: PartArgs,
+    /// Report the body part by part (a mesh file's parts at --density unless given their own).
+    #[arg(long = "parts")]
+    pub by_part: bool,
 }
 
 /// Runs `props`.
@@ -71,6 +80,9 @@ pub fn run(args: &PropsArgs) -> Result<(), CliError> {
         (None, None) => MassSpec::Density(1.0),
     };
     let repairs = args.repair.repairs(args.scale)?;
+    if is_body_file(&args.file) || args.parts.any() || args.by_part {
+        return run_composite(args, spec, &repairs);
+    }
     let start = Instant::now();
     let mut loaded =
         massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
@@ -110,6 +122,48 @@ pub fn run(args: &PropsArgs) -> Result<(), CliError> {
             ms(integration),
             ms(computed - analyzed),
         );
+    }
+    Ok(())
+}
+
+/// `props` of a body made of parts: a body file, or a mesh file's parts.
+fn run_composite(args: &PropsArgs, spec: MassSpec, repairs: &Repairs) -> Result<(), CliError> {
+    let file = args.file.display().to_string();
+    let (units, parts) = if is_body_file(&args.file) {
+        if args.density.is_some() || args.mass.is_some() || args.scale != 1.0 || args.parts.any() {
+            return Err(CliError::Usage(
+                "a body file gives each part's material, units and placement: --density, \
+                 --mass, --scale and the per-part options do not apply"
+                    .to_owned(),
+            ));
+        }
+        let (body, parts) = body_parts(&args.file)?;
+        (format!("metres, from a body file in {}", body.units), parts)
+    } else {
+        let MassSpec::Density(density) = spec else {
+            return Err(CliError::Usage(
+                "with parts, give each part's mass with --mass-of NAME=M (--mass is the whole \
+                 body's)"
+                    .to_owned(),
+            ));
+        };
+        let mut loaded =
+            massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
+        if args.scale != 1.0 {
+            loaded.mesh = loaded
+                .mesh
+                .map_positions(|p| p * args.scale)
+                .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
+        }
+        let parts = mesh_parts(&loaded, &args.parts, Fill::Solid { density }, &|d| d)?;
+        ("the mesh's units times --scale".to_owned(), parts)
+    };
+    let body = massprops::composite(&parts, repairs)
+        .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
+    if args.json {
+        println!("{}", report::composite_json(&file, &units, &body));
+    } else {
+        print!("{}", report::composite_table(&file, &units, &body));
     }
     Ok(())
 }

@@ -3,7 +3,8 @@
 use std::fmt::Write as _;
 
 use massprops::{
-    Analysis, Comparison, Defect, Degeneracy, MassProperties, Method, Orientation, Warning,
+    Analysis, Comparison, Composite, Defect, Degeneracy, MassProperties, Method, Orientation,
+    Warning,
 };
 use nalgebra::{Matrix3, Point3, Vector3};
 use serde_json::{Value, json};
@@ -362,6 +363,115 @@ fn shells_json(a: &Analysis) -> Value {
             }))
             .collect::<Vec<_>>()
     )
+}
+
+/// The `props --json` object of a body made of parts (`kind: "composite"`): the whole, with the
+/// same keys as a single mesh's where they apply, and `parts`.
+pub fn composite_json(file: &str, units: &str, c: &Composite) -> Value {
+    let p = &c.properties;
+    json!({
+        "schema_version": SCHEMA_VERSION,
+        "file": file,
+        "kind": "composite",
+        "conventions": {
+            "tensor": TENSOR_CONVENTION,
+            "frame": "body axes; inertia_com about the centre of mass, inertia_origin about the body origin",
+            "units": units,
+            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
+            "share": "each part's share of each principal moment of the whole, about its centre of mass; a void's is negative",
+        },
+        "mass": p.mass,
+        "center_of_mass": point(&p.center_of_mass),
+        "inertia_com": rows(&p.inertia_com),
+        "inertia_origin": rows(&p.inertia_origin()),
+        "principal_moments": vector(&p.principal.moments),
+        "principal_axes": rows(&axes_rows(p)),
+        "principal_degeneracy": degeneracy_name(p.principal.degeneracy),
+        "parts": c.parts.iter().map(|q| json!({
+            "name": q.name,
+            "density": q.density,
+            "mass": q.mass,
+            "volume": q.volume,
+            "center_of_mass": point(&q.center_of_mass),
+            "inertia_com": rows(&q.inertia_com),
+            "share": vector(&q.share),
+            "warnings": q.warnings.iter().map(|w| warning_json(w, &[])).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// The human table of a body made of parts: the whole, then one row per part.
+pub fn composite_table(file: &str, units: &str, c: &Composite) -> String {
+    let p = &c.properties;
+    let mut s = String::new();
+    let _ = writeln!(s, "{file}: a body of {} parts ({units})", c.parts.len());
+    let _ = writeln!(s, "  mass              {}", num(p.mass).trim_start());
+    let com = p.center_of_mass;
+    let _ = writeln!(
+        s,
+        "  centre of mass    {} {} {}",
+        num(com.x),
+        num(com.y),
+        num(com.z)
+    );
+    let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; body axes.");
+    let _ = writeln!(s, "  inertia about the centre of mass");
+    matrix_lines(&mut s, &p.inertia_com);
+    let m = p.principal.moments;
+    let _ = writeln!(
+        s,
+        "  principal moments (ascending) {} {} {}",
+        num(m.x),
+        num(m.y),
+        num(m.z)
+    );
+    let _ = writeln!(s, "    {}", p.principal.degeneracy.describe());
+    let _ = writeln!(
+        s,
+        "  principal axes (row i = axis of moment i, right-handed)"
+    );
+    matrix_lines(&mut s, &axes_rows(p));
+    let _ = writeln!(
+        s,
+        "\nParts (a void's mass is negative; share = part of each principal moment):"
+    );
+    let _ = writeln!(
+        s,
+        "  {:<16} {:>12} {:>12} {:>12}   {:<32} share of I1 I2 I3",
+        "name", "density", "mass", "volume", "centre of mass"
+    );
+    for q in &c.parts {
+        let c = q.center_of_mass;
+        let _ = writeln!(
+            s,
+            "  {:<16} {:>12} {:>12} {:>12}   {:<32} {:>5.1} % {:>5.1} % {:>5.1} %",
+            q.name,
+            significant(q.density, 5),
+            significant(q.mass, 6),
+            significant(q.volume, 6),
+            format!(
+                "{} {} {}",
+                significant(c.x, 5),
+                significant(c.y, 5),
+                significant(c.z, 5)
+            ),
+            100.0 * q.share.x,
+            100.0 * q.share.y,
+            100.0 * q.share.z,
+        );
+    }
+    let warned: Vec<_> = c.parts.iter().filter(|q| !q.warnings.is_empty()).collect();
+    if warned.is_empty() {
+        let _ = writeln!(s, "\nNo warnings.");
+    } else {
+        let _ = writeln!(s, "\nWarnings (faces count within each part):");
+        for q in warned {
+            for w in &q.warnings {
+                let _ = writeln!(s, "  - {}: {}", q.name, warning_text(w, &[]));
+            }
+        }
+    }
+    s
 }
 
 /// Significant digits of the human table (JSON keeps every digit).

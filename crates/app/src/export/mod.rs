@@ -114,36 +114,6 @@ pub enum Frame {
     Origin,
 }
 
-/// Named densities in kg/m³ (typical values; real materials vary by a few percent, wood by
-/// much more).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Material {
-    /// Water, 1000 kg/m³ (999.97 at 4 °C).
-    Water,
-    /// PLA filament plastic, 1240 kg/m³ (datasheets give 1210–1250; solid, 100 % infill).
-    Pla,
-    /// Aluminium, 2700 kg/m³ (pure 2699; 6061 alloy 2700).
-    #[value(alias = "aluminum")]
-    Aluminium,
-    /// Carbon steel, 7850 kg/m³.
-    Steel,
-    /// Wood, 600 kg/m³ (a mid value: balsa 150, pine 500, oak 750, ebony 1100).
-    Wood,
-}
-
-impl Material {
-    /// Density in kg/m³.
-    pub fn density(self) -> f64 {
-        match self {
-            Material::Water => 1000.0,
-            Material::Pla => 1240.0,
-            Material::Aluminium => 2700.0,
-            Material::Steel => 7850.0,
-            Material::Wood => 600.0,
-        }
-    }
-}
-
 /// What to write and how the mesh is to be read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ExportOptions {
@@ -339,6 +309,5 @@ mod tests {
                 .is_ok()
             );
         }
-        assert_eq!(Material::Steel.density(), 7850.0);
     }
 }
