@@ -94,7 +94,7 @@ pub fn composite(parts: &[Part], repairs: &Repairs) -> Result<Composite, MeshErr
     if parts.is_empty() {
         return Err(MeshError::Empty);
     }
-    let mut each = Vec::with_capacity(parts.len());
+    let mut each: Vec<PartProperties> = Vec::with_capacity(parts.len());
     for part in parts {
         let named = |source: MeshError| MeshError::InPart {
             part: part.name.clone(),
@@ -102,8 +102,46 @@ pub fn composite(parts: &[Part], repairs: &Repairs) -> Result<Composite, MeshErr
         };
         each.push(one_part(part, repairs).map_err(named)?);
     }
-    let mass: f64 = each.iter().map(|p| p.mass).sum();
-    let moments_ok = |m: &Vector3<f64>| m.iter().all(|&x| x > 0.0);
+    let masses: Vec<PartMass> = each
+        .iter()
+        .map(|p| PartMass {
+            mass: p.mass,
+            center_of_mass: p.center_of_mass,
+            inertia_com: p.inertia_com,
+        })
+        .collect();
+    let (properties, shares) = combine(&masses)?;
+    for (p, share) in each.iter_mut().zip(shares) {
+        p.share = share;
+    }
+    Ok(Composite {
+        properties,
+        parts: each,
+    })
+}
+
+/// One part's mass as it counts in a body: signed (negative for a void), about its own centre,
+/// in body coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PartMass {
+    /// Signed mass.
+    pub mass: f64,
+    /// Centre of mass, body coordinates.
+    pub center_of_mass: Point3<f64>,
+    /// Inertia about its own centre of mass, body axes, signed like `mass`.
+    pub inertia_com: Matrix3<f64>,
+}
+
+/// The body the signed masses make together, and each one's share of each principal moment:
+/// the sums of [`composite`] without the integration (for a caller that keeps each part's
+/// integrals and changes only materials or placements).
+///
+/// Errors: nothing left, or a tensor that is no body's ([`MeshError::VoidTooLarge`]).
+pub fn combine(parts: &[PartMass]) -> Result<(MassProperties, Vec<Vector3<f64>>), MeshError> {
+    if parts.is_empty() {
+        return Err(MeshError::Empty);
+    }
+    let mass: f64 = parts.iter().map(|p| p.mass).sum();
     if mass.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Err(MeshError::VoidTooLarge {
             mass,
@@ -111,37 +149,37 @@ pub fn composite(parts: &[Part], repairs: &Repairs) -> Result<Composite, MeshErr
         });
     }
     let center = Point3::from(
-        each.iter()
+        parts
+            .iter()
             .map(|p| p.center_of_mass.coords * p.mass)
             .sum::<Vector3<f64>>()
             / mass,
     );
-    let about_center: Vec<Matrix3<f64>> = each
+    let about_center: Vec<Matrix3<f64>> = parts
         .iter()
         .map(|p| p.inertia_com + parallel_axis_term(p.mass, &(p.center_of_mass - center)))
         .collect();
     let inertia: Matrix3<f64> = about_center.iter().sum();
     let properties = MassProperties::new(mass, center, inertia);
-    let moments = properties.principal.moments;
-    let m = moments;
+    let m = properties.principal.moments;
     // A real body's moments are positive and obey the triangle inequality (I₁ + I₂ ≥ I₃).
-    if !moments_ok(&moments) || m.x + m.y < m.z * (1.0 - 1e-12) {
+    if !m.iter().all(|&x| x > 0.0) || m.x + m.y < m.z * (1.0 - 1e-12) {
         return Err(MeshError::VoidTooLarge {
             mass,
             moments: Some([m.x, m.y, m.z]),
         });
     }
     let axes = properties.principal.rotation.matrix();
-    for (p, i) in each.iter_mut().zip(&about_center) {
-        p.share = Vector3::from_fn(|k, _| {
-            let a = axes.column(k);
-            (a.transpose() * i * a)[(0, 0)] / moments[k]
-        });
-    }
-    Ok(Composite {
-        properties,
-        parts: each,
-    })
+    let shares = about_center
+        .iter()
+        .map(|i| {
+            Vector3::from_fn(|k, _| {
+                let a = axes.column(k);
+                (a.transpose() * i * a)[(0, 0)] / m[k]
+            })
+        })
+        .collect();
+    Ok((properties, shares))
 }
 
 /// One part's signed contribution, in body coordinates.

@@ -49,7 +49,7 @@ mod solid;
 
 pub use analysis::{Analysis, Defect, MassSpec, Method, Warning, analyze, analyze_with};
 pub use approximations::{bounding_box_properties, point_mass_properties};
-pub use composite::{Composite, Fill, Part, PartProperties, composite};
+pub use composite::{Composite, Fill, Part, PartMass, PartProperties, combine, composite};
 pub use defects::{AUTO_WELD_RATIO, Holes, Orientation, Repairs, Shell, Weld, shell_faces};
 pub use diagnostics::{MeshDiagnostics, diagnose};
 pub use error::MeshError;

@@ -7,9 +7,16 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::thread;
 
-use massprops::{Analysis, MassSpec, MeshFile, Method, PolyMesh, Repairs};
+use std::ops::Range;
+use std::sync::Arc;
+
+use massprops::{
+    Analysis, BodyFile, MassProperties, MassSpec, MeshFile, Method, PolyMesh, Repairs,
+};
+use nalgebra::Vector3;
 
 use super::geometry::TriMesh;
+use super::parts::{PartModel, from_body_file};
 use super::picking::Bvh;
 
 /// The sample bodies, embedded so the binary needs no files: (label, file name, OBJ text).
@@ -51,6 +58,47 @@ pub const SAMPLES: [(&str, &str, &str); 7] = [
     ),
 ];
 
+/// Sample bodies made of parts, embedded with their meshes: (label, body file name, body file
+/// text). Their meshes are among [`SAMPLES`].
+pub const SAMPLE_BODIES: [(&str, &str, &str); 3] = [
+    (
+        "Hammer: steel & wood",
+        "hammer.toml",
+        include_str!("../../../../assets/hammer.toml"),
+    ),
+    (
+        "Racket: frame, strings, handle",
+        "tennis_racket.toml",
+        include_str!("../../../../assets/tennis_racket.toml"),
+    ),
+    (
+        "Hollow box & solid box",
+        "hollow_box.toml",
+        include_str!("../../../../assets/hollow_box.toml"),
+    ),
+];
+
+/// The mesh files the sample bodies use, besides [`SAMPLES`].
+const SAMPLE_PART_MESHES: [(&str, &str); 1] = [(
+    "hollow_box.obj",
+    include_str!("../../../../assets/hollow_box.obj"),
+)];
+
+/// A body made of parts, as loaded: the parts and what they make together.
+#[derive(Debug, Clone)]
+pub struct Composition {
+    /// The parts, in order.
+    pub parts: Vec<PartModel>,
+    /// The whole at scale 1 (body coordinates, metres).
+    pub whole: MassProperties,
+    /// Each part's share of each principal moment of the whole.
+    pub shares: Vec<Vector3<f64>>,
+    /// Each part's signed mass.
+    pub masses: Vec<f64>,
+    /// Each part's triangles in [`LoadedBody::mesh`].
+    pub triangles: Vec<Range<usize>>,
+}
+
 /// A mesh ready for the lab: its triangles, picking index and mass properties at unit density
 /// and scale (the model rescales them live).
 #[derive(Debug, Clone)]
@@ -70,6 +118,12 @@ pub struct LoadedBody {
     /// For each warning of `analysis`, its example faces: (face index, corner vertices of
     /// `mesh`), for highlighting.
     pub warning_faces: Vec<Vec<(usize, Vec<u32>)>>,
+    /// A single mesh's file: where it came from (a path, or a sample's or built body's name)
+    /// and what was read, to split it into parts. `None` for a body made of parts.
+    pub file: Option<(PathBuf, Arc<MeshFile>)>,
+    /// The parts, for a body made of parts (`analysis` then describes their surfaces together,
+    /// and the mass properties come from here).
+    pub composition: Option<Composition>,
 }
 
 impl LoadedBody {
@@ -78,7 +132,7 @@ impl LoadedBody {
     /// # Errors
     /// The mesh encloses no volume even with its holes capped, or is otherwise unusable; the
     /// message names the cause and `name`.
-    pub fn new(name: &str, file: &MeshFile) -> Result<Self, String> {
+    pub fn new(name: &str, path: PathBuf, file: MeshFile) -> Result<Self, String> {
         let analysis = file
             .analyze(Method::Volume, MassSpec::Density(1.0), &Repairs::default())
             .map_err(|e| format!("{name}: {e}"))?;
@@ -103,7 +157,97 @@ impl LoadedBody {
             analysis,
             face_lines: file.face_lines.clone(),
             warning_faces,
+            file: Some((path, Arc::new(file))),
+            composition: None,
         })
+    }
+
+    /// A body made of `parts`: their placed surfaces together for drawing and picking, and their
+    /// masses summed.
+    ///
+    /// # Errors
+    /// No parts; a part without a mass; voids that leave no body.
+    pub fn from_parts(name: &str, parts: Vec<PartModel>) -> Result<Self, String> {
+        let masses = parts
+            .iter()
+            .map(PartModel::mass)
+            .collect::<Result<Vec<_>, _>>()?;
+        let (whole, shares) = massprops::combine(&masses).map_err(|e| format!("{name}: {e}"))?;
+        let mut positions = Vec::new();
+        let mut indices = Vec::new();
+        let mut arities = Vec::new();
+        let mut triangles = Vec::with_capacity(parts.len());
+        let mut first = 0;
+        for part in &parts {
+            let placed = part.placed_mesh()?;
+            let base = positions.len() as u32;
+            positions.extend_from_slice(placed.positions());
+            for face in placed.faces() {
+                indices.extend(face.iter().map(|&i| i + base));
+                arities.push(face.len());
+            }
+            triangles.push(first..first + placed.triangle_count());
+            first += placed.triangle_count();
+        }
+        let merged = PolyMesh::from_flat(positions, indices, &arities)
+            .map_err(|e| format!("{name}: {e}"))?;
+        // The parts' surfaces together, for the diagnostics and the approximations (at the
+        // whole's mass: no enclosed volume needed, so sheets and voids are fine).
+        let analysis = massprops::analyze(&merged, Method::Points, MassSpec::Mass(whole.mass))
+            .map_err(|e| format!("{name}: {e}"))?;
+        let mesh = TriMesh::from_poly(&merged);
+        let bvh = Bvh::build(&mesh);
+        Ok(Self {
+            name: name.to_owned(),
+            sphere: mesh.bounding_sphere(),
+            mesh,
+            bvh,
+            analysis,
+            face_lines: Vec::new(),
+            warning_faces: Vec::new(),
+            file: None,
+            composition: Some(Composition {
+                masses: masses.iter().map(|m| m.mass).collect(),
+                parts,
+                whole,
+                shares,
+                triangles,
+            }),
+        })
+    }
+
+    /// A sample body made of parts, by label.
+    ///
+    /// # Errors
+    /// Unknown label, or (never for the shipped assets) a parse failure.
+    fn sample_body(label: &str) -> Result<Self, String> {
+        let (_, file, text) = SAMPLE_BODIES
+            .iter()
+            .find(|(l, ..)| *l == label)
+            .ok_or_else(|| format!("no sample called '{label}'"))?;
+        let body = BodyFile::parse(text, Path::new(file)).map_err(|e| e.to_string())?;
+        let embedded = |path: &Path| {
+            let name = path
+                .file_name()
+                .and_then(|n| n.to_str())
+                .unwrap_or_default();
+            let text = SAMPLES
+                .iter()
+                .map(|(_, f, t)| (*f, *t))
+                .chain(SAMPLE_PART_MESHES)
+                .find(|(f, _)| *f == name)
+                .map(|(_, t)| t);
+            text.map(|t| massprops::parse_mesh(t.as_bytes(), path))
+                .transpose()
+        };
+        let parts = body.load_with(&embedded).map_err(|e| e.to_string())?;
+        let models = body
+            .parts
+            .into_iter()
+            .zip(parts)
+            .map(|(entry, part)| PartModel::new(entry, part.mesh))
+            .collect::<Result<Vec<_>, _>>()?;
+        Self::from_parts(label, models)
     }
 
     /// [`LoadedBody::new`] for a mesh built in code (no file, no lines).
@@ -115,7 +259,7 @@ impl LoadedBody {
             part_names: Vec::new(),
             face_parts: Vec::new(),
         };
-        Self::new(name, &file)
+        Self::new(name, PathBuf::from(format!("{name}.obj")), file)
     }
 
     /// A built-in sample by label.
@@ -123,13 +267,16 @@ impl LoadedBody {
     /// # Errors
     /// Unknown label, or (never for the shipped assets) a parse failure.
     pub fn sample(label: &str) -> Result<Self, String> {
+        if SAMPLE_BODIES.iter().any(|(l, ..)| *l == label) {
+            return Self::sample_body(label);
+        }
         let (_, file, text) = SAMPLES
             .iter()
             .find(|(l, ..)| *l == label)
             .ok_or_else(|| format!("no sample called '{label}'"))?;
-        let file = massprops::parse_mesh(text.as_bytes(), Path::new(file))
+        let parsed = massprops::parse_mesh(text.as_bytes(), Path::new(file))
             .map_err(|e| format!("{label}: {e}"))?;
-        Self::new(label, &file)
+        Self::new(label, PathBuf::from(file), parsed)
     }
 
     /// The default body: the T-handle.
@@ -222,11 +369,23 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
         bytes.extend_from_slice(&chunk[..n]);
         progress("reading", bytes.len() as f32 / total as f32);
     }
+    if is_body_file(path) {
+        progress("parts", 0.0);
+        let parts = from_body_file(path)?;
+        return LoadedBody::from_parts(&name, parts);
+    }
     progress("parsing", 0.0);
     let file = massprops::parse_mesh(&bytes, path).map_err(|e| e.to_string())?;
     drop(bytes);
     progress("mass properties and picking index", 0.0);
-    LoadedBody::new(&name, &file).map_err(|e| format!("{}: {e}", path.display()))
+    LoadedBody::new(&name, path.to_path_buf(), file).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Whether `path` names a body file (`.toml`).
+pub fn is_body_file(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
 }
 
 #[cfg(test)]

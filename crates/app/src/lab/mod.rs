@@ -12,6 +12,7 @@ pub mod clock;
 pub mod geometry;
 pub mod history;
 pub mod loader;
+pub mod parts;
 pub mod picking;
 pub mod placement;
 pub mod polhodes;
@@ -96,6 +97,26 @@ pub enum Command {
     Notify(Message),
     /// Dismiss the message line.
     DismissMessage,
+    /// Make the body's parts the parts of its file (objects, groups, STL solids, or connected
+    /// shells), each at the body's current density.
+    SplitIntoParts,
+    /// Add a mesh file as a new part at the origin, of water's density (a single-mesh body
+    /// becomes its first part).
+    AddPart(PathBuf),
+    /// Change one part's settings (material, void, thin wall, placement, name) and whether it
+    /// is drawn; the motion goes on with p and L kept.
+    EditPart {
+        /// Which part.
+        index: usize,
+        /// Its new settings (placement in metres).
+        entry: Box<massprops::PartEntry>,
+        /// Drawn in the 3D view.
+        visible: bool,
+    },
+    /// Remove one part.
+    RemovePart(usize),
+    /// Write the body as a body file (and, beside it, the meshes of parts that have no file).
+    SaveBody(PathBuf),
 }
 
 /// A line for the user: an error (red) or information.
@@ -264,7 +285,79 @@ impl Lab {
             }
             Command::Notify(message) => self.message = Some(message),
             Command::DismissMessage => self.message = None,
+            Command::SplitIntoParts => {
+                let parts = self.current_parts()?;
+                let n = parts.len();
+                self.rebody(parts)?;
+                self.info(format!("{n} parts"));
+            }
+            Command::AddPart(path) => {
+                let mut parts = self.current_parts()?;
+                parts.extend(parts::from_mesh_file(&path)?);
+                self.rebody(parts)?;
+                self.info(format!("added {}", path.display()));
+            }
+            Command::EditPart {
+                index,
+                entry,
+                visible,
+            } => {
+                let mut parts = self.current_parts()?;
+                let part = parts
+                    .get_mut(index)
+                    .ok_or_else(|| format!("no part number {index}"))?;
+                part.entry = *entry;
+                part.visible = visible;
+                self.rebody(parts)?;
+            }
+            Command::RemovePart(index) => {
+                let mut parts = self.current_parts()?;
+                if index >= parts.len() || parts.len() == 1 {
+                    return Err("a body keeps at least one part".to_owned());
+                }
+                parts.remove(index);
+                self.rebody(parts)?;
+            }
+            Command::SaveBody(path) => {
+                let parts = self.current_parts()?;
+                let written = parts::save(&parts, &path)?;
+                self.info(format!("saved {} ({written})", path.display()));
+            }
         }
+        Ok(())
+    }
+
+    /// The body's parts: its own, or (for a single mesh) its file's parts at the current
+    /// density.
+    fn current_parts(&self) -> Result<Vec<parts::PartModel>, String> {
+        let body = self.primary().body();
+        if let Some(c) = &body.composition {
+            return Ok(c.parts.clone());
+        }
+        let density = self
+            .primary()
+            .properties(settings::InertiaSource::Exact)
+            .mass
+            / (body.analysis.properties.mass * self.settings.body.scale.powi(3));
+        parts::from_single(body, density)
+    }
+
+    /// Every specimen goes on with the body `parts` make, p and L kept. Nothing changes if the
+    /// parts make no body or one specimen cannot take it.
+    fn rebody(&mut self, parts: Vec<parts::PartModel>) -> Result<(), String> {
+        let name = self.primary().body().name.clone();
+        let body = Arc::new(LoadedBody::from_parts(&name, parts)?);
+        let old = self.primary().body_arc().clone();
+        for i in 0..self.specimens.len() {
+            if let Err(e) = self.specimens[i].set_body(body.clone(), &self.settings) {
+                for s in &mut self.specimens[..i] {
+                    // These held `old` before, so going back cannot fail.
+                    let _ = s.set_body(old.clone(), &self.settings);
+                }
+                return Err(e);
+            }
+        }
+        self.generation += 1;
         Ok(())
     }
 
@@ -495,6 +588,116 @@ mod tests {
         let mut s = lab.settings().clone();
         change(&mut s);
         Command::Settings(Box::new(s))
+    }
+
+    /// Runs the lab `seconds` of simulated time in steps.
+    fn run(lab: &mut Lab, steps: usize) {
+        for _ in 0..steps {
+            lab.apply(Command::Step);
+        }
+    }
+
+    #[test]
+    fn editing_a_part_mid_run_keeps_angular_momentum_and_saving_reads_back() {
+        let mut lab = lab();
+        lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+        assert!(
+            lab.message().is_none_or(|m| !m.error),
+            "{:?}",
+            lab.message()
+        );
+        let body = lab.primary().body();
+        let c = body.composition.as_ref().expect("parts");
+        assert_eq!(c.parts.len(), 2);
+        let steel = lab.primary().properties(InertiaSource::Exact).mass;
+        run(&mut lab, 50);
+        let l = lab.primary().sim().body().angular_momentum();
+        let p = lab.primary().sim().body().momentum();
+        // The head becomes aluminium: lighter, the centre of mass moves down the handle.
+        let mut head = lab
+            .primary()
+            .body()
+            .composition
+            .as_ref()
+            .expect("parts")
+            .parts[0]
+            .entry
+            .clone();
+        head.material = massprops::MaterialEntry::Preset("aluminium".to_owned());
+        lab.apply(Command::EditPart {
+            index: 0,
+            entry: Box::new(head),
+            visible: true,
+        });
+        assert!(
+            lab.message().is_none_or(|m| !m.error),
+            "{:?}",
+            lab.message()
+        );
+        let b = lab.primary().sim().body();
+        assert!(
+            (b.angular_momentum() - l).norm() <= 1e-12 * l.norm(),
+            "L kept"
+        );
+        assert!(
+            (b.momentum() - p).norm() <= 1e-12 * (1.0 + p.norm()),
+            "p kept"
+        );
+        let aluminium = lab.primary().properties(InertiaSource::Exact).mass;
+        let head_volume = 0.12 * 0.03 * 0.03;
+        assert!(
+            ((steel - aluminium) - (7850.0 - 2700.0) * head_volume).abs() < 1e-12,
+            "{steel} - {aluminium}"
+        );
+        run(&mut lab, 10);
+
+        // Saved and opened again: the same body.
+        let dir = std::env::temp_dir().join(format!("inertia-lab-parts-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let path = dir.join("hammer.toml");
+        lab.apply(Command::SaveBody(path.clone()));
+        assert!(
+            lab.message().is_some_and(|m| !m.error),
+            "{:?}",
+            lab.message()
+        );
+        let again = parts::from_body_file(&path).expect("reads back");
+        let reopened = LoadedBody::from_parts("hammer", again).expect("a body");
+        let whole = &reopened.composition.as_ref().expect("parts").whole;
+        assert!((whole.mass - aluminium).abs() <= 1e-12 * aluminium);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_mesh_splits_into_its_parts_and_takes_a_new_one() {
+        let mut lab = lab();
+        lab.apply(Command::LoadSample("Hammer".to_owned()));
+        let whole = lab.primary().properties(InertiaSource::Exact).mass;
+        lab.apply(Command::SplitIntoParts);
+        let c = lab.primary().body().composition.as_ref().expect("parts");
+        let names: Vec<&str> = c.parts.iter().map(|p| p.entry.name.as_str()).collect();
+        assert_eq!(names, ["handle", "head"]);
+        let split = lab.primary().properties(InertiaSource::Exact).mass;
+        assert!((split - whole).abs() <= 1e-12 * whole, "{split} vs {whole}");
+        // A part that would leave no body is refused and the body stays.
+        let mut void = c.parts[1].entry.clone();
+        void.void = true;
+        void.material = massprops::MaterialEntry::Density(1e6);
+        lab.apply(Command::EditPart {
+            index: 1,
+            entry: Box::new(void),
+            visible: true,
+        });
+        assert!(
+            lab.message().is_some_and(|m| m.error),
+            "{:?}",
+            lab.message()
+        );
+        let kept = lab.primary().properties(InertiaSource::Exact).mass;
+        assert!((kept - whole).abs() <= 1e-12 * whole);
+        lab.apply(Command::RemovePart(1));
+        let c = lab.primary().body().composition.as_ref().expect("parts");
+        assert_eq!(c.parts.len(), 1);
     }
 
     #[test]

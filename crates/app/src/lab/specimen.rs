@@ -172,14 +172,50 @@ impl Specimen {
     pub fn set_settings(&mut self, old: &AppSettings, new: &AppSettings) -> Result<(), String> {
         let (old, new) = (&self.variant.apply(old), &self.variant.apply(new));
         let props = scaled_properties(&self.body, new)?;
+        self.reshape(props, new, old.body != new.body)?;
+        if new.physics != old.physics {
+            self.disturbed();
+        }
+        Ok(())
+    }
+
+    /// Puts a changed body in place (a part's material, placement, or a part added or
+    /// removed), keeping p and L as [`Specimen::set_settings`] does; the parts that did not
+    /// change stay where they are in the world.
+    ///
+    /// # Errors
+    /// The new body cannot be simulated; nothing has changed then.
+    pub fn set_body(
+        &mut self,
+        body: Arc<LoadedBody>,
+        settings: &AppSettings,
+    ) -> Result<(), String> {
+        let settings = &self.variant.apply(settings);
+        let props = scaled_properties(&body, settings)?;
+        self.reshape(props, settings, true)?;
+        self.body = body;
+        Ok(())
+    }
+
+    /// New mass properties (when `changed`) and settings, p and L kept, the mesh kept in place.
+    fn reshape(
+        &mut self,
+        props: [MassProperties; 3],
+        new: &AppSettings,
+        changed: bool,
+    ) -> Result<(), String> {
         let used = &props[source_index(new.body.source)];
         // Checked before anything changes, so a rejected value leaves the specimen as it was.
         Body::from_principal(used.mass, used.principal.moments, used.principal.rotation)
             .map_err(|e| format!("mass properties rejected: {e}"))?;
-        // The body frame's origin is the used centre of mass. A new source moves it within the
-        // mesh by `shift`: the pose moves with it so the mesh stays where it is on screen (a new
-        // size or mass keeps the centre of mass in place and the body grows about it).
-        let shift = used.center_of_mass - props[source_index(self.source)].center_of_mass;
+        // The body frame's origin is the used centre of mass. A new source, or a part changed,
+        // moves it within the mesh by `shift`: the pose moves with it so the mesh stays where it
+        // is on screen. A new size keeps the centre of mass in place and the body grows about it.
+        let shift = if new.body.scale == self.scale {
+            used.center_of_mass - self.used_properties().center_of_mass
+        } else {
+            used.center_of_mass - props[source_index(self.source)].center_of_mass
+        };
         // The string moves with the body frame's origin; built (and checked) before anything
         // changes, like the body above.
         let moved_string = match self.sim.string() {
@@ -200,15 +236,12 @@ impl Specimen {
         self.sim
             .set_settings(new.physics.to_sim())
             .map_err(|e| format!("setting rejected: {e}"))?;
-        if old.body != new.body {
+        if changed {
             let b = self.sim.body_mut();
             let position = b.position() + b.body_orientation() * shift;
             b.set_mass_properties(used.mass, used.principal.moments, used.principal.rotation)
                 .map_err(|e| format!("mass properties rejected: {e}"))?;
             b.set_position(position).map_err(|e| e.to_string())?;
-            self.disturbed();
-        }
-        if new.physics != old.physics {
             self.disturbed();
         }
         if moved_string.is_some() {
@@ -489,13 +522,16 @@ fn scaled_properties(
 ) -> Result<[MassProperties; 3], String> {
     let s = settings.body.scale;
     let a = &body.analysis;
-    let exact = a
-        .properties
+    // A body of parts takes its mass from their materials; a single mesh from the settings.
+    let whole = body.composition.as_ref().map(|c| &c.whole);
+    let exact = whole
+        .unwrap_or(&a.properties)
         .scaled_at_fixed_density(s)
         .map_err(|e| format!("size: {e}"))?;
-    let mass = match settings.body.mass {
-        MassSpec::Density(d) => exact.mass * d,
-        MassSpec::Mass(m) => m,
+    let mass = match (whole, settings.body.mass) {
+        (Some(_), _) => exact.mass,
+        (None, MassSpec::Density(d)) => exact.mass * d,
+        (None, MassSpec::Mass(m)) => m,
     };
     let fit = |p: &MassProperties| -> Result<MassProperties, String> {
         p.scaled_at_fixed_density(s)
@@ -503,7 +539,7 @@ fn scaled_properties(
             .map_err(|e| format!("mass: {e}"))
     };
     Ok([
-        fit(&a.properties)?,
+        fit(whole.unwrap_or(&a.properties))?,
         fit(&a.bounding_box)?,
         fit(&a.point_masses)?,
     ])

@@ -285,6 +285,21 @@ impl BodyFile {
 
     /// Loads every part's mesh (each file once) and builds the parts, in metres.
     pub fn load(&self) -> Result<Vec<Part>, MeshError> {
+        self.load_with(&|path: &Path| {
+            if path.is_file() {
+                Ok(Some(load_mesh(path)?))
+            } else {
+                Ok(None)
+            }
+        })
+    }
+
+    /// [`BodyFile::load`] with the meshes read by `read` (`None`: no such file), e.g. from
+    /// files embedded in a program.
+    pub fn load_with(
+        &self,
+        read: &dyn Fn(&Path) -> Result<Option<crate::MeshFile>, MeshError>,
+    ) -> Result<Vec<Part>, MeshError> {
         let folder = self.path.parent().unwrap_or(Path::new(""));
         let unit = self.unit();
         let mut loaded: Vec<(PathBuf, crate::MeshFile)> = Vec::new();
@@ -299,10 +314,10 @@ impl BodyFile {
             let index = match loaded.iter().position(|(p, _)| *p == file_path) {
                 Some(i) => i,
                 None => {
-                    if !file_path.is_file() {
+                    let Some(file) = read(&file_path)? else {
                         return Err(at(format!("mesh: {} does not exist", file_path.display())));
-                    }
-                    loaded.push((file_path.clone(), load_mesh(&file_path)?));
+                    };
+                    loaded.push((file_path.clone(), file));
                     loaded.len() - 1
                 }
             };

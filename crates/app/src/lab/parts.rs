@@ -1,0 +1,289 @@
+//! A body made of parts, as the lab holds it: each part's settings as a body file writes them
+//! ([`massprops::PartEntry`]), its mesh and its mass integrals at unit density, kept so that a
+//! change of material or placement is a sum (`massprops::combine`), not a new integration.
+
+use std::path::{Path, PathBuf};
+
+use massprops::{
+    BodyFile, MassProperties, MassSpec, MaterialEntry, Method, PartEntry, PartMass, PolyMesh,
+    Repairs, Warning,
+};
+use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+
+use super::loader::LoadedBody;
+
+/// One part: what the user set, and what was integrated once.
+#[derive(Debug, Clone)]
+pub struct PartModel {
+    /// Name, mesh file, object, material, void, thin wall, placement (metres).
+    pub entry: PartEntry,
+    /// Drawn in the 3D view (its mass counts either way).
+    pub visible: bool,
+    /// Its mesh is only a piece of `entry.mesh` that no object names (a connected shell): a
+    /// body file must get it its own mesh file.
+    pub piece: bool,
+    /// Its surface in its own coordinates (metres).
+    pub mesh: PolyMesh,
+    /// Its solid at density 1 in its own coordinates; `None` when it encloses no volume.
+    solid: Option<MassProperties>,
+    /// Its surface at surface density 1 (for a thin wall).
+    surface: MassProperties,
+    /// What its mesh has wrong (faces count within the part).
+    pub warnings: Vec<Warning>,
+}
+
+impl PartModel {
+    /// Integrates `mesh` once as a solid and as a surface.
+    ///
+    /// # Errors
+    /// The mesh has no area (the message names the part).
+    pub fn new(entry: PartEntry, mesh: PolyMesh) -> Result<Self, String> {
+        let name = &entry.name;
+        let unit = MassSpec::Density(1.0);
+        let repairs = Repairs::default();
+        let solid = massprops::analyze_with(&mesh, Method::Volume, unit, &repairs).ok();
+        let surface = massprops::analyze_with(&mesh, Method::Shell, unit, &repairs)
+            .map_err(|e| format!("part \"{name}\": {e}"))?;
+        let warnings = solid
+            .as_ref()
+            .map_or_else(|| surface.warnings.clone(), |s| s.warnings.clone());
+        Ok(Self {
+            entry,
+            visible: true,
+            piece: false,
+            mesh,
+            solid: solid.map(|a| a.properties),
+            surface: surface.properties,
+            warnings,
+        })
+    }
+
+    /// Mesh coordinates → body coordinates.
+    pub fn placement(&self) -> Isometry3<f64> {
+        placement(&self.entry)
+    }
+
+    /// The part's density (kg/m³): given, or its preset's, or its mass over its volume.
+    pub fn density(&self) -> Option<f64> {
+        match &self.entry.material {
+            MaterialEntry::Density(d) => Some(*d),
+            MaterialEntry::Preset(name) => massprops::material(name).map(|m| m.density),
+            MaterialEntry::Mass(m) => self.solid.as_ref().map(|s| m / s.mass),
+        }
+    }
+
+    /// Its signed mass as it counts in the body, in body coordinates.
+    ///
+    /// # Errors
+    /// A solid, void or mass given to a part that encloses no volume, or no density.
+    pub fn mass(&self) -> Result<PartMass, String> {
+        let name = &self.entry.name;
+        let density = self
+            .density()
+            .ok_or_else(|| format!("part \"{name}\": encloses no volume to give a mass to"))?;
+        let (unit, scale) = match self.entry.thin_wall {
+            Some(t) => (&self.surface, density * t),
+            None => {
+                let solid = self.solid.as_ref().ok_or_else(|| {
+                    format!("part \"{name}\": encloses no volume; give it a thin wall instead")
+                })?;
+                (solid, density)
+            }
+        };
+        let placed = unit.transformed(&self.placement());
+        let sign = if self.entry.void { -1.0 } else { 1.0 };
+        Ok(PartMass {
+            mass: sign * placed.mass * scale,
+            center_of_mass: placed.center_of_mass,
+            inertia_com: placed.inertia_com * (sign * scale),
+        })
+    }
+
+    /// Its surface moved into place (body coordinates).
+    pub fn placed_mesh(&self) -> Result<PolyMesh, String> {
+        let p = self.placement();
+        self.mesh
+            .map_positions(|q| p * q)
+            .map_err(|e| format!("part \"{}\": {e}", self.entry.name))
+    }
+}
+
+/// Mesh coordinates → body coordinates for a part's settings: its rotation, then its translation
+/// (in metres: the lab keeps bodies in metres).
+pub fn placement(entry: &PartEntry) -> Isometry3<f64> {
+    let rotation = entry
+        .rotation
+        .map_or_else(UnitQuaternion::identity, |(axis, degrees)| {
+            UnitQuaternion::from_axis_angle(
+                &Unit::new_normalize(Vector3::from(axis)),
+                degrees.to_radians(),
+            )
+        });
+    Isometry3::from_parts(
+        Translation3::from(Vector3::from(entry.translation)),
+        rotation,
+    )
+}
+
+/// The parts of a body file, integrated (in metres: placements and meshes converted).
+pub fn from_body_file(path: &Path) -> Result<Vec<PartModel>, String> {
+    let body = BodyFile::read(path).map_err(|e| e.to_string())?;
+    let parts = body.load().map_err(|e| e.to_string())?;
+    let unit = body.unit();
+    let folder = path.parent().unwrap_or(Path::new(""));
+    body.parts
+        .into_iter()
+        .zip(parts)
+        .map(|(mut entry, part)| {
+            // The lab works in metres, with absolute mesh paths (a saved file makes them relative
+            // again).
+            entry.translation = entry.translation.map(|c| c * unit);
+            entry.thin_wall = entry.thin_wall.map(|t| t * unit);
+            entry.mesh = folder.join(&entry.mesh);
+            PartModel::new(entry, part.mesh)
+        })
+        .collect()
+}
+
+/// The body file that describes `parts`, to be written at `path` (mesh paths relative to its
+/// folder where they can be).
+pub fn to_body_file(parts: &[PartModel], path: &Path) -> BodyFile {
+    let folder = path.parent().unwrap_or(Path::new(""));
+    BodyFile {
+        path: path.to_path_buf(),
+        units: "m".to_owned(),
+        parts: parts
+            .iter()
+            .map(|p| PartEntry {
+                mesh: relative(&p.entry.mesh, folder),
+                ..p.entry.clone()
+            })
+            .collect(),
+    }
+}
+
+/// `path` relative to `folder` when it lies inside it (or beside it, by `..`), else as it is.
+fn relative(path: &Path, folder: &Path) -> PathBuf {
+    let absolute = |p: &Path| std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf());
+    let (target, base) = (absolute(path), absolute(folder));
+    let common = target
+        .components()
+        .zip(base.components())
+        .take_while(|(a, b)| a == b)
+        .count();
+    if common == 0 {
+        return path.to_path_buf();
+    }
+    let mut out = PathBuf::new();
+    for _ in base.components().skip(common) {
+        out.push("..");
+    }
+    for c in target.components().skip(common) {
+        out.push(c);
+    }
+    out
+}
+
+/// A part made from a mesh file (all of it, or one object), of water's density at the origin.
+pub fn entry_for(name: &str, mesh: &Path, object: Option<&str>) -> PartEntry {
+    PartEntry {
+        name: name.to_owned(),
+        mesh: mesh.to_path_buf(),
+        object: object.map(str::to_owned),
+        material: MaterialEntry::Density(1000.0),
+        rotation: None,
+        translation: [0.0; 3],
+        void: false,
+        thin_wall: None,
+        line: 0,
+    }
+}
+
+/// A mesh file as one new part (all of it), named after the file, of water's density.
+pub fn from_mesh_file(path: &Path) -> Result<Vec<PartModel>, String> {
+    let file = massprops::load_mesh(path).map_err(|e| e.to_string())?;
+    let name = path
+        .file_stem()
+        .map_or_else(|| "part".to_owned(), |s| s.to_string_lossy().into_owned());
+    Ok(vec![PartModel::new(
+        entry_for(&name, path, None),
+        file.mesh,
+    )?])
+}
+
+/// A single-mesh body's parts: its file's named parts, or its connected shells, each of
+/// `density`.
+pub fn from_single(body: &LoadedBody, density: f64) -> Result<Vec<PartModel>, String> {
+    let Some((path, file)) = &body.file else {
+        return Err(format!("{} is already made of parts", body.name));
+    };
+    let named = !file.face_parts.is_empty();
+    file.parts()
+        .into_iter()
+        .map(|(name, faces)| {
+            let mesh = file.mesh.subset(&faces).map_err(|e| e.to_string())?;
+            let mut entry = entry_for(&name, path, named.then_some(name.as_str()));
+            entry.material = MaterialEntry::Density(density);
+            let mut part = PartModel::new(entry, mesh)?;
+            part.piece = !named;
+            Ok(part)
+        })
+        .collect()
+}
+
+/// Writes `parts` as a body file at `path`; a part whose mesh file is not on disk (a sample's, a
+/// connected shell's) gets its own OBJ beside the body file. Returns what was written, in words.
+pub fn save(parts: &[PartModel], path: &Path) -> Result<String, String> {
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let stem = path
+        .file_stem()
+        .map_or_else(|| "body".to_owned(), |s| s.to_string_lossy().into_owned());
+    let mut written = Vec::new();
+    let mut saved = parts.to_vec();
+    for part in &mut saved {
+        if part.entry.mesh.is_file() && !part.piece {
+            continue;
+        }
+        let file_name = format!("{stem}-{}.obj", slug(&part.entry.name));
+        let target = folder.join(&file_name);
+        std::fs::write(&target, obj_text(&part.entry.name, &part.mesh))
+            .map_err(|e| format!("cannot write {}: {e}", target.display()))?;
+        part.entry.mesh = target;
+        part.entry.object = None;
+        part.piece = false;
+        written.push(file_name);
+    }
+    let text = to_body_file(&saved, path).to_toml();
+    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(if written.is_empty() {
+        format!("{} parts", parts.len())
+    } else {
+        format!("{} parts; meshes {}", parts.len(), written.join(", "))
+    })
+}
+
+/// A file-name-safe form of a part's name.
+fn slug(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// A mesh as OBJ text, one object.
+fn obj_text(name: &str, mesh: &PolyMesh) -> String {
+    let builder = massprops::shapes::MeshBuilder {
+        positions: mesh.positions().to_vec(),
+        faces: mesh
+            .faces()
+            .map(|f| f.iter().map(|&i| i as usize).collect())
+            .collect(),
+        objects: Vec::new(),
+    };
+    massprops::shapes::to_obj(name, "a part saved by Inertia Lab; metres", &builder)
+}
