@@ -74,7 +74,7 @@ fn renders_the_t_handle_headless() {
     let context = Context::from_gl_context(gl).expect("context");
     let mesh = TriMesh::from_poly(&massprops::shapes::t_handle().build());
     let (center, radius) = mesh.bounding_sphere();
-    scene.set_mesh(1, &convert::cpu_mesh(&mesh, &center));
+    scene.set_mesh(1, &convert::cpu_mesh(&mesh, &center, &[]));
     let mut camera = OrbitCamera::default();
     camera.frame(center, radius);
     let params = FrameParams::new(&camera, &Matrix4::identity(), &center);

@@ -8,7 +8,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
 use inertia_lab::gui::LabApp;
-use inertia_lab::gui::view3d::overlay::Overlay;
+use inertia_lab::gui::view3d::overlay::{Overlay, Selection};
 use inertia_lab::lab::Variant;
 use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassSpec};
 use rbcore::RotationModel;
@@ -265,11 +265,22 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
     h.get_by_label(title).click();
     frames(&mut h, 1);
     assert_eq!(h.state().selected_warning(), Some(0));
-    let overlay = Overlay::build(h.state().lab(), std::time::Instant::now(), Some(0));
+    let overlay = Overlay::build(
+        h.state().lab(),
+        std::time::Instant::now(),
+        Selection {
+            warning: Some(0),
+            part: None,
+        },
+    );
     let labels: Vec<&str> = overlay.labels.iter().map(|l| l.text.as_str()).collect();
     assert!(labels.contains(&"face 6"), "{labels:?}");
     // The top face's four sides, at z = 1 of the unit cube (placed about its centre of mass).
-    let none = Overlay::build(h.state().lab(), std::time::Instant::now(), None);
+    let none = Overlay::build(
+        h.state().lab(),
+        std::time::Instant::now(),
+        Selection::default(),
+    );
     assert_eq!(overlay.segments.len(), none.segments.len() + 4);
     h.get_by_label(title).click();
     frames(&mut h, 1);

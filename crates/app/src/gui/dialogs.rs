@@ -16,10 +16,14 @@ pub struct Dialog {
 /// Why a dialog was opened.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DialogPurpose {
-    /// Pick a mesh to load.
+    /// Pick a mesh or body file to load.
     OpenMesh,
     /// Choose where to write the plot CSV.
     SaveCsv,
+    /// Pick a mesh to add as a part.
+    AddPart,
+    /// Choose where to write the body file.
+    SaveBody,
 }
 
 impl Dialog {
@@ -30,8 +34,18 @@ impl Dialog {
             let dialog = rfd::FileDialog::new();
             let path = match purpose {
                 DialogPurpose::OpenMesh => dialog
+                    .add_filter(
+                        "Meshes and bodies (OBJ, STL, TOML)",
+                        &["obj", "stl", "toml", "OBJ", "STL", "TOML"],
+                    )
+                    .pick_file(),
+                DialogPurpose::AddPart => dialog
                     .add_filter("Meshes (OBJ, STL)", &["obj", "stl", "OBJ", "STL"])
                     .pick_file(),
+                DialogPurpose::SaveBody => dialog
+                    .add_filter("Body files", &["toml"])
+                    .set_file_name("body.toml")
+                    .save_file(),
                 DialogPurpose::SaveCsv => dialog
                     .add_filter("CSV", &["csv"])
                     .set_file_name("inertia-lab.csv")

@@ -246,7 +246,10 @@ impl LabApp {
                 ui,
                 &self.lab,
                 self.scene.as_ref(),
-                self.panels.selected_warning,
+                view3d::overlay::Selection {
+                    warning: self.panels.selected_warning,
+                    part: self.panels.selected_part,
+                },
                 &mut commands,
             );
         });
@@ -319,6 +322,8 @@ impl LabApp {
                 specimen: crate::lab::PRIMARY,
                 path,
             },
+            (Some(DialogPurpose::AddPart), Some(path)) => Command::AddPart(path),
+            (Some(DialogPurpose::SaveBody), Some(path)) => Command::SaveBody(path),
             // rfd reports a cancel and a missing XDG desktop portal alike.
             _ => Command::Notify(Message {
                 text: "no file chosen (if no dialog appeared, this desktop has no file-dialog \

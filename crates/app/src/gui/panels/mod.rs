@@ -8,6 +8,7 @@ use crate::lab::{Command, Lab};
 pub mod compare;
 pub mod diagnostics;
 pub mod help;
+pub mod parts;
 pub mod plots;
 pub mod side;
 pub mod sphere;
@@ -43,6 +44,10 @@ pub struct PanelState {
     /// The mesh warning whose faces the 3D view highlights (an index into the primary body's
     /// warnings).
     pub selected_warning: Option<usize>,
+    /// The part the Parts section edits and the 3D view outlines.
+    pub selected_part: Option<usize>,
+    /// Where "Save" writes the body file.
+    pub body_path: String,
 }
 
 impl Default for PanelState {
@@ -61,6 +66,8 @@ impl Default for PanelState {
             record_stop: false,
             recording: None,
             selected_warning: None,
+            selected_part: None,
+            body_path: "body.toml".to_owned(),
         }
     }
 }

@@ -8,7 +8,7 @@ use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
 use super::{PanelState, number};
 use crate::gui::dialogs::DialogPurpose;
-use crate::lab::loader::SAMPLES;
+use crate::lab::loader::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassSpec};
 use crate::lab::{Command, Lab};
 
@@ -31,6 +31,7 @@ pub fn show(
         motion_section(ui, lab, commands, s);
         super::compare::show(ui, lab, s, state, commands);
         interaction_section(ui, lab, s);
+        super::parts::show(ui, lab, state, commands);
         super::diagnostics::show(ui, lab, state);
         ui.separator();
         if ui.button("Reset settings").clicked() {
@@ -73,7 +74,7 @@ fn body_section(
                 {
                     state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
-                ui.label("or drop an OBJ/STL file on the window");
+                ui.label("or drop an OBJ/STL (or a body .toml) file on the window");
             });
             ui.horizontal(|ui| {
                 let l = ui.label("Path");
@@ -88,6 +89,14 @@ fn body_section(
             ui.horizontal_wrapped(|ui| {
                 ui.label("Samples:");
                 for (label, ..) in SAMPLES {
+                    if ui.small_button(label).clicked() {
+                        commands.push(Command::LoadSample(label.to_owned()));
+                    }
+                }
+            });
+            ui.horizontal_wrapped(|ui| {
+                ui.label("Made of parts:");
+                for (label, ..) in SAMPLE_BODIES {
                     if ui.small_button(label).clicked() {
                         commands.push(Command::LoadSample(label.to_owned()));
                     }
@@ -109,6 +118,13 @@ fn body_section(
                 ui.add(egui::ProgressBar::new(l.fraction).show_percentage());
             }
             number(ui, "Size ×", &mut s.body.scale, 1e-3..=1e3, 0.01, "");
+            if lab.primary().body().composition.is_some() {
+                let m = lab.primary().properties(InertiaSource::Exact).mass;
+                ui.label(format!(
+                    "Mass {m:.4e} kg, from the parts' materials (below)"
+                ));
+                return;
+            }
             ui.horizontal(|ui| {
                 let density = matches!(s.body.mass, MassSpec::Density(_));
                 let primary = lab.primary();

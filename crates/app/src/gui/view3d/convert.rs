@@ -4,7 +4,7 @@
 //! a mesh far from its own origin keeps its f32 precision.
 
 use nalgebra::{Matrix4, Point2, Point3, Translation3, Vector2};
-use three_d::{CpuMesh, Indices, Mat4, Positions, Vec3};
+use three_d::{CpuMesh, Indices, Mat4, Positions, Srgba, Vec3};
 
 use crate::lab::camera::OrbitCamera;
 use crate::lab::geometry::TriMesh;
@@ -35,11 +35,19 @@ pub fn size(v: egui::Vec2) -> Vector2<f64> {
 }
 
 /// A flat-shaded GPU mesh (vertices unshared so every triangle has its face normal: the
-/// T-handle's edges stay crisp) in coordinates relative to `origin`.
-pub fn cpu_mesh(mesh: &TriMesh, origin: &Point3<f64>) -> CpuMesh {
+/// T-handle's edges stay crisp) in coordinates relative to `origin`. With `colors` (one per
+/// triangle; `None` leaves the triangle out), each triangle gets its own colour.
+pub fn cpu_mesh(mesh: &TriMesh, origin: &Point3<f64>, colors: &[Option<[u8; 3]>]) -> CpuMesh {
     let mut positions = Vec::with_capacity(mesh.triangles.len() * 3);
     let mut normals = Vec::with_capacity(mesh.triangles.len() * 3);
-    for t in &mesh.triangles {
+    let mut vertex_colors = Vec::new();
+    for (k, t) in mesh.triangles.iter().enumerate() {
+        if !colors.is_empty() {
+            let Some([r, g, b]) = colors.get(k).copied().flatten() else {
+                continue;
+            };
+            vertex_colors.extend([Srgba::new_opaque(r, g, b); 3]);
+        }
         let [a, b, c] = t.map(|i| mesh.positions[i as usize] - origin);
         let n = (b - a).cross(&(c - a));
         let n = n.try_normalize(0.0).unwrap_or_else(nalgebra::Vector3::z);
@@ -52,6 +60,7 @@ pub fn cpu_mesh(mesh: &TriMesh, origin: &Point3<f64>) -> CpuMesh {
         positions: Positions::F32(positions),
         indices: Indices::None,
         normals: Some(normals),
+        colors: (!colors.is_empty()).then_some(vertex_colors),
         ..Default::default()
     }
 }
@@ -122,7 +131,7 @@ mod tests {
     #[test]
     fn flat_mesh_has_unit_face_normals() {
         let mesh = TriMesh::from_poly(&massprops::shapes::cube().build());
-        let cpu = cpu_mesh(&mesh, &Point3::new(0.5, 0.0, 0.0));
+        let cpu = cpu_mesh(&mesh, &Point3::new(0.5, 0.0, 0.0), &[]);
         let normals = cpu.normals.expect("normals");
         assert_eq!(normals.len(), 36);
         assert!(normals.iter().all(|n| (n.magnitude() - 1.0).abs() < 1e-6));

@@ -15,7 +15,7 @@ use crate::lab::camera::OrbitCamera;
 use crate::lab::settings::GhostLayout;
 use crate::lab::{Command, Lab, PRIMARY};
 use convert::FrameParams;
-use overlay::{Overlay, WIREFRAME_MAX_EDGES};
+use overlay::{Overlay, Selection, WIREFRAME_MAX_EDGES};
 use scene::Scene;
 
 /// What a primary-button drag is doing.
@@ -57,6 +57,21 @@ fn row_offset(k: usize) -> f64 {
         1 => -SPACING,
         _ => SPACING * (k - 1) as f64,
     }
+}
+
+/// The colour of part `k` of a body made of parts (the Parts section shows the same swatch).
+pub fn part_color(k: usize) -> [u8; 3] {
+    const PALETTE: [[u8; 3]; 8] = [
+        [200, 160, 90],
+        [110, 160, 220],
+        [120, 200, 120],
+        [220, 110, 110],
+        [190, 130, 220],
+        [230, 200, 90],
+        [90, 200, 200],
+        [220, 150, 180],
+    ];
+    PALETTE[k % PALETTE.len()]
 }
 
 /// The translucent colour of compared copy `k` (1-based), also its swatch in the tables.
@@ -107,7 +122,7 @@ impl View3d {
         ui: &mut egui::Ui,
         lab: &Lab,
         scene: Option<&Arc<Mutex<Scene>>>,
-        highlight: Option<usize>,
+        selection: Selection,
         commands: &mut Vec<Command>,
     ) {
         let shown = (
@@ -134,9 +149,10 @@ impl View3d {
                 if let Ok(mut s) = scene.lock()
                     && s.generation() != Some(lab.generation())
                 {
+                    let body = lab.primary().body();
                     s.set_mesh(
                         lab.generation(),
-                        &convert::cpu_mesh(&lab.primary().body().mesh, &origin),
+                        &convert::cpu_mesh(&body.mesh, &origin, &triangle_colors(body)),
                     );
                 }
                 let scene = Arc::clone(scene);
@@ -163,7 +179,7 @@ impl View3d {
                 );
             }
         }
-        self.paint_overlay(ui, rect, lab, highlight);
+        self.paint_overlay(ui, rect, lab, selection);
         let mut hint = HINT.to_owned();
         if lab.settings().view.wireframe
             && lab.primary().body().mesh.edges.len() > WIREFRAME_MAX_EDGES
@@ -182,6 +198,10 @@ impl View3d {
         let origin = primary.body().sphere.0;
         let model = primary.placement().matrix();
         let mut params = FrameParams::new(&self.camera, &model, &origin);
+        if primary.body().composition.is_some() {
+            // The parts' own colours, untinted.
+            params.color = [255, 255, 255];
+        }
         // A row runs along the screen's right at the primary's depth, about a body width apart.
         let (_, radius) = primary.bounding_sphere();
         let right = self.camera.right();
@@ -281,8 +301,8 @@ impl View3d {
         }
     }
 
-    fn paint_overlay(&self, ui: &egui::Ui, rect: egui::Rect, lab: &Lab, highlight: Option<usize>) {
-        let overlay = Overlay::build(lab, Instant::now(), highlight);
+    fn paint_overlay(&self, ui: &egui::Ui, rect: egui::Rect, lab: &Lab, selection: Selection) {
+        let overlay = Overlay::build(lab, Instant::now(), selection);
         let painter = ui.painter_at(rect);
         let size = convert::size(rect.size());
         let project = |p: &Point3<f64>| {
@@ -329,4 +349,19 @@ impl View3d {
             }
         }
     }
+}
+
+/// For a body made of parts, each triangle's colour (its part's), or `None` for a hidden part;
+/// empty for a single mesh (drawn in the body colour).
+fn triangle_colors(body: &crate::lab::loader::LoadedBody) -> Vec<Option<[u8; 3]>> {
+    let Some(c) = &body.composition else {
+        return Vec::new();
+    };
+    let mut colors = vec![None; body.mesh.triangles.len()];
+    for (k, (part, range)) in c.parts.iter().zip(&c.triangles).enumerate() {
+        if part.visible {
+            colors[range.clone()].fill(Some(part_color(k)));
+        }
+    }
+    colors
 }

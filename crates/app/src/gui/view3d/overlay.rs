@@ -108,8 +108,8 @@ impl Overlay {
     }
 
     /// The overlay for the lab's current state: every layer of [`LAYERS`] in order, over the
-    /// primary specimen; `highlight` is the mesh warning whose faces are outlined.
-    pub fn build(lab: &Lab, now: Instant, highlight: Option<usize>) -> Self {
+    /// primary specimen, with what the panels have selected outlined.
+    pub fn build(lab: &Lab, now: Instant, selection: Selection) -> Self {
         let specimen = lab.primary();
         let body = specimen.sim().body();
         let ctx = Context {
@@ -120,7 +120,7 @@ impl Overlay {
             com: body.position(),
             radius: specimen.bounding_sphere().1,
             now,
-            highlight,
+            selection,
         };
         let mut o = Overlay::default();
         for layer in LAYERS {
@@ -142,8 +142,17 @@ struct Context<'a> {
     /// Bounding-sphere radius of the scaled body: the length scale of guides and arrows.
     radius: f64,
     now: Instant,
-    /// The mesh warning whose faces are outlined.
-    highlight: Option<usize>,
+    /// What the panels have selected.
+    selection: Selection,
+}
+
+/// What the panels have selected, for the overlay to outline.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Selection {
+    /// A mesh warning, whose example faces are outlined.
+    pub warning: Option<usize>,
+    /// A part of a body made of parts, whose box is outlined and named.
+    pub part: Option<usize>,
 }
 
 impl Context<'_> {
@@ -170,7 +179,7 @@ impl Context<'_> {
 type Layer = fn(&mut Overlay, &Context<'_>);
 
 /// The layers, bottom first.
-const LAYERS: [Layer; 11] = [
+const LAYERS: [Layer; 12] = [
     wireframe,
     bounding_box,
     principal_axes,
@@ -182,14 +191,54 @@ const LAYERS: [Layer; 11] = [
     poke,
     string,
     highlighted_faces,
+    selected_part,
 ];
+
+/// The selected part of a body made of parts: its bounding box (in the body's axes) and name.
+fn selected_part(o: &mut Overlay, c: &Context<'_>) {
+    let body = c.specimen.body();
+    let (Some(k), Some(comp)) = (c.selection.part, body.composition.as_ref()) else {
+        return;
+    };
+    let (Some(part), Some(range)) = (comp.parts.get(k), comp.triangles.get(k)) else {
+        return;
+    };
+    let mut lo = Point3::from([f64::INFINITY; 3]);
+    let mut hi = Point3::from([f64::NEG_INFINITY; 3]);
+    for t in &body.mesh.triangles[range.clone()] {
+        for &v in t {
+            let p = body.mesh.positions[v as usize];
+            lo = lo.inf(&p);
+            hi = hi.sup(&p);
+        }
+    }
+    if range.is_empty() {
+        return;
+    }
+    let corner = |i: usize| {
+        c.placement.to_world(&Point3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        ))
+    };
+    for (a, b) in cube_edges() {
+        o.line(corner(a), corner(b), HIGHLIGHT_COLOR, 2.0);
+    }
+    o.labels.push(Label {
+        at: corner(7),
+        text: part.entry.name.clone(),
+        color: HIGHLIGHT_COLOR,
+        align: Align2::LEFT_BOTTOM,
+    });
+}
 
 /// The example faces of the selected mesh warning: outlined, with a dot and their number, drawn
 /// over everything (they may be small or hidden behind other faces). Faces whose centres lie
 /// close together (around one small hole) share one label.
 fn highlighted_faces(o: &mut Overlay, c: &Context<'_>) {
     let body = c.specimen.body();
-    let Some(faces) = c.highlight.and_then(|i| body.warning_faces.get(i)) else {
+    let Some(faces) = c.selection.warning.and_then(|i| body.warning_faces.get(i)) else {
         return;
     };
     let positions = &body.mesh.positions;
@@ -571,7 +620,7 @@ mod tests {
         settings.view.poinsot = true;
         lab.apply(Command::Settings(Box::new(settings)));
         lab.advance_for(6.0);
-        let o = Overlay::build(&lab, Instant::now(), None);
+        let o = Overlay::build(&lab, Instant::now(), Selection::default());
         let body = lab.primary().sim().body();
         let n = body.angular_momentum().normalize();
         let &(tip, _) = o
@@ -621,7 +670,7 @@ mod tests {
             ..ViewSettings::default()
         };
         lab.apply(Command::Settings(Box::new(settings)));
-        let o = Overlay::build(&lab, Instant::now(), None);
+        let o = Overlay::build(&lab, Instant::now(), Selection::default());
         let com = lab.primary().sim().body().position();
         // The book is a 1 × 4 × 7 box: its equivalent box has half-diagonal √(0.25+4+12.25).
         let box_edges = o
