@@ -288,6 +288,46 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A body made of parts from the samples: selecting a part opens its editor, and making the
+/// steel head a 2 mm wall lightens the body mid-run with the angular momentum kept.
+#[test]
+fn editing_a_part_from_the_panel_keeps_the_motion() {
+    let mut h = harness_of_size([1280.0, 1600.0]);
+    frames(&mut h, 2);
+    h.get_by_label("Hammer: steel & wood").click();
+    frames(&mut h, 5);
+    let lab = h.state().lab();
+    let parts = lab.primary().body().composition.as_ref().expect("parts");
+    assert_eq!(parts.parts.len(), 2);
+    let before = lab.primary().properties(InertiaSource::Exact).mass;
+    h.get_by_label("head").click();
+    frames(&mut h, 1);
+    assert!(h.query_by_label("Part “head”").is_some());
+    h.get_all_by_label("Pause").next().expect("button").click();
+    frames(&mut h, 1);
+    let l = h.state().lab().primary().sim().body().angular_momentum();
+    h.get_by_label("Thin wall").click();
+    frames(&mut h, 2);
+    let lab = h.state().lab();
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let parts = lab.primary().body().composition.as_ref().expect("parts");
+    assert_eq!(parts.parts[0].entry.thin_wall, Some(0.002));
+    let after = lab.primary().properties(InertiaSource::Exact).mass;
+    // The head: 0.12 × 0.03 × 0.03 m of steel, now 2 mm walls on its 0.0162 m² of surface.
+    let head_solid = 7850.0 * 0.12 * 0.03 * 0.03;
+    let head_wall = 7850.0 * 0.002 * 2.0 * (0.12 * 0.03 * 2.0 + 0.03 * 0.03);
+    assert!(
+        ((before - after) - (head_solid - head_wall)).abs() < 1e-12,
+        "{before} → {after}"
+    );
+    let b = lab.primary().sim().body();
+    assert!((b.angular_momentum() - l).norm() <= 1e-12 * l.norm());
+}
+
 /// The Compare section starts copies from the same start, shows their drift, and stops them.
 #[test]
 fn compare_from_the_panel() {

@@ -44,7 +44,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
                 ui.label("");
                 ui.label("part");
                 ui.label("mass (kg)");
-                ui.label("share of I1 I2 I3");
+                ui.label("% of I1 I2 I3");
                 ui.end_row();
                 for (k, part) in c.parts.iter().enumerate() {
                     let [r, g, b] = part_color(k);
@@ -62,7 +62,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
                     }
                     ui.label(format!("{:.4}", c.masses[k]));
                     let s = c.shares[k] * 100.0;
-                    ui.label(format!("{:.0} {:.0} {:.0} %", s.x, s.y, s.z));
+                    ui.label(format!("{:.0} {:.0} {:.0}", s.x, s.y, s.z));
                     ui.end_row();
                 }
             });
