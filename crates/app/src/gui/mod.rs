@@ -181,7 +181,16 @@ impl LabApp {
                 .map(|f| f.path().to_path_buf())
                 .collect()
         });
-        commands.extend(dropped.into_iter().take(1).map(Command::LoadFile));
+        // A mesh dropped on a body made of parts joins it as a part; anything else (a mesh on a
+        // single mesh, a body file) replaces the body.
+        let parts = self.lab.primary().body().composition.is_some();
+        commands.extend(dropped.into_iter().take(1).map(|path| {
+            if parts && !crate::lab::loader::is_body_file(&path) {
+                Command::AddPart(path)
+            } else {
+                Command::LoadFile(path)
+            }
+        }));
         self.poll_dialog(&mut commands);
         self.panels.dialog_open = self.dialog.is_some();
         self.lab.frame(Instant::now());
@@ -257,7 +266,11 @@ impl LabApp {
             ctx.debug_painter().text(
                 ctx.content_rect().center(),
                 egui::Align2::CENTER_CENTER,
-                "Drop to load",
+                if self.lab.primary().body().composition.is_some() {
+                    "Drop a mesh to add it as a part (a body file to open it)"
+                } else {
+                    "Drop to load"
+                },
                 egui::FontId::proportional(32.0),
                 egui::Color32::WHITE,
             );

@@ -669,6 +669,56 @@ mod tests {
     }
 
     #[test]
+    fn a_hammer_built_from_two_meshes_is_saved_and_opened_with_its_centre_in_the_head() {
+        let dir = std::env::temp_dir().join(format!("inertia-lab-build-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let handle = dir.join("handle.obj");
+        let bar =
+            massprops::shapes::cuboid(Vector3::new(0.1, 1.0, 0.1), Point3::new(0.0, -1.0, 0.0));
+        std::fs::write(&handle, massprops::shapes::to_obj("handle", "", &bar)).expect("write");
+        let mut lab = lab();
+        // The unit cube (the head), then the handle as a second part.
+        lab.apply(Command::LoadSample("Cube".to_owned()));
+        lab.apply(Command::AddPart(handle));
+        assert!(
+            lab.message().is_some_and(|m| !m.error),
+            "{:?}",
+            lab.message()
+        );
+        let parts = lab.current_parts().expect("parts");
+        assert_eq!(parts.len(), 2);
+        for (index, material) in [(0, "steel"), (1, "wood")] {
+            let mut entry = parts[index].entry.clone();
+            entry.material = massprops::MaterialEntry::Preset(material.to_owned());
+            lab.apply(Command::EditPart {
+                index,
+                entry: Box::new(entry),
+                visible: true,
+            });
+        }
+        let path = dir.join("hammer.toml");
+        lab.apply(Command::SaveBody(path.clone()));
+        assert!(
+            lab.message().is_some_and(|m| !m.error),
+            "{:?}",
+            lab.message()
+        );
+        let reopened =
+            LoadedBody::from_parts("hammer", parts::from_body_file(&path).expect("reads"))
+                .expect("a body");
+        let whole = &reopened.composition.as_ref().expect("parts").whole;
+        // 7850 kg at y = 0 and 0.01 m³ × 600 kg/m³ = 6 kg at y = −1: the centre is in the head.
+        let y = -6.0 / (7850.0 + 6.0);
+        assert!(
+            (whole.center_of_mass.y - y).abs() < 1e-12,
+            "{}",
+            whole.center_of_mass
+        );
+        assert!(whole.center_of_mass.y > -0.5);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
     fn a_mesh_splits_into_its_parts_and_takes_a_new_one() {
         let mut lab = lab();
         lab.apply(Command::LoadSample("Hammer".to_owned()));
