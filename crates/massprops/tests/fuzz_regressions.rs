@@ -1,44 +1,19 @@
-//! Inputs the fuzz targets (`fuzz/`) found to crash, replayed the way the targets run them:
-//! every method, mass given and density given, with default, exact and coarse welding. Each
-//! must give a result or an error, never a panic.
+//! Inputs the fuzz targets (`fuzz/`) found to crash, replayed by the targets' own code: every
+//! method, mass given and density given, with default, exact and coarse welding. Each must give
+//! a result or an error, never a panic, and every result must be a body.
 
 use std::path::Path;
-use std::time::Duration;
 
-use massprops::{Holes, MassSpec, MeshError, Method, Repairs, Weld, parse_mesh};
+use massprops::{MassSpec, MeshError, Method, Repairs, Weld, parse_mesh};
+
+/// What the fuzz targets do with an input, shared with them.
+#[path = "../../../fuzz/fuzz_targets/common.rs"]
+mod targets;
 
 fn every_way(path: &Path) {
     let bytes = std::fs::read(path).expect("readable");
-    let Ok(file) = parse_mesh(&bytes, path) else {
-        return;
-    };
-    let quick = Repairs {
-        overlap_budget: Duration::from_millis(20),
-        ..Repairs::default()
-    };
-    let variants = [
-        quick,
-        Repairs {
-            weld: Weld::Exact,
-            ..quick
-        },
-        Repairs {
-            holes: Holes::Refuse,
-            weld: Weld::Distance(0.5),
-            ..quick
-        },
-    ];
-    for method in [
-        Method::Volume,
-        Method::Shell,
-        Method::Points,
-        Method::BoundingBox,
-    ] {
-        for spec in [MassSpec::Density(1000.0), MassSpec::Mass(2.5)] {
-            for repairs in &variants {
-                let _ = file.analyze(method, spec, repairs);
-            }
-        }
+    if let Ok(file) = parse_mesh(&bytes, path) {
+        targets::analyze_every_way(&file);
     }
 }
 

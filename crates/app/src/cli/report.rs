@@ -406,31 +406,7 @@ pub fn composite_table(file: &str, units: &str, c: &Composite) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{file}: a body of {} parts ({units})", c.parts.len());
     let _ = writeln!(s, "  mass              {}", num(p.mass).trim_start());
-    let com = p.center_of_mass;
-    let _ = writeln!(
-        s,
-        "  centre of mass    {} {} {}",
-        num(com.x),
-        num(com.y),
-        num(com.z)
-    );
-    let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; body axes.");
-    let _ = writeln!(s, "  inertia about the centre of mass");
-    matrix_lines(&mut s, &p.inertia_com);
-    let m = p.principal.moments;
-    let _ = writeln!(
-        s,
-        "  principal moments (ascending) {} {} {}",
-        num(m.x),
-        num(m.y),
-        num(m.z)
-    );
-    let _ = writeln!(s, "    {}", p.principal.degeneracy.describe());
-    let _ = writeln!(
-        s,
-        "  principal axes (row i = axis of moment i, right-handed)"
-    );
-    matrix_lines(&mut s, &axes_rows(p));
+    inertia_lines(&mut s, p, "body");
     let _ = writeln!(
         s,
         "\nParts (a void's mass is negative; share = part of each principal moment):"
@@ -591,33 +567,7 @@ pub fn table(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> String {
         "  surface area      {}",
         num(d.surface_area).trim_start()
     );
-    let c = p.center_of_mass;
-    let _ = writeln!(
-        s,
-        "  centre of mass    {} {} {}",
-        num(c.x),
-        num(c.y),
-        num(c.z)
-    );
-    let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; mesh axes.");
-    let _ = writeln!(s, "  inertia about the centre of mass");
-    matrix_lines(&mut s, &p.inertia_com);
-    let _ = writeln!(s, "  inertia about the mesh origin");
-    matrix_lines(&mut s, &p.inertia_origin());
-    let m = p.principal.moments;
-    let _ = writeln!(
-        s,
-        "  principal moments (ascending) {} {} {}",
-        num(m.x),
-        num(m.y),
-        num(m.z)
-    );
-    let _ = writeln!(s, "    {}", p.principal.degeneracy.describe());
-    let _ = writeln!(
-        s,
-        "  principal axes (row i = axis of moment i, right-handed)"
-    );
-    matrix_lines(&mut s, &axes_rows(p));
+    inertia_lines(&mut s, p, "mesh");
     let (lo, hi) = d.bounding_box;
     let _ = writeln!(
         s,
@@ -677,6 +627,38 @@ pub fn table(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> String {
         }
     }
     s
+}
+
+/// The centre of mass, the tensors about it and about the origin of `frame` ("mesh", "body"),
+/// the principal moments and axes: the table's lines for one set of mass properties.
+fn inertia_lines(s: &mut String, p: &MassProperties, frame: &str) {
+    let c = p.center_of_mass;
+    let _ = writeln!(
+        s,
+        "  centre of mass    {} {} {}",
+        num(c.x),
+        num(c.y),
+        num(c.z)
+    );
+    let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; {frame} axes.");
+    let _ = writeln!(s, "  inertia about the centre of mass");
+    matrix_lines(s, &p.inertia_com);
+    let _ = writeln!(s, "  inertia about the {frame} origin");
+    matrix_lines(s, &p.inertia_origin());
+    let m = p.principal.moments;
+    let _ = writeln!(
+        s,
+        "  principal moments (ascending) {} {} {}",
+        num(m.x),
+        num(m.y),
+        num(m.z)
+    );
+    let _ = writeln!(s, "    {}", p.principal.degeneracy.describe());
+    let _ = writeln!(
+        s,
+        "  principal axes (row i = axis of moment i, right-handed)"
+    );
+    matrix_lines(s, &axes_rows(p));
 }
 
 /// How many shells the table lists one by one.

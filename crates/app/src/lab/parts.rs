@@ -8,7 +8,7 @@ use massprops::{
     BodyFile, MassProperties, MassSpec, MaterialEntry, Method, PartEntry, PartMass, PolyMesh,
     Repairs, Warning,
 };
-use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+use nalgebra::Isometry3;
 
 use super::loader::LoadedBody;
 
@@ -60,7 +60,8 @@ impl PartModel {
 
     /// Mesh coordinates → body coordinates.
     pub fn placement(&self) -> Isometry3<f64> {
-        placement(&self.entry)
+        // The lab keeps bodies in metres.
+        self.entry.placement(1.0)
     }
 
     /// The part's density (kg/m³): given, or its preset's, or its mass over its volume.
@@ -106,23 +107,6 @@ impl PartModel {
             .map_positions(|q| p * q)
             .map_err(|e| format!("part \"{}\": {e}", self.entry.name))
     }
-}
-
-/// Mesh coordinates → body coordinates for a part's settings: its rotation, then its translation
-/// (in metres: the lab keeps bodies in metres).
-pub fn placement(entry: &PartEntry) -> Isometry3<f64> {
-    let rotation = entry
-        .rotation
-        .map_or_else(UnitQuaternion::identity, |(axis, degrees)| {
-            UnitQuaternion::from_axis_angle(
-                &Unit::new_normalize(Vector3::from(axis)),
-                degrees.to_radians(),
-            )
-        });
-    Isometry3::from_parts(
-        Translation3::from(Vector3::from(entry.translation)),
-        rotation,
-    )
 }
 
 /// The parts of a body file, integrated (in metres: placements and meshes converted).

@@ -109,6 +109,23 @@ struct RawRotation {
     degrees: f64,
 }
 
+impl PartEntry {
+    /// Mesh coordinates → body coordinates in metres for a file in `unit` metres: the rotation
+    /// (about the mesh origin), then the translation.
+    pub fn placement(&self, unit: f64) -> Isometry3<f64> {
+        let rotation = self
+            .rotation
+            .map_or_else(UnitQuaternion::identity, |(axis, degrees)| {
+                UnitQuaternion::from_axis_angle(
+                    &Unit::new_normalize(Vector3::from(axis)),
+                    degrees.to_radians(),
+                )
+            });
+        let translation = Vector3::from(self.translation) * unit;
+        Isometry3::from_parts(Translation3::from(translation), rotation)
+    }
+}
+
 impl BodyFile {
     /// Reads a body file (not its meshes).
     pub fn read(path: &Path) -> Result<Self, MeshError> {
@@ -356,20 +373,11 @@ impl BodyFile {
                     density: density(m),
                 },
             };
-            let rotation = entry
-                .rotation
-                .map_or_else(UnitQuaternion::identity, |(a, deg)| {
-                    UnitQuaternion::from_axis_angle(
-                        &Unit::new_normalize(Vector3::from(a)),
-                        deg.to_radians(),
-                    )
-                });
-            let t = Vector3::from(entry.translation) * unit;
             parts.push(Part {
                 name: entry.name.clone(),
                 mesh,
                 fill,
-                placement: Isometry3::from_parts(Translation3::from(t), rotation),
+                placement: entry.placement(unit),
             });
         }
         Ok(parts)

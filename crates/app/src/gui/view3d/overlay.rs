@@ -215,18 +215,9 @@ fn selected_part(o: &mut Overlay, c: &Context<'_>) {
     if range.is_empty() {
         return;
     }
-    let corner = |i: usize| {
-        c.placement.to_world(&Point3::new(
-            if i & 1 == 0 { lo.x } else { hi.x },
-            if i & 2 == 0 { lo.y } else { hi.y },
-            if i & 4 == 0 { lo.z } else { hi.z },
-        ))
-    };
-    for (a, b) in cube_edges() {
-        o.line(corner(a), corner(b), HIGHLIGHT_COLOR, 2.0);
-    }
+    let top = outline_box(o, c, lo, hi, HIGHLIGHT_COLOR, 2.0);
     o.labels.push(Label {
-        at: corner(7),
+        at: top,
         text: part.entry.name.clone(),
         color: HIGHLIGHT_COLOR,
         align: Align2::LEFT_BOTTOM,
@@ -302,18 +293,9 @@ fn bounding_box(o: &mut Overlay, c: &Context<'_>) {
         return;
     }
     let (lo, hi) = c.specimen.body().analysis.diagnostics.bounding_box;
-    let corner = |i: usize| {
-        c.placement.to_world(&Point3::new(
-            if i & 1 == 0 { lo.x } else { hi.x },
-            if i & 2 == 0 { lo.y } else { hi.y },
-            if i & 4 == 0 { lo.z } else { hi.z },
-        ))
-    };
-    for (a, b) in cube_edges() {
-        o.line(corner(a), corner(b), GUIDE_COLOR, 1.5);
-    }
+    let top = outline_box(o, c, lo, hi, GUIDE_COLOR, 1.5);
     o.labels.push(Label {
-        at: corner(7),
+        at: top,
         text: "bounding box".to_owned(),
         color: GUIDE_COLOR,
         align: Align2::LEFT_BOTTOM,
@@ -596,6 +578,29 @@ fn string(o: &mut Overlay, c: &Context<'_>) {
 }
 
 /// The 12 edges of a cube whose corners are numbered by bits (x = 1, y = 2, z = 4).
+/// Outlines the box `lo`–`hi` (mesh coordinates) as placed; returns its corner of largest
+/// coordinates (world), where a label goes.
+fn outline_box(
+    o: &mut Overlay,
+    c: &Context<'_>,
+    lo: Point3<f64>,
+    hi: Point3<f64>,
+    color: Color32,
+    width: f32,
+) -> Point3<f64> {
+    let corner = |i: usize| {
+        c.placement.to_world(&Point3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        ))
+    };
+    for (a, b) in cube_edges() {
+        o.line(corner(a), corner(b), color, width);
+    }
+    corner(7)
+}
+
 fn cube_edges() -> impl Iterator<Item = (usize, usize)> {
     (0..8usize).flat_map(|c| {
         [1usize, 2, 4]
