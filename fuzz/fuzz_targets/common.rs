@@ -1,10 +1,12 @@
-//! What both targets do with a parsed mesh: every method at a density and at a mass, with the
+//! What the targets do: with a parsed mesh, every method at a density and at a mass, with the
 //! default repairs, with exact welding and with holes refused. Any panic is a bug; errors are
 //! the expected answer to bad input.
 
 use std::time::Duration;
 
-use massprops::{Holes, MassSpec, MeshFile, Method, Repairs, Weld};
+use std::path::Path;
+
+use massprops::{BodyFile, Holes, MassSpec, MeshFile, Method, Repairs, Weld};
 
 pub fn analyze_every_way(file: &MeshFile) {
     let quick = Repairs {
@@ -56,5 +58,23 @@ fn check(a: &massprops::Analysis) {
         if let Some(e) = w.effect_on_mass {
             assert!(!e.is_nan(), "{w:?}");
         }
+    }
+}
+
+/// Body-file text that parses must be written back as text that parses to the same parts.
+pub fn body_round_trip(text: &str) {
+    let Ok(body) = BodyFile::parse(text, Path::new("fuzz.toml")) else {
+        return;
+    };
+    let again = BodyFile::parse(&body.to_toml(), Path::new("fuzz.toml"))
+        .unwrap_or_else(|e| panic!("written text reads back: {e}\n{}", body.to_toml()));
+    assert_eq!(again.parts.len(), body.parts.len());
+    for (a, b) in again.parts.iter().zip(&body.parts) {
+        assert_eq!((&a.name, &a.mesh, &a.object), (&b.name, &b.mesh, &b.object));
+        assert_eq!(
+            (&a.material, a.void, a.thin_wall),
+            (&b.material, b.void, b.thin_wall)
+        );
+        assert_eq!((a.rotation, a.translation), (b.rotation, b.translation));
     }
 }

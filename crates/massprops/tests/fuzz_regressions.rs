@@ -12,7 +12,9 @@ mod targets;
 
 fn every_way(path: &Path) {
     let bytes = std::fs::read(path).expect("readable");
-    if let Ok(file) = parse_mesh(&bytes, path) {
+    if path.extension().is_some_and(|e| e == "toml") {
+        targets::body_round_trip(std::str::from_utf8(&bytes).expect("text"));
+    } else if let Ok(file) = parse_mesh(&bytes, path) {
         targets::analyze_every_way(&file);
     }
 }
