@@ -507,3 +507,24 @@ fn summary_says_when_nothing_flips() {
     );
     assert_eq!(top["polhode_circles_axis"], 3);
 }
+
+#[test]
+fn a_body_file_simulates_with_the_moments_props_reports() {
+    let hammer = asset("hammer.toml");
+    let out = simulate_ok(&["--mesh", &hammer, "--duration", "0.1", "--summary"]);
+    let sim: Value = serde_json::from_slice(&out.stdout).expect("json");
+    let out = Command::new(BIN)
+        .args(["props", &hammer, "--json"])
+        .output()
+        .expect("the binary runs");
+    let props: Value = serde_json::from_slice(&out.stdout).expect("json");
+    for k in 0..3 {
+        let (a, b) = (
+            sim["moments"][k].as_f64().expect("moment"),
+            props["principal_moments"][k].as_f64().expect("moment"),
+        );
+        assert!((a - b).abs() <= 1e-14 * b, "{a} vs {b}");
+    }
+    let out = simulate(&["--mesh", &hammer, "--density", "3"]);
+    assert_eq!(out.status.code(), Some(2));
+}

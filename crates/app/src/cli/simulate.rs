@@ -21,7 +21,8 @@ use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
 /// tennis-racket case I = (1, 2, 3), ω₀ = (0.001, 10, 0.001).
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
-    /// Mesh file (.obj or .stl); its exact mass properties give the body.
+    /// Mesh file (.obj or .stl), or a body file of parts (.toml); its exact mass properties give
+    /// the body.
     #[arg(long, conflicts_with = "inertia")]
     pub mesh: Option<PathBuf>,
     /// Density of the mesh's solid (default 1). Only with --mesh.
@@ -102,22 +103,34 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
         let density = positive("--density", args.density.unwrap_or(1.0))?;
         let input = |e: massprops::MeshError| CliError::Input(format!("{}: {e}", path.display()));
         // The body `props` reports for the same file: its defects handled the same way.
-        let file = massprops::load_mesh(path).map_err(input)?;
-        let analysis = file
-            .analyze(
-                massprops::Method::Volume,
-                massprops::MassSpec::Density(density),
-                &massprops::Repairs::default(),
-            )
-            .map_err(input)?;
-        for w in &analysis.warnings {
-            eprintln!(
-                "warning: {}: {}",
-                path.display(),
-                super::report::warning_text(w, &file.face_lines)
-            );
-        }
-        let mut props = analysis.properties;
+        let mut props = if super::parts::is_body_file(path) {
+            if args.density.is_some() {
+                return Err(CliError::Usage(
+                    "a body file gives each part's material: --density does not apply".to_owned(),
+                ));
+            }
+            let parts = super::parts::body_parts(path)?.1;
+            massprops::composite(&parts, &massprops::Repairs::default())
+                .map_err(input)?
+                .properties
+        } else {
+            let file = massprops::load_mesh(path).map_err(input)?;
+            let analysis = file
+                .analyze(
+                    massprops::Method::Volume,
+                    massprops::MassSpec::Density(density),
+                    &massprops::Repairs::default(),
+                )
+                .map_err(input)?;
+            for w in &analysis.warnings {
+                eprintln!(
+                    "warning: {}: {}",
+                    path.display(),
+                    super::report::warning_text(w, &file.face_lines)
+                );
+            }
+            analysis.properties
+        };
         if let Some(m) = args.mass {
             props = props.with_mass(m).map_err(input)?;
         }

@@ -136,7 +136,14 @@ impl LoadedBody {
         let analysis = file
             .analyze(Method::Volume, MassSpec::Density(1.0), &Repairs::default())
             .map_err(|e| format!("{name}: {e}"))?;
-        let poly = &file.mesh;
+        let mut body = Self::assemble(name, &file.mesh, analysis);
+        body.face_lines = file.face_lines.clone();
+        body.file = Some((path, Arc::new(file)));
+        Ok(body)
+    }
+
+    /// The drawing and picking mesh of `poly`, with its analysis and each warning's faces.
+    fn assemble(name: &str, poly: &PolyMesh, analysis: Analysis) -> Self {
         let warning_faces = analysis
             .warnings
             .iter()
@@ -149,17 +156,17 @@ impl LoadedBody {
             .collect();
         let mesh = TriMesh::from_poly(poly);
         let bvh = Bvh::build(&mesh);
-        Ok(Self {
+        Self {
             name: name.to_owned(),
             sphere: mesh.bounding_sphere(),
             mesh,
             bvh,
             analysis,
-            face_lines: file.face_lines.clone(),
+            face_lines: Vec::new(),
             warning_faces,
-            file: Some((path, Arc::new(file))),
+            file: None,
             composition: None,
-        })
+        }
     }
 
     /// A body made of `parts`: their placed surfaces together for drawing and picking, and their
@@ -195,25 +202,15 @@ impl LoadedBody {
         // whole's mass: no enclosed volume needed, so sheets and voids are fine).
         let analysis = massprops::analyze(&merged, Method::Points, MassSpec::Mass(whole.mass))
             .map_err(|e| format!("{name}: {e}"))?;
-        let mesh = TriMesh::from_poly(&merged);
-        let bvh = Bvh::build(&mesh);
-        Ok(Self {
-            name: name.to_owned(),
-            sphere: mesh.bounding_sphere(),
-            mesh,
-            bvh,
-            analysis,
-            face_lines: Vec::new(),
-            warning_faces: Vec::new(),
-            file: None,
-            composition: Some(Composition {
-                masses: masses.iter().map(|m| m.mass).collect(),
-                parts,
-                whole,
-                shares,
-                triangles,
-            }),
-        })
+        let mut body = Self::assemble(name, &merged, analysis);
+        body.composition = Some(Composition {
+            masses: masses.iter().map(|m| m.mass).collect(),
+            parts,
+            whole,
+            shares,
+            triangles,
+        });
+        Ok(body)
     }
 
     /// A sample body made of parts, by label.
