@@ -89,8 +89,8 @@ pub struct Warning {
     /// found (of the area for the shell method): positive when the defect adds mass. For a
     /// defect counted as it is (overlaps, nested shells) the mass it adds; for a repaired one,
     /// the difference between the file taken literally and the repaired result (duplicates:
-    /// what they would have added; holes: minus what the caps add; cracks: the change the weld
-    /// made). `None` when it cannot be estimated.
+    /// what they would have added; holes: minus what the caps add; cracks: the open mesh minus
+    /// the welded one). `None` when it cannot be estimated.
     pub effect_on_mass: Option<f64>,
 }
 
@@ -242,8 +242,10 @@ pub fn analyze_with(
     let body: &PolyMesh = &cleaned.mesh;
     let solid = solid_properties(body, IntegrationPath::Auto)
         .map_err(|e| explain(e, &diagnostics, repairs.holes == Holes::Cap));
-    let volume = solid.as_ref().ok().map(|s| s.volume);
-    let solid_flipped = solid.as_ref().is_ok_and(|s| s.flipped);
+    // Without the repairs that make it one (caps), an open surface encloses no definite volume.
+    let enclosed = uses_volume || diagnostics.is_closed();
+    let volume = solid.as_ref().ok().filter(|_| enclosed).map(|s| s.volume);
+    let solid_flipped = enclosed && solid.as_ref().is_ok_and(|s| s.flipped);
     let (properties, density, scale) = match (method, spec) {
         (Method::Shell, _) => {
             let (unit, area) = shell_properties(body, 1.0)?;
@@ -263,7 +265,7 @@ pub fn analyze_with(
             if diagnostics.surface_area.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return Err(MeshError::ZeroArea);
             }
-            let p = approximation(body, method, mass)?;
+            let p = approximation(mesh, method, mass)?;
             (p, None, diagnostics.surface_area)
         }
         (Method::Volume | Method::Points | Method::BoundingBox, _) => {
@@ -279,7 +281,7 @@ pub fn analyze_with(
             }
             let p = match method {
                 Method::Volume => exact,
-                _ => approximation(body, method, exact.mass)?,
+                _ => approximation(mesh, method, exact.mass)?,
             };
             (p, Some(density), solid.volume)
         }
@@ -302,8 +304,9 @@ pub fn analyze_with(
         density,
         volume,
         flipped,
-        bounding_box: bounding_box_properties(body, properties.mass)?,
-        point_masses: point_mass_properties(body, properties.mass)?,
+        // The file's own vertices: caps add centroids that are not the body's.
+        bounding_box: bounding_box_properties(mesh, properties.mass)?,
+        point_masses: point_mass_properties(mesh, properties.mass)?,
         properties,
         diagnostics,
         shells: cleaned.shells,

@@ -408,6 +408,20 @@ fn every_solid_of_an_ascii_stl_is_read_and_names_a_part() {
     assert_eq!(f.face_lines[12], 2 + 7 * 12 + 2);
     let p = mass_properties(&f.mesh, 1.0).expect("closed");
     assert_rel(p.mass, 2.0, 1e-15, "two cubes");
+    // Blocks of the same name are one part.
+    let same = format!("{a}{}", b.replacen("solid\n", "solid first\n", 1));
+    let f = parse_mesh(same.as_bytes(), Path::new("two.stl")).expect("ascii");
+    assert_eq!(f.part_names, ["first"]);
+    assert_eq!(f.face_parts, vec![0; 24]);
+}
+
+#[test]
+fn a_vertical_tab_after_f_still_names_the_right_lines() {
+    // tobj splits records on any whitespace; the lines and parts must follow it.
+    let text = CUBE_OBJ.replacen("f 5 6 7 8", "f\u{b}5 6 7 8", 1);
+    let f = parse_mesh(text.as_bytes(), Path::new("part.obj")).expect("reads");
+    assert_eq!(f.mesh.face_count(), 6);
+    assert_eq!(f.face_lines, vec![10, 11, 12, 13, 14, 15]);
 }
 
 #[test]

@@ -373,3 +373,52 @@ fn a_single_inner_wall_closes_one_half_and_the_other_is_capped() {
     );
     assert!(codes(&a).contains(&"holes_capped"), "{:?}", a.warnings);
 }
+
+#[test]
+fn a_cavity_stays_a_cavity_when_the_comparison_runs_out_of_time() {
+    let mut b = cuboid(3.0, [0.0; 3]);
+    let mut inner = cuboid(1.0, [0.5, 0.2, -0.3]);
+    inner.faces.iter_mut().for_each(|f| f.reverse());
+    b.append(&inner);
+    let no_time = Repairs {
+        overlap_budget: std::time::Duration::ZERO,
+        ..Default::default()
+    };
+    let a =
+        analyze_with(&b.build(), Method::Volume, MassSpec::Density(1.0), &no_time).expect("volume");
+    assert_rel(a.properties.mass, 26.0, 1e-15, "27 - 1, as wound");
+    assert!(!codes(&a).contains(&"flipped"), "{:?}", a.warnings);
+    assert!(a.shells.iter().all(|s| s.depth.is_none()));
+}
+
+#[test]
+fn an_inverted_mesh_keeps_the_signs_of_its_repairs_and_ignores_stray_faces() {
+    // The cube without its top, wound inward, plus one stray triangle far away: the whole mesh
+    // is inverted (the triangle encloses nothing), and the cap still adds a sixth.
+    let mut b = cuboid(1.0, [0.0; 3]);
+    b.faces.remove(1);
+    b.faces.iter_mut().for_each(|f| f.reverse());
+    let base = b.positions.len();
+    b.positions.extend([
+        Point3::new(5.0, 0.0, 0.0),
+        Point3::new(6.0, 0.0, 0.0),
+        Point3::new(5.0, 1.0, 0.0),
+    ]);
+    b.faces.push(vec![base, base + 1, base + 2]);
+    let a = volume(&b.build());
+    assert!(a.flipped);
+    assert_rel(a.properties.mass, 1.0, 1e-14, "the capped cube");
+    let holes = warning(&a, "holes_capped");
+    assert_rel(
+        holes.effect_on_mass.expect("known"),
+        -1.0 / 6.0,
+        1e-12,
+        "caps add a sixth",
+    );
+    let flipped = warning(&a, "flipped");
+    assert!(matches!(
+        flipped.defect,
+        Defect::Flipped { whole: true, .. }
+    ));
+    assert_eq!(flipped.effect_on_mass, Some(0.0));
+}

@@ -101,7 +101,7 @@ pub enum Command {
     /// shells), each at the body's current density.
     SplitIntoParts,
     /// Add a mesh file as a new part at the origin, of water's density (a single-mesh body
-    /// becomes its first part).
+    /// becomes its first part, whole).
     AddPart(PathBuf),
     /// Change one part's settings (material, void, thin wall, placement, name) and whether it
     /// is drawn; the motion goes on with p and L kept.
@@ -286,13 +286,13 @@ impl Lab {
             Command::Notify(message) => self.message = Some(message),
             Command::DismissMessage => self.message = None,
             Command::SplitIntoParts => {
-                let parts = self.current_parts()?;
+                let parts = self.current_parts(false)?;
                 let n = parts.len();
                 self.rebody(parts)?;
                 self.info(format!("{n} parts"));
             }
             Command::AddPart(path) => {
-                let mut parts = self.current_parts()?;
+                let mut parts = self.current_parts(true)?;
                 parts.extend(parts::from_mesh_file(&path)?);
                 self.rebody(parts)?;
                 self.info(format!("added {}", path.display()));
@@ -302,7 +302,7 @@ impl Lab {
                 entry,
                 visible,
             } => {
-                let mut parts = self.current_parts()?;
+                let mut parts = self.current_parts(true)?;
                 let part = parts
                     .get_mut(index)
                     .ok_or_else(|| format!("no part number {index}"))?;
@@ -311,15 +311,18 @@ impl Lab {
                 self.rebody(parts)?;
             }
             Command::RemovePart(index) => {
-                let mut parts = self.current_parts()?;
-                if index >= parts.len() || parts.len() == 1 {
+                let mut parts = self.current_parts(true)?;
+                if index >= parts.len() {
+                    return Err(format!("no part number {index}"));
+                }
+                if parts.len() == 1 {
                     return Err("a body keeps at least one part".to_owned());
                 }
                 parts.remove(index);
                 self.rebody(parts)?;
             }
             Command::SaveBody(path) => {
-                let parts = self.current_parts()?;
+                let parts = self.current_parts(true)?;
                 let written = parts::save(&parts, &path)?;
                 self.info(format!("saved {} ({written})", path.display()));
             }
@@ -327,9 +330,9 @@ impl Lab {
         Ok(())
     }
 
-    /// The body's parts: its own, or (for a single mesh) its file's parts at the current
-    /// density.
-    fn current_parts(&self) -> Result<Vec<parts::PartModel>, String> {
+    /// The body's parts: its own, or for a single mesh at the current density, the whole mesh
+    /// as one part (`whole`) or its file's parts.
+    fn current_parts(&self, whole: bool) -> Result<Vec<parts::PartModel>, String> {
         let body = self.primary().body();
         if let Some(c) = &body.composition {
             return Ok(c.parts.clone());
@@ -339,7 +342,7 @@ impl Lab {
             .properties(settings::InertiaSource::Exact)
             .mass
             / (body.analysis.properties.mass * self.settings.body.scale.powi(3));
-        parts::from_single(body, density)
+        parts::from_single(body, density, whole)
     }
 
     /// Every specimen goes on with the body `parts` make, p and L kept. Nothing changes if the
@@ -685,7 +688,7 @@ mod tests {
             "{:?}",
             lab.message()
         );
-        let parts = lab.current_parts().expect("parts");
+        let parts = lab.current_parts(true).expect("parts");
         assert_eq!(parts.len(), 2);
         for (index, material) in [(0, "steel"), (1, "wood")] {
             let mut entry = parts[index].entry.clone();
@@ -716,6 +719,62 @@ mod tests {
         );
         assert!(whole.center_of_mass.y > -0.5);
         std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_body_in_millimetres_saved_from_the_lab_reads_back_the_same() {
+        let dir = std::env::temp_dir().join(format!("inertia-lab-mm-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let cube = massprops::shapes::cuboid(Vector3::repeat(100.0), Point3::origin());
+        std::fs::write(
+            dir.join("cube.obj"),
+            massprops::shapes::to_obj("cube", "mm", &cube),
+        )
+        .expect("write");
+        let body_file = dir.join("in-mm.toml");
+        std::fs::write(
+            &body_file,
+            "units = \"mm\"\n[[part]]\nname = \"cube\"\nmesh = \"cube.obj\"\nmaterial = \"steel\"\ntranslation = [0, 200, 0]\n",
+        )
+        .expect("write");
+        let mut lab = lab();
+        let body =
+            LoadedBody::from_parts("in-mm", parts::from_body_file(&body_file).expect("reads"))
+                .expect("a body");
+        lab.install(body).expect("installs");
+        let mass = lab.primary().properties(InertiaSource::Exact).mass;
+        assert!((mass - 7.85).abs() < 1e-12, "{mass}");
+        let saved = dir.join("saved.toml");
+        lab.apply(Command::SaveBody(saved.clone()));
+        let again = LoadedBody::from_parts("saved", parts::from_body_file(&saved).expect("reads"))
+            .expect("a body");
+        let whole = &again.composition.as_ref().expect("parts").whole;
+        assert!((whole.mass - 7.85).abs() < 1e-12, "{}", whole.mass);
+        assert!((whole.center_of_mass.y - 0.2).abs() < 1e-12);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_hollow_mesh_splits_into_a_solid_and_a_void() {
+        // A 3 m box with an inward 1 m box inside, as one mesh with no objects.
+        let mut b = massprops::shapes::cuboid(Vector3::repeat(3.0), Point3::origin());
+        let mut cavity = massprops::shapes::cuboid(Vector3::repeat(1.0), Point3::origin());
+        cavity.faces.iter_mut().for_each(|f| f.reverse());
+        b.append(&cavity);
+        let text = massprops::shapes::to_obj("hollow", "", &b).replace("o hollow\n", "");
+        let file = massprops::parse_mesh(text.as_bytes(), std::path::Path::new("hollow.obj"))
+            .expect("parses");
+        let body = LoadedBody::new("hollow", PathBuf::from("hollow.obj"), file).expect("body");
+        let mut lab = lab();
+        lab.install(body).expect("installs");
+        let whole = lab.primary().properties(InertiaSource::Exact).mass;
+        assert!((whole - 26_000.0).abs() < 1e-9, "{whole}");
+        lab.apply(Command::SplitIntoParts);
+        let c = lab.primary().body().composition.as_ref().expect("parts");
+        let voids: Vec<bool> = c.parts.iter().map(|p| p.entry.void).collect();
+        assert_eq!(voids, [false, true]);
+        let split = lab.primary().properties(InertiaSource::Exact).mass;
+        assert!((split - whole).abs() <= 1e-9 * whole, "{split} vs {whole}");
     }
 
     #[test]

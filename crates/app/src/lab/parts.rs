@@ -124,7 +124,11 @@ pub fn from_body_file(path: &Path) -> Result<Vec<PartModel>, String> {
             entry.translation = entry.translation.map(|c| c * unit);
             entry.thin_wall = entry.thin_wall.map(|t| t * unit);
             entry.mesh = folder.join(&entry.mesh);
-            PartModel::new(entry, part.mesh)
+            let mut model = PartModel::new(entry, part.mesh)?;
+            // Its file is not in metres: a body file written from the lab (in metres) must
+            // carry the part's mesh in metres too.
+            model.piece = unit != 1.0;
+            Ok(model)
         })
         .collect()
 }
@@ -195,24 +199,46 @@ pub fn from_mesh_file(path: &Path) -> Result<Vec<PartModel>, String> {
     )?])
 }
 
-/// A single-mesh body's parts: its file's named parts, or its connected shells, each of
-/// `density`.
-pub fn from_single(body: &LoadedBody, density: f64) -> Result<Vec<PartModel>, String> {
+/// A single-mesh body's parts, each of `density`: its file's named parts, or its connected
+/// shells (a shell wound inward in a mesh that is not inverted as a whole is a cavity: a void);
+/// or, when `whole`, the whole mesh as one part.
+pub fn from_single(body: &LoadedBody, density: f64, whole: bool) -> Result<Vec<PartModel>, String> {
     let Some((path, file)) = &body.file else {
         return Err(format!("{} is already made of parts", body.name));
     };
+    let solid = |name: &str, object: Option<&str>, mesh: PolyMesh| {
+        let mut entry = entry_for(name, path, object);
+        entry.material = MaterialEntry::Density(density);
+        PartModel::new(entry, mesh)
+    };
+    if whole {
+        return Ok(vec![solid(&body.name, None, file.mesh.clone())?]);
+    }
     let named = !file.face_parts.is_empty();
-    file.parts()
-        .into_iter()
-        .map(|(name, faces)| {
-            let mesh = file.mesh.subset(&faces).map_err(|e| e.to_string())?;
-            let mut entry = entry_for(&name, path, named.then_some(name.as_str()));
-            entry.material = MaterialEntry::Density(density);
-            let mut part = PartModel::new(entry, mesh)?;
-            part.piece = !named;
-            Ok(part)
-        })
-        .collect()
+    let pieces = file.parts();
+    let mut parts = Vec::with_capacity(pieces.len());
+    for (name, faces) in &pieces {
+        let mesh = file.mesh.subset(faces).map_err(|e| e.to_string())?;
+        let mut part = solid(name, named.then_some(name.as_str()), mesh)?;
+        part.piece = !named;
+        parts.push(part);
+    }
+    if !named {
+        // Signed volumes as wound: the solid integrals of a lone inward shell come out turned.
+        let signed: Vec<f64> = parts
+            .iter()
+            .map(|p| {
+                massprops::solid_properties(&p.mesh, massprops::IntegrationPath::Auto)
+                    .map_or(0.0, |s| if s.flipped { -s.volume } else { s.volume })
+            })
+            .collect();
+        if signed.iter().sum::<f64>() > 0.0 {
+            for (part, v) in parts.iter_mut().zip(signed) {
+                part.entry.void = v < 0.0;
+            }
+        }
+    }
+    Ok(parts)
 }
 
 /// Writes `parts` as a body file at `path`; a part whose mesh file is not on disk (a sample's, a
@@ -222,13 +248,23 @@ pub fn save(parts: &[PartModel], path: &Path) -> Result<String, String> {
     let stem = path
         .file_stem()
         .map_or_else(|| "body".to_owned(), |s| s.to_string_lossy().into_owned());
-    let mut written = Vec::new();
+    let mut written: Vec<String> = Vec::new();
     let mut saved = parts.to_vec();
+    let referenced: Vec<PathBuf> = parts.iter().map(|p| p.entry.mesh.clone()).collect();
     for part in &mut saved {
         if part.entry.mesh.is_file() && !part.piece {
             continue;
         }
-        let file_name = format!("{stem}-{}.obj", slug(&part.entry.name));
+        // A name of its own: two parts may slug alike ("Part.1", "Part_1"), and a file another
+        // part reads must not be overwritten.
+        let base = format!("{stem}-{}", slug(&part.entry.name));
+        let file_name = (1..)
+            .map(|k| match k {
+                1 => format!("{base}.obj"),
+                k => format!("{base}-{k}.obj"),
+            })
+            .find(|n| !written.contains(n) && !referenced.contains(&folder.join(n)))
+            .unwrap_or_default();
         let target = folder.join(&file_name);
         std::fs::write(&target, obj_text(&part.entry.name, &part.mesh))
             .map_err(|e| format!("cannot write {}: {e}", target.display()))?;

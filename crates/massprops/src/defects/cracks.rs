@@ -91,11 +91,11 @@ pub(super) fn close(
             continue;
         }
         changed.push(f as u32);
-        effect -= face_volume(mesh, f, reference);
+        // The file as written minus the welded mesh, as for every repair.
+        effect += face_volume(mesh, f, reference);
         if face.len() >= 3 {
             builder.push(&face, f as u32);
-            let moved = face_of(&face, positions, reference);
-            effect += moved;
+            effect -= face_of(&face, positions, reference);
         }
     }
     let faces = input_faces(work.origin.as_deref(), changed.iter().copied());

@@ -193,18 +193,36 @@ fn orient(
     solids: &[bool],
     relations: &overlap::Relations,
 ) -> Result<(), MeshError> {
+    // Where the nesting is not known (the comparison ran out of time), a shell is turned only
+    // with the whole mesh: when all the solids together enclose a negative volume.
+    let total: f64 = (0..parts.len())
+        .filter(|&s| solids[s])
+        .map(|s| volumes[s])
+        .sum();
     let mut flip = vec![false; parts.len()];
     for s in 0..parts.len() {
         if solids[s] {
-            let root = relations.root(s);
-            flip[s] = volumes[root] < 0.0;
+            flip[s] = match relations.root(s) {
+                Some(root) => volumes[root] < 0.0,
+                None => total < 0.0,
+            };
         }
     }
     let sign = |s: usize| if flip[s] { -1.0 } else { 1.0 };
     let flipped: Vec<usize> = (0..parts.len()).filter(|&s| flip[s]).collect();
     let counted = solids.iter().filter(|&&s| s).count();
     if !flipped.is_empty() {
-        work.flipped_whole = flipped.len() == counted && counted == parts.len();
+        // Sheets and stray faces beside an inverted solid do not make it less inverted.
+        work.flipped_whole = flipped.len() == counted;
+        if work.flipped_whole {
+            // The repairs so far measured their effects on the mesh as wound: inward, so with
+            // the opposite sign to the outward mesh the result is.
+            for w in &mut work.warnings {
+                if let Some(e) = &mut w.effect_on_mass {
+                    *e = -*e;
+                }
+            }
+        }
         let turned: f64 = flipped.iter().map(|&s| volumes[s]).sum();
         let faces = flipped.iter().flat_map(|&s| parts[s].faces.iter().copied());
         work.warnings.push(Warning {

@@ -61,12 +61,20 @@ impl Relations {
         self.containers[s].as_ref().map(Vec::len)
     }
 
-    /// The outermost shell holding `s` (itself when none does or it is not known).
-    pub fn root(&self, s: usize) -> usize {
-        self.containers[s]
-            .as_ref()
-            .and_then(|c| c.iter().copied().find(|&o| self.depth(o) == Some(0)))
-            .unwrap_or(s)
+    /// The outermost shell holding `s` (itself when none does); `None` when that is not known
+    /// (a comparison of `s` or of a shell holding it was cut short).
+    pub fn root(&self, s: usize) -> Option<usize> {
+        let containers = self.containers[s].as_ref()?;
+        if containers.iter().any(|&o| self.depth(o).is_none()) {
+            return None;
+        }
+        Some(
+            containers
+                .iter()
+                .copied()
+                .find(|&o| self.depth(o) == Some(0))
+                .unwrap_or(s),
+        )
     }
 
     /// The `overlapping_shells` warning, when shells overlap or the budget cut the comparison

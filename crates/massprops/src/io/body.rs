@@ -116,8 +116,9 @@ impl PartEntry {
         let rotation = self
             .rotation
             .map_or_else(UnitQuaternion::identity, |(axis, degrees)| {
+                let axis = Vector3::from(axis);
                 UnitQuaternion::from_axis_angle(
-                    &Unit::new_normalize(Vector3::from(axis)),
+                    &Unit::new_normalize(axis / axis.amax()),
                     degrees.to_radians(),
                 )
             });
@@ -241,8 +242,9 @@ impl BodyFile {
                 Some(r) => {
                     let raw = r.get_ref();
                     let axis = Vector3::from(raw.axis);
-                    let valid = axis.norm() > 0.0
-                        && axis.iter().all(|c| c.is_finite())
+                    // Measured by its largest component: the norm of [1e200, 0, 0] overflows.
+                    let valid = axis.iter().all(|c| c.is_finite())
+                        && axis.amax() > 0.0
                         && raw.degrees.is_finite();
                     if !valid {
                         return Err(here(

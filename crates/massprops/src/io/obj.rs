@@ -211,8 +211,22 @@ fn element_lines(text: &str) -> Records {
     };
     let (mut object, mut group) = (0u32, 0u32);
     for (i, line) in text.as_bytes().split(|&b| b == b'\n').enumerate() {
-        let line = line.trim_ascii_start();
-        let keyword_ends = line.get(1).is_none_or(u8::is_ascii_whitespace);
+        // tobj splits on Unicode whitespace (vertical tab, no-break space…): so does this, on the
+        // rare line that starts with some other than ASCII spaces and tabs.
+        let line = match line.first() {
+            Some(&b) if b >= 0x80 || b == 0x0B || b == 0x0C => {
+                std::str::from_utf8(line).map_or(line, |l| l.trim_start().as_bytes())
+            }
+            _ => line.trim_ascii_start(),
+        };
+        let keyword_ends = match line.get(1) {
+            None => true,
+            Some(&b) if b < 0x80 => (b as char).is_whitespace(),
+            Some(_) => std::str::from_utf8(&line[1..])
+                .ok()
+                .and_then(|rest| rest.chars().next())
+                .is_some_and(char::is_whitespace),
+        };
         if !keyword_ends {
             continue;
         }

@@ -39,8 +39,15 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
                 &mut corners,
                 &malformed,
             )?;
-            part_names.push(name);
-            face_parts.resize(corners.len() / 3, (part_names.len() - 1) as u32);
+            // Blocks of the same name are one part (as OBJ objects are).
+            let part = match part_names.iter().position(|n| *n == name) {
+                Some(k) => k,
+                None => {
+                    part_names.push(name);
+                    part_names.len() - 1
+                }
+            };
+            face_parts.resize(corners.len() / 3, part as u32);
         }
     } else {
         let patched = patch_binary_header(bytes);
