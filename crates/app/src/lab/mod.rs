@@ -308,6 +308,9 @@ impl Lab {
                     .ok_or_else(|| format!("no part number {index}"))?;
                 part.entry = *entry;
                 part.visible = visible;
+                if !parts.iter().any(|p| p.visible) {
+                    return Err("the last part shown stays shown".to_owned());
+                }
                 self.rebody(parts)?;
             }
             Command::RemovePart(index) => {

@@ -68,7 +68,10 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
             });
             if let Some(k) = state.selected_part {
                 ui.separator();
-                editor(ui, k, &c.parts[k], commands);
+                // The last part shown stays shown: a body must have something to click.
+                let shown = c.parts.iter().filter(|p| p.visible).count();
+                let can_hide = shown > 1 || !c.parts[k].visible;
+                editor(ui, k, &c.parts[k], can_hide, commands);
             } else {
                 ui.small("Click a part to edit it.");
             }
@@ -124,12 +127,14 @@ fn editor(
     ui: &mut egui::Ui,
     index: usize,
     part: &crate::lab::parts::PartModel,
+    can_hide: bool,
     commands: &mut Vec<Command>,
 ) {
     let mut entry: PartEntry = part.entry.clone();
     let mut visible = part.visible;
     ui.label(RichText::new(format!("Part “{}”", entry.name)).strong());
-    ui.checkbox(&mut visible, "Visible");
+    ui.add_enabled(can_hide, egui::Checkbox::new(&mut visible, "Visible"))
+        .on_disabled_hover_text("the only part shown");
     let choice = match &entry.material {
         MaterialEntry::Preset(name) => MATERIALS
             .iter()
