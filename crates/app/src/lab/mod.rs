@@ -758,6 +758,40 @@ mod tests {
     }
 
     #[test]
+    fn a_hidden_part_is_not_picked() {
+        let mut lab = lab();
+        lab.apply(Command::LoadSample("Hollow box & solid box".to_owned()));
+        let placement = lab.primary().placement();
+        // Along +x through the hollow box's centre (mesh origin): its wall is at x = −0.15, its
+        // cavity's at −0.13.
+        let ray = picking::Ray {
+            origin: placement.to_world(&Point3::new(-1.0, 0.0, 0.0)),
+            dir: placement.to_world(&Point3::origin())
+                - placement.to_world(&Point3::new(-1.0, 0.0, 0.0)),
+        };
+        let hit_x = |lab: &Lab| {
+            let hit = lab.primary().pick(&ray).expect("hits");
+            lab.primary().placement().to_mesh(&hit.point).x
+        };
+        assert!((hit_x(&lab) + 0.15).abs() < 1e-9);
+        let outer = lab
+            .primary()
+            .body()
+            .composition
+            .as_ref()
+            .expect("parts")
+            .parts[0]
+            .entry
+            .clone();
+        lab.apply(Command::EditPart {
+            index: 0,
+            entry: Box::new(outer),
+            visible: false,
+        });
+        assert!((hit_x(&lab) + 0.13).abs() < 1e-9, "{}", hit_x(&lab));
+    }
+
+    #[test]
     fn a_hollow_mesh_splits_into_a_solid_and_a_void() {
         // A 3 m box with an inward 1 m box inside, as one mesh with no objects.
         let mut b = massprops::shapes::cuboid(Vector3::repeat(3.0), Point3::origin());

@@ -131,6 +131,16 @@ impl Bvh {
 
     /// The nearest triangle the ray hits (front or back face), if any.
     pub fn pick(&self, mesh: &TriMesh, ray: &Ray) -> Option<Hit> {
+        self.pick_where(mesh, ray, &|_| true)
+    }
+
+    /// [`Bvh::pick`] among the triangles `keep` accepts (the parts shown).
+    pub fn pick_where(
+        &self,
+        mesh: &TriMesh,
+        ray: &Ray,
+        keep: &dyn Fn(usize) -> bool,
+    ) -> Option<Hit> {
         if self.nodes.is_empty() || self.order.is_empty() {
             return None;
         }
@@ -146,6 +156,9 @@ impl Bvh {
             if node.count > 0 {
                 let range = node.start as usize..(node.start + node.count) as usize;
                 for &i in &self.order[range] {
+                    if !keep(i as usize) {
+                        continue;
+                    }
                     let [a, b, c] = mesh.triangles[i as usize].map(|v| mesh.positions[v as usize]);
                     if let Some(t) = moller_trumbore(ray, &a, &b, &c)
                         && t < best.map_or(limit, |h| h.t)

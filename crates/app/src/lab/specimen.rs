@@ -483,7 +483,19 @@ impl Specimen {
             origin: placement.to_mesh(&ray.origin),
             dir: placement.vector_to_mesh(&ray.dir),
         };
-        let hit = self.body.bvh.pick(&self.body.mesh, &local)?;
+        // A hidden part is not there to be poked.
+        let hidden = |t: usize| {
+            self.body.composition.as_ref().is_some_and(|c| {
+                c.triangles
+                    .iter()
+                    .position(|r| r.contains(&t))
+                    .is_some_and(|k| !c.parts[k].visible)
+            })
+        };
+        let hit = self
+            .body
+            .bvh
+            .pick_where(&self.body.mesh, &local, &|t| !hidden(t))?;
         Some(Hit {
             point: placement.to_world(&hit.point),
             ..hit
