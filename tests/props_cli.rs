@@ -364,7 +364,10 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
 
 #[test]
 fn committed_assets_match_their_generator() {
-    for (name, comment, mesh) in massprops::shapes::samples() {
+    let shapes = massprops::shapes::samples()
+        .into_iter()
+        .chain(massprops::shapes::part_samples());
+    for (name, comment, mesh) in shapes {
         let committed = std::fs::read_to_string(root().join(format!("assets/{name}.obj")))
             .expect("asset present");
         assert_eq!(

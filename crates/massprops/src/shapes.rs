@@ -300,6 +300,16 @@ pub fn samples() -> Vec<(&'static str, &'static str, MeshBuilder)> {
     ]
 }
 
+/// Meshes of parts for the body files of `assets/` (not bodies by themselves): (file stem,
+/// description, mesh).
+pub fn part_samples() -> Vec<(&'static str, &'static str, MeshBuilder)> {
+    vec![(
+        "hollow_box",
+        "a 0.3 m box and its 0.26 m cavity, for hollow_box.toml; metres",
+        hollow_box_parts(),
+    )]
+}
+
 /// Writes a mesh as OBJ text (shortest round-trip decimal coordinates): one `o` object called
 /// `name`, or one per named part.
 pub fn to_obj(name: &str, comment: &str, mesh: &MeshBuilder) -> String {
