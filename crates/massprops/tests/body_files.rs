@@ -91,6 +91,7 @@ fn a_hammer_in_millimetres_matches_its_closed_form_and_reads_back() {
     // The centre of mass lies in the steel head's half.
     assert!(c.properties.center_of_mass.y > 0.15);
 
+    assert!(body.to_toml().starts_with("version = 1\n"));
     let again = BodyFile::parse(&body.to_toml(), &path).expect("round trip");
     assert_eq!(again.parts.len(), 2);
     for (a, b) in again.parts.iter().zip(&body.parts) {
@@ -130,7 +131,7 @@ fn error(dir: &Path, text: &str) -> String {
 fn every_mistake_names_the_file_the_line_and_the_key() {
     let dir = folder("errors");
     let part = "[[part]]\nname = \"head\"\nmesh = \"head.obj\"\n";
-    let cases: [(String, &[&str]); 9] = [
+    let cases: [(String, &[&str]); 10] = [
         (
             format!("{part}densty = 3\n"),
             &["bad.toml, line 4", "unknown field `densty`"],
@@ -164,6 +165,10 @@ fn every_mistake_names_the_file_the_line_and_the_key() {
             &["line 4", "density", "-5 is not a positive number"],
         ),
         (format!("{part}\n"), &["part \"head\"", "density: missing"]),
+        (
+            format!("version = 2\n{part}density = 1\n"),
+            &["line 1", "version", "version 1, not 2"],
+        ),
     ];
     for (text, wanted) in &cases {
         let e = error(&dir, text);

@@ -2,6 +2,7 @@
 //! file), optionally one of its objects, its material and where it sits:
 //!
 //! ```toml
+//! version = 1                                   # optional: the format's version
 //! units = "mm"                                  # lengths here and in the meshes: m, cm, mm, in, ft
 //! [[part]]
 //! name = "head"
@@ -23,6 +24,10 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::{Fill, MeshError, Part, load_mesh, material, material_names};
+
+/// The body-file format this program reads and writes (the optional `version` key; a file
+/// without one is read as this version). Bumped on any incompatible change.
+pub const BODY_FILE_VERSION: i64 = 1;
 
 /// Length units a body file may use, with their size in metres.
 pub const LENGTH_UNITS: [(&str, f64); 5] = [
@@ -81,6 +86,7 @@ pub enum MaterialEntry {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawBody {
+    version: Option<Spanned<i64>>,
     units: Option<Spanned<String>>,
     #[serde(default)]
     part: Vec<Spanned<RawPart>>,
@@ -150,6 +156,17 @@ impl BodyFile {
                 e.message().trim_end().replace('\n', " "),
             )
         })?;
+        if let Some(v) = &raw.version
+            && *v.get_ref() != BODY_FILE_VERSION
+        {
+            return Err(error(
+                Some(v.span().start),
+                format!(
+                    "version: this program reads body files of version {BODY_FILE_VERSION}, not {}",
+                    v.get_ref()
+                ),
+            ));
+        }
         let units = match &raw.units {
             None => "m".to_owned(),
             Some(u) => {
@@ -387,7 +404,10 @@ impl BodyFile {
 
     /// The body file's text (what [`BodyFile::parse`] reads back to the same parts).
     pub fn to_toml(&self) -> String {
-        let mut s = format!("units = \"{}\"\n", self.units);
+        let mut s = format!(
+            "version = {BODY_FILE_VERSION}\nunits = \"{}\"\n",
+            self.units
+        );
         for p in &self.parts {
             s.push_str("\n[[part]]\n");
             s.push_str(&format!("name = {}\n", quoted(&p.name)));
