@@ -56,8 +56,8 @@ pub use error::MeshError;
 pub use integrals::{IntegrationPath, VolumeIntegrals, volume_integrals};
 #[cfg(feature = "io")]
 pub use io::{
-    BODY_FILE_VERSION, BodyFile, LENGTH_UNITS, MaterialEntry, MeshFile, PartEntry, load_mesh,
-    parse_mesh, parse_obj, parse_stl,
+    BODY_FILE_VERSION, BodyFile, LENGTH_UNITS, MaterialEntry, MeshFile, PartEntry, is_body_file,
+    load_mesh, parse_mesh, parse_obj, parse_stl,
 };
 pub use materials::{MATERIALS, Material, material, material_names};
 pub use mesh::{PolyMesh, weld_exact};

@@ -6,7 +6,7 @@ use clap::Args;
 use massprops::{Fill, MassProperties, MassSpec, Material, Method};
 
 use super::error::{CliError, positive};
-use super::parts::{PartArgs, body_parts, is_body_file, mesh_parts};
+use super::parts::{PartArgs, body_parts, mesh_parts};
 use super::repair::RepairArgs;
 use crate::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, UpAxis, density_per_cubic_unit, export,
@@ -74,8 +74,8 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
     };
     let file = args.file.display();
     let repairs = args.repair.repairs(1.0)?;
-    if is_body_file(&args.file) || args.parts.any() {
-        let (parts, units) = if is_body_file(&args.file) {
+    if massprops::is_body_file(&args.file) || args.parts.any() {
+        let (parts, units) = if massprops::is_body_file(&args.file) {
             let given = args.density.is_some() || args.mass.is_some() || args.material.is_some();
             if given || args.units.is_some() || args.parts.any() {
                 return Err(CliError::Usage(

@@ -33,13 +33,6 @@ impl PartArgs {
     }
 }
 
-/// Whether `path` is a body file (by its `.toml` extension).
-pub fn is_body_file(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
-}
-
 /// The parts of a body file, in metres.
 pub fn body_parts(path: &Path) -> Result<(BodyFile, Vec<Part>), CliError> {
     let input = |e: massprops::MeshError| CliError::Input(e.to_string());

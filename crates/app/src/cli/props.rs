@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use massprops::{Fill, MassSpec, Method, Repairs};
 
 use super::error::{CliError, positive};
-use super::parts::{PartArgs, body_parts, is_body_file, mesh_parts};
+use super::parts::{PartArgs, body_parts, mesh_parts};
 use super::repair::RepairArgs;
 use super::report;
 
@@ -80,7 +80,7 @@ pub fn run(args: &PropsArgs) -> Result<(), CliError> {
         (None, None) => MassSpec::Density(1.0),
     };
     let repairs = args.repair.repairs(args.scale)?;
-    if is_body_file(&args.file) || args.parts.any() || args.by_part {
+    if massprops::is_body_file(&args.file) || args.parts.any() || args.by_part {
         return run_composite(args, spec, &repairs);
     }
     let start = Instant::now();
@@ -129,7 +129,7 @@ pub fn run(args: &PropsArgs) -> Result<(), CliError> {
 /// `props` of a body made of parts: a body file, or a mesh file's parts.
 fn run_composite(args: &PropsArgs, spec: MassSpec, repairs: &Repairs) -> Result<(), CliError> {
     let file = args.file.display().to_string();
-    let (units, parts) = if is_body_file(&args.file) {
+    let (units, parts) = if massprops::is_body_file(&args.file) {
         if args.density.is_some() || args.mass.is_some() || args.scale != 1.0 || args.parts.any() {
             return Err(CliError::Usage(
                 "a body file gives each part's material, units and placement: --density, \

@@ -61,6 +61,11 @@ fn approximation_json(approx: &MassProperties, exact: &MassProperties) -> Value 
 
 /// The `props --json` object; `lines[f]` is face f's line in the file (empty when it has none).
 pub fn json(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> Value {
+    with_inertia(single_json(file, scale, a, lines), &a.properties)
+}
+
+/// `props --json` without the keys of [`inertia_json`].
+fn single_json(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> Value {
     let p = &a.properties;
     let d = &a.diagnostics;
     let (lo, hi) = d.bounding_box;
@@ -83,14 +88,7 @@ pub fn json(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> Value {
         "scale": scale,
         "density": a.density,
         "volume": a.volume,
-        "mass": p.mass,
         "surface_area": d.surface_area,
-        "center_of_mass": point(&p.center_of_mass),
-        "inertia_com": rows(&p.inertia_com),
-        "inertia_origin": rows(&p.inertia_origin()),
-        "principal_moments": vector(&p.principal.moments),
-        "principal_axes": rows(&axes_rows(p)),
-        "principal_degeneracy": degeneracy_name(p.principal.degeneracy),
         "bounding_box": { "min": point(&lo), "max": point(&hi) },
         "inertia_bbox": rows(&a.bounding_box.inertia_com),
         "inertia_points": rows(&a.point_masses.inertia_com),
@@ -284,6 +282,28 @@ fn face_pairs_text(examples: &[(usize, usize)], lines: &[u32]) -> String {
         .join(", ")
 }
 
+/// The mass, centre of mass, tensors and principal moments and axes: the keys a single mesh and
+/// a body of parts share.
+fn inertia_json(p: &MassProperties) -> Value {
+    json!({
+        "mass": p.mass,
+        "center_of_mass": point(&p.center_of_mass),
+        "inertia_com": rows(&p.inertia_com),
+        "inertia_origin": rows(&p.inertia_origin()),
+        "principal_moments": vector(&p.principal.moments),
+        "principal_axes": rows(&axes_rows(p)),
+        "principal_degeneracy": degeneracy_name(p.principal.degeneracy),
+    })
+}
+
+/// `object` with the keys of [`inertia_json`] added.
+fn with_inertia(mut object: Value, p: &MassProperties) -> Value {
+    if let (Some(object), Value::Object(keys)) = (object.as_object_mut(), inertia_json(p)) {
+        object.extend(keys);
+    }
+    object
+}
+
 /// A warning in JSON: `{code, message, count, faces, effect_on_mass}`, `face_lines` where the
 /// file has lines, and the defect's own data.
 fn warning_json(w: &Warning, lines: &[u32]) -> Value {
@@ -368,7 +388,11 @@ fn shells_json(a: &Analysis) -> Value {
 /// The `props --json` object of a body made of parts (`kind: "composite"`): the whole, with the
 /// same keys as a single mesh's where they apply, and `parts`.
 pub fn composite_json(file: &str, units: &str, c: &Composite) -> Value {
-    let p = &c.properties;
+    with_inertia(parts_json(file, units, c), &c.properties)
+}
+
+/// The composite's object without the keys of [`inertia_json`].
+fn parts_json(file: &str, units: &str, c: &Composite) -> Value {
     json!({
         "schema_version": SCHEMA_VERSION,
         "file": file,
@@ -380,13 +404,6 @@ pub fn composite_json(file: &str, units: &str, c: &Composite) -> Value {
             "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
             "share": "each part's share of each principal moment of the whole, about its centre of mass; a void's is negative",
         },
-        "mass": p.mass,
-        "center_of_mass": point(&p.center_of_mass),
-        "inertia_com": rows(&p.inertia_com),
-        "inertia_origin": rows(&p.inertia_origin()),
-        "principal_moments": vector(&p.principal.moments),
-        "principal_axes": rows(&axes_rows(p)),
-        "principal_degeneracy": degeneracy_name(p.principal.degeneracy),
         "parts": c.parts.iter().map(|q| json!({
             "name": q.name,
             "density": q.density,

@@ -103,7 +103,7 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
         let density = positive("--density", args.density.unwrap_or(1.0))?;
         let input = |e: massprops::MeshError| CliError::Input(format!("{}: {e}", path.display()));
         // The body `props` reports for the same file: its defects handled the same way.
-        let mut props = if super::parts::is_body_file(path) {
+        let mut props = if massprops::is_body_file(path) {
             if args.density.is_some() {
                 return Err(CliError::Usage(
                     "a body file gives each part's material: --density does not apply".to_owned(),

@@ -185,7 +185,7 @@ impl LabApp {
         // single mesh, a body file) replaces the body.
         let parts = self.lab.primary().body().composition.is_some();
         commands.extend(dropped.into_iter().take(1).map(|path| {
-            if parts && !crate::lab::loader::is_body_file(&path) {
+            if parts && !massprops::is_body_file(&path) {
                 Command::AddPart(path)
             } else {
                 Command::LoadFile(path)

@@ -366,7 +366,7 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
         bytes.extend_from_slice(&chunk[..n]);
         progress("reading", bytes.len() as f32 / total as f32);
     }
-    if is_body_file(path) {
+    if massprops::is_body_file(path) {
         progress("parts", 0.0);
         let parts = from_body_file(path)?;
         return LoadedBody::from_parts(&name, parts);
@@ -376,13 +376,6 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
     drop(bytes);
     progress("mass properties and picking index", 0.0);
     LoadedBody::new(&name, path.to_path_buf(), file).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// Whether `path` names a body file (`.toml`).
-pub fn is_body_file(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
 }
 
 #[cfg(test)]

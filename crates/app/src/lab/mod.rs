@@ -340,12 +340,7 @@ impl Lab {
         if let Some(c) = &body.composition {
             return Ok(c.parts.clone());
         }
-        let density = self
-            .primary()
-            .properties(settings::InertiaSource::Exact)
-            .mass
-            / (body.analysis.properties.mass * self.settings.body.scale.powi(3));
-        parts::from_single(body, density, whole)
+        parts::from_single(body, self.primary().density(), whole)
     }
 
     /// Every specimen goes on with the body `parts` make, p and L kept. Nothing changes if the

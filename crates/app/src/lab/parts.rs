@@ -26,6 +26,8 @@ pub struct PartModel {
     pub mesh: PolyMesh,
     /// Its solid at density 1 in its own coordinates; `None` when it encloses no volume.
     solid: Option<MassProperties>,
+    /// Its faces wind inward (the solid above is that of the outward-wound surface).
+    wound_inward: bool,
     /// Its surface at surface density 1 (for a thin wall).
     surface: MassProperties,
     /// What its mesh has wrong (faces count within the part).
@@ -52,6 +54,7 @@ impl PartModel {
             visible: true,
             piece: false,
             mesh,
+            wound_inward: solid.as_ref().is_some_and(|a| a.flipped),
             solid: solid.map(|a| a.properties),
             surface: surface.properties,
             warnings,
@@ -224,12 +227,12 @@ pub fn from_single(body: &LoadedBody, density: f64, whole: bool) -> Result<Vec<P
         parts.push(part);
     }
     if !named {
-        // Signed volumes as wound: the solid integrals of a lone inward shell come out turned.
+        // Volumes as wound: a lone inward shell's solid comes out turned.
         let signed: Vec<f64> = parts
             .iter()
             .map(|p| {
-                massprops::solid_properties(&p.mesh, massprops::IntegrationPath::Auto)
-                    .map_or(0.0, |s| if s.flipped { -s.volume } else { s.volume })
+                let volume = p.solid.as_ref().map_or(0.0, |s| s.mass);
+                if p.wound_inward { -volume } else { volume }
             })
             .collect();
         if signed.iter().sum::<f64>() > 0.0 {

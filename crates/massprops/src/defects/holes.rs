@@ -11,7 +11,6 @@ use nalgebra::{Point3, Vector3};
 use super::shells::Part;
 use super::{Builder, CAP, Cleaned, fan_volume, input_faces};
 use crate::analysis::{Defect, Warning};
-use crate::integrals::mirtich::newell_normal;
 use crate::{Holes, MeshError};
 
 /// Caps every boundary loop (or refuses, per `holes`).
@@ -72,8 +71,8 @@ pub(super) fn cap(
             let triangle = [to, from, c];
             let at = |i: u32| positions[i as usize] - reference;
             cap_volume += fan_volume(&triangle, 0, at);
-            let points: Vec<Vector3<f64>> = triangle.iter().map(|&i| at(i)).collect();
-            cap_area += 0.5 * newell_normal(&points).norm();
+            let (a, b, c) = (at(triangle[0]), at(triangle[1]), at(triangle[2]));
+            cap_area += 0.5 * (b - a).cross(&(c - a)).norm();
             builder.push(&triangle, CAP);
             parts[shell].faces.push(next_face);
             next_face += 1;

@@ -227,10 +227,11 @@ fn bounds(mesh: &PolyMesh, faces: &[u32]) -> (Point3<f64>, Point3<f64>) {
 /// The faces as fan triangles.
 fn triangles(mesh: &PolyMesh, faces: &[u32], (lo, hi): (Point3<f64>, Point3<f64>)) -> Solid {
     let mut triangles = Vec::new();
+    let at = |i: u32| mesh.positions()[i as usize];
     for &f in faces {
-        let p: Vec<Point3<f64>> = mesh.face_points(f as usize).collect();
-        for w in p[1..].windows(2) {
-            triangles.push([p[0], w[0], w[1]]);
+        let face = mesh.face(f as usize);
+        for w in face[1..].windows(2) {
+            triangles.push([at(face[0]), at(w[0]), at(w[1])]);
         }
     }
     Solid { triangles, lo, hi }

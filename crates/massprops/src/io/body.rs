@@ -115,6 +115,13 @@ struct RawRotation {
     degrees: f64,
 }
 
+/// Whether `path` names a body file (by its `.toml` extension, any case).
+pub fn is_body_file(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+}
+
 impl PartEntry {
     /// Mesh coordinates → body coordinates in metres for a file in `unit` metres: the rotation
     /// (about the mesh origin), then the translation.

@@ -8,7 +8,7 @@ mod stl;
 
 use std::path::Path;
 
-pub use body::{BODY_FILE_VERSION, BodyFile, LENGTH_UNITS, MaterialEntry, PartEntry};
+pub use body::{BODY_FILE_VERSION, BodyFile, LENGTH_UNITS, MaterialEntry, PartEntry, is_body_file};
 pub use obj::parse_obj;
 pub use stl::parse_stl;
 
