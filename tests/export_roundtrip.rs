@@ -767,14 +767,14 @@ const MUJOCO: Consumer = Consumer {
     test: "mujoco_compiles_the_mjcf_to_the_same_body",
     script: "mujoco_inertial.py",
     module: "mujoco",
-    install: "python3 -m pip install mujoco==4.0.0",
+    install: "python3 -m venv .venv && .venv/bin/pip install mujoco==4.0.0, then put .venv/bin first on PATH",
 };
 
 const YOURDFPY: Consumer = Consumer {
     test: "yourdfpy_reads_the_urdf_as_the_same_body",
     script: "urdf_inertial.py",
     module: "yourdfpy",
-    install: "python3 -m pip install yourdfpy==0.0.60",
+    install: "python3 -m venv .venv && .venv/bin/pip install yourdfpy==0.0.60, then put .venv/bin first on PATH",
 };
 
 impl Consumer {
@@ -794,7 +794,7 @@ impl Consumer {
                 skip(
                     self.test,
                     "python3 is not installed",
-                    "apt-get install python3 python3-pip",
+                    "apt-get install python3 python3-venv",
                 );
                 false
             }
