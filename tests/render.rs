@@ -16,9 +16,9 @@ use std::sync::Arc;
 use nalgebra::{Matrix4, Point3};
 use three_d::{DepthTexture2D, Interpolation, Texture2D, Wrapping};
 
+use inertia_lab::gui::view3d::camera::OrbitCamera;
 use inertia_lab::gui::view3d::convert::{self, FrameParams};
 use inertia_lab::gui::view3d::scene::{BACKGROUND, Scene};
-use inertia_lab::lab::camera::OrbitCamera;
 use inertia_lab::lab::geometry::TriMesh;
 use three_d::{Context, RenderTarget, Viewport};
 

@@ -6,7 +6,11 @@ use std::time::Duration;
 
 use std::path::Path;
 
-use massprops::{BodyFile, Holes, MassSpec, MeshFile, Method, Repairs, Weld};
+use massprops::{BodyFile, MassSpec, MeshFile, Method, Repairs};
+
+use massprops::defects::Holes;
+
+use massprops::defects::Weld;
 
 pub fn analyze_every_way(file: &MeshFile) {
     let quick = Repairs {

@@ -1,10 +1,12 @@
 //! Inertia Lab: exact mass properties of any mesh, and how they shape its rotation.
 //!
-//! The library behind the `inertia-lab` binary, in four parts that depend in one direction:
+//! The library behind the `inertia-lab` binary, in parts that depend in one direction:
 //! - [`export`]: mass properties written for engines and robot formats (pure functions);
 //! - [`timeseries`]: the one time-series schema (CSV columns) of `simulate` and the app's plots;
+//! - [`input`]: the one input path, a file and the mass and repair flags → a body;
+//! - [`wording`]: how faces, lines and lists are written, for every front end's words;
 //! - [`cli`]: the `props`, `simulate` and `export` commands and their reports;
-//! - [`lab`]: the app's headless model (specimens, commands, loader, picking, camera maths);
+//! - [`lab`]: the app's headless model (specimens, commands, loader, bodies of parts, picking);
 //! - `gui` (feature `gui`, default on): the desktop app drawing the lab with eframe and three-d.
 //!
 //! `ARCHITECTURE.md` gives the allowed dependencies of each folder.
@@ -13,5 +15,7 @@ pub mod cli;
 pub mod export;
 #[cfg(feature = "gui")]
 pub mod gui;
+pub mod input;
 pub mod lab;
 pub mod timeseries;
+pub mod wording;

@@ -12,7 +12,9 @@ use criterion::measurement::WallTime;
 use criterion::{
     BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
 };
-use massprops::{IntegrationPath, PolyMesh, shapes, volume_integrals};
+use massprops::integrals::IntegrationPath;
+use massprops::integrals::volume_integrals;
+use massprops::{PolyMesh, shapes};
 
 /// A closed triangulated torus of 4·t² triangles.
 fn torus_mesh(triangles: usize) -> PolyMesh {

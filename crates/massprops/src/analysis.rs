@@ -229,9 +229,39 @@ pub fn analyze_with(
         MassSpec::Density(d) => positive("density", d)?,
         MassSpec::Mass(m) => positive("mass", m)?,
     };
-    check_range(mesh, method, spec)?;
+    check_range(mesh_size(mesh), method, spec)?;
     let table = EdgeTable::new(mesh);
     let diagnostics = diagnose_with(mesh, &table);
+    analyze_diagnosed(mesh, method, spec, repairs, diagnostics, table)
+}
+
+/// [`analyze_with`] for several methods at one `spec` (whose range is the caller's to check),
+/// the mesh diagnosed once.
+pub(crate) fn analyze_methods<const N: usize>(
+    mesh: &PolyMesh,
+    methods: [Method; N],
+    spec: MassSpec,
+    repairs: &Repairs,
+) -> [Result<Analysis, MeshError>; N] {
+    let table = EdgeTable::new(mesh);
+    let diagnostics = diagnose_with(mesh, &table);
+    let mut table = Some(table);
+    methods.map(|method| {
+        // Each repair pass consumes an edge table; the first takes the one diagnosed.
+        let table = table.take().unwrap_or_else(|| EdgeTable::new(mesh));
+        analyze_diagnosed(mesh, method, spec, repairs, diagnostics.clone(), table)
+    })
+}
+
+/// [`analyze_with`] after the checks, with the mesh's edge table and diagnostics.
+fn analyze_diagnosed(
+    mesh: &PolyMesh,
+    method: Method,
+    spec: MassSpec,
+    repairs: &Repairs,
+    diagnostics: MeshDiagnostics,
+    table: EdgeTable,
+) -> Result<Analysis, MeshError> {
     // With the mass given, the approximations use no volume (nor a density found from it):
     // they serve open meshes and sheets too, and their numbers never depend on holes.
     let uses_volume = !matches!(
@@ -322,12 +352,16 @@ const SIZE_RANGE: (f64, f64) = (1e-50, 1e50);
 /// f64 range that a thin body (volume ≪ size³) or a sum of many terms stays in it.
 const RESULT_RANGE: (f64, f64) = (1e-250, 1e250);
 
+/// The longest side of `mesh`'s bounding box: the size [`check_range`] judges.
+pub(crate) fn mesh_size(mesh: &PolyMesh) -> f64 {
+    let (lo, hi) = mesh.bounding_box();
+    (hi - lo).amax()
+}
+
 /// Refuses a body whose numbers f64 cannot hold to full precision, from their orders of
 /// magnitude: size L (longest side), mass ~ ρL³ (ρL² for a shell) or as given, inertia ~ mL².
 /// Without this, overflow gives NaN and underflow gives zero moments, both silently.
-fn check_range(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<(), MeshError> {
-    let (lo, hi) = mesh.bounding_box();
-    let size = (hi - lo).amax();
+pub(crate) fn check_range(size: f64, method: Method, spec: MassSpec) -> Result<(), MeshError> {
     if size == 0.0 {
         // A point: the zero-volume and zero-area checks say what is wrong.
         return Ok(());

@@ -7,10 +7,11 @@
 
 use nalgebra::{Isometry3, Matrix3, Point3, Vector3};
 
+use crate::analysis::{analyze_methods, check_range, mesh_size};
+#[cfg(doc)]
+use crate::analyze_with;
 use crate::properties::{parallel_axis_term, positive};
-use crate::{
-    MassProperties, MassSpec, MeshError, Method, PolyMesh, Repairs, Warning, analyze_with,
-};
+use crate::{Analysis, MassProperties, MassSpec, MeshError, Method, PolyMesh, Repairs, Warning};
 
 /// How a part gets its mass.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,6 +39,42 @@ pub enum Fill {
         /// Wall thickness, in the mesh's units.
         thickness: f64,
     },
+}
+
+/// How a part's mass is given, as a body file (and the app) writes it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MaterialEntry {
+    /// `density = ρ` (kg/m³ with metres).
+    Density(f64),
+    /// `material = "steel"`: a preset of [`MATERIALS`](crate::materials::MATERIALS).
+    Preset(String),
+    /// `mass = m` (kg).
+    Mass(f64),
+}
+
+impl MaterialEntry {
+    /// Its density: given, or its preset's; `None` for a mass (the volume decides) or an unknown
+    /// preset.
+    pub fn density(&self) -> Option<f64> {
+        match self {
+            MaterialEntry::Density(d) => Some(*d),
+            MaterialEntry::Preset(name) => crate::material(name).map(|m| m.density),
+            MaterialEntry::Mass(_) => None,
+        }
+    }
+
+    /// The one rule that turns a material into a fill: a mass is a solid of that mass; otherwise
+    /// the density fills a void, a thin wall of `thin_wall` (in the mesh's units) or a solid. A
+    /// density that is missing is NaN, which [`IntegratedPart::properties`] refuses by name.
+    pub fn fill(&self, void: bool, thin_wall: Option<f64>) -> Fill {
+        let density = self.density().unwrap_or(f64::NAN);
+        match (self, void, thin_wall) {
+            (MaterialEntry::Mass(mass), ..) => Fill::Mass { mass: *mass },
+            (_, true, _) => Fill::Void { density },
+            (_, false, Some(thickness)) => Fill::ThinWall { density, thickness },
+            (_, false, None) => Fill::Solid { density },
+        }
+    }
 }
 
 /// One part of a body.
@@ -85,31 +122,80 @@ pub struct Composite {
     pub parts: Vec<PartProperties>,
 }
 
-/// The mass properties of a body made of `parts`, each part's mesh handled as `repairs` says.
+/// The mass properties of a body made of `parts`, each part's mesh handled as `repairs` says:
+/// each part integrated once ([`IntegratedPart`]), then the sums of [`combine`].
 ///
 /// Errors: no parts; a part that cannot be integrated (named); a fill that is not a positive
 /// number; voids that remove as much as there is or more, or leave an inertia tensor that no
 /// body has (named with the total found).
+///
+/// ```
+/// use massprops::{Fill, Part, Repairs, composite, shapes};
+/// use nalgebra::{Isometry3, Point3, Vector3};
+/// let cube = |x: f64, density: f64| Part {
+///     name: format!("cube at {x}"),
+///     mesh: shapes::cuboid(Vector3::repeat(1.0), Point3::origin()).build(),
+///     fill: Fill::Solid { density },
+///     placement: Isometry3::translation(x, 0.0, 0.0),
+/// };
+/// let body = composite(&[cube(0.0, 1.0), cube(3.0, 2.0)], &Repairs::default()).unwrap();
+/// assert!((body.properties.mass - 3.0).abs() < 1e-12);
+/// assert!((body.properties.center_of_mass.x - 2.0).abs() < 1e-12); // (0·1 + 3·2) / 3
+/// ```
 pub fn composite(parts: &[Part], repairs: &Repairs) -> Result<Composite, MeshError> {
+    let integrated: Vec<IntegratedPart> = parts
+        .iter()
+        .map(|p| IntegratedPart::new(&p.mesh, repairs))
+        .collect();
+    let placed: Vec<PlacedPart<'_>> = parts
+        .iter()
+        .zip(&integrated)
+        .map(|(p, integrated)| PlacedPart {
+            name: &p.name,
+            fill: p.fill,
+            placement: p.placement,
+            integrated,
+        })
+        .collect();
+    sum(&placed)
+}
+
+/// A part integrated already ([`IntegratedPart`]), with its name, fill and placement: what
+/// [`sum`] adds up.
+#[derive(Debug, Clone, Copy)]
+pub struct PlacedPart<'a> {
+    /// Its name, for messages and reports.
+    pub name: &'a str,
+    /// Where its mass comes from.
+    pub fill: Fill,
+    /// Mesh coordinates → body coordinates.
+    pub placement: Isometry3<f64>,
+    /// Its mesh's unit-density integrals.
+    pub integrated: &'a IntegratedPart,
+}
+
+/// The body that `parts` make together: each part's contribution from its integrals, then the
+/// sums of [`combine`] (the second half of [`composite`], for a caller that keeps the
+/// integrals).
+///
+/// Errors: as [`composite`].
+pub fn sum(parts: &[PlacedPart<'_>]) -> Result<Composite, MeshError> {
     if parts.is_empty() {
         return Err(MeshError::Empty);
     }
     let mut each: Vec<PartProperties> = Vec::with_capacity(parts.len());
     for part in parts {
         let named = |source: MeshError| MeshError::InPart {
-            part: part.name.clone(),
+            part: part.name.to_owned(),
             source: Box::new(source),
         };
-        each.push(one_part(part, repairs).map_err(named)?);
+        each.push(
+            part.integrated
+                .properties(part.name, part.fill, &part.placement)
+                .map_err(named)?,
+        );
     }
-    let masses: Vec<PartMass> = each
-        .iter()
-        .map(|p| PartMass {
-            mass: p.mass,
-            center_of_mass: p.center_of_mass,
-            inertia_com: p.inertia_com,
-        })
-        .collect();
+    let masses: Vec<PartMass> = each.iter().map(PartProperties::part_mass).collect();
     let (properties, shares) = combine(&masses)?;
     for (p, share) in each.iter_mut().zip(shares) {
         p.share = share;
@@ -182,35 +268,141 @@ pub fn combine(parts: &[PartMass]) -> Result<(MassProperties, Vec<Vector3<f64>>)
     Ok((properties, shares))
 }
 
-/// One part's signed contribution, in body coordinates.
-fn one_part(part: &Part, repairs: &Repairs) -> Result<PartProperties, MeshError> {
-    let (method, spec, sign) = match part.fill {
-        Fill::Solid { density } => (Method::Volume, MassSpec::Density(density), 1.0),
-        Fill::Mass { mass } => (Method::Volume, MassSpec::Mass(mass), 1.0),
-        Fill::Void { density } => (Method::Volume, MassSpec::Density(density), -1.0),
-        Fill::ThinWall { density, thickness } => {
-            positive("thickness", thickness)?;
-            let sigma = positive("density", density)? * thickness;
-            (Method::Shell, MassSpec::Density(sigma), 1.0)
+/// A part's mesh integrated once, at unit density, as a solid and as a surface (each with its
+/// defects handled and its warnings): from it, [`IntegratedPart::properties`] gives the part's
+/// mass properties for any [`Fill`] and placement by scaling and moving, without integrating
+/// again. The result is bit for bit what [`analyze_with`] gives for that fill's method and
+/// density.
+#[derive(Debug, Clone)]
+pub struct IntegratedPart {
+    /// The solid at density 1 (volume method), or why it has none.
+    solid: Result<Analysis, MeshError>,
+    /// The surface at surface density 1 (shell method), or why it has none.
+    surface: Result<Analysis, MeshError>,
+    /// The longest side of the mesh's bounding box, for the range checks of a fill.
+    size: f64,
+}
+
+impl IntegratedPart {
+    /// Integrates `mesh` as a solid and as a surface (one diagnostics pass for both).
+    pub fn new(mesh: &PolyMesh, repairs: &Repairs) -> Self {
+        let unit = MassSpec::Density(1.0);
+        let [solid, surface] =
+            analyze_methods(mesh, [Method::Volume, Method::Shell], unit, repairs);
+        Self {
+            solid,
+            surface,
+            size: mesh_size(mesh),
         }
-    };
-    let a = analyze_with(&part.mesh, method, spec, repairs)?;
-    let placed = a.properties.transformed(&part.placement);
-    let (density, volume) = match part.fill {
-        Fill::ThinWall { density, .. } => (density, placed.mass / density),
-        _ => {
-            let density = a.density.unwrap_or(f64::NAN);
-            (density, a.volume.unwrap_or(placed.mass / density))
+    }
+
+    /// The volume the solid encloses, if it encloses one.
+    pub fn volume(&self) -> Option<f64> {
+        self.solid.as_ref().ok().and_then(|a| a.volume)
+    }
+
+    /// Whether the faces wind inward (the solid is that of the outward-wound surface).
+    pub fn wound_inward(&self) -> bool {
+        self.solid.as_ref().is_ok_and(|a| a.flipped)
+    }
+
+    /// What the mesh has wrong for `fill`'s method (faces count within the part's mesh): the
+    /// surface's warnings for a thin wall, the solid's otherwise (the surface's when there is no
+    /// solid).
+    pub fn warnings(&self, fill: Fill) -> &[Warning] {
+        let used = match (fill, &self.solid) {
+            (Fill::ThinWall { .. }, _) | (_, Err(_)) => &self.surface,
+            (_, solid) => solid,
+        };
+        used.as_ref().map_or(&[], |a| a.warnings.as_slice())
+    }
+
+    /// The part's signed contribution with `fill`, placed by `placement` (mesh → body
+    /// coordinates), named `name`; its `share` is left zero (the whole's sums give it).
+    ///
+    /// Errors: as [`analyze_with`] for the fill's method and mass: a fill that is not a positive
+    /// number, a mass out of range, a mesh that encloses no volume (for a solid, a mass or a
+    /// void) or has no area.
+    pub fn properties(
+        &self,
+        name: &str,
+        fill: Fill,
+        placement: &Isometry3<f64>,
+    ) -> Result<PartProperties, MeshError> {
+        let analysed = |method: Method, spec: MassSpec| -> Result<&Analysis, MeshError> {
+            match spec {
+                MassSpec::Density(d) => positive("density", d)?,
+                MassSpec::Mass(m) => positive("mass", m)?,
+            };
+            check_range(self.size, method, spec)?;
+            let a = match method {
+                Method::Shell => &self.surface,
+                _ => &self.solid,
+            };
+            a.as_ref().map_err(Clone::clone)
+        };
+        let (unit, sign, density, scaled) = match fill {
+            Fill::Solid { density } | Fill::Void { density } => {
+                let a = analysed(Method::Volume, MassSpec::Density(density))?;
+                let sign = if matches!(fill, Fill::Void { .. }) {
+                    -1.0
+                } else {
+                    1.0
+                };
+                (a, sign, density, with_density(&a.properties, density)?)
+            }
+            Fill::Mass { mass } => {
+                let a = analysed(Method::Volume, MassSpec::Mass(mass))?;
+                let volume = a.volume.unwrap_or(a.properties.mass);
+                let density = mass / volume;
+                // Kept exactly, as `analyze_with` does: ρ·V with ρ = m/V would round it.
+                let scaled = with_density(&a.properties, density)?.with_mass(mass)?;
+                (a, 1.0, density, scaled)
+            }
+            Fill::ThinWall { density, thickness } => {
+                positive("thickness", thickness)?;
+                let sigma = positive("density", density)? * thickness;
+                let a = analysed(Method::Shell, MassSpec::Density(sigma))?;
+                // The unit surface's mass is its area.
+                let scaled = a.properties.with_mass(sigma * a.properties.mass)?;
+                (a, 1.0, density, scaled)
+            }
+        };
+        let placed = scaled.transformed(placement);
+        let volume = match fill {
+            Fill::ThinWall { .. } => placed.mass / density,
+            _ => unit.volume.unwrap_or(placed.mass / density),
+        };
+        Ok(PartProperties {
+            name: name.to_owned(),
+            density,
+            mass: sign * placed.mass,
+            volume,
+            center_of_mass: placed.center_of_mass,
+            inertia_com: placed.inertia_com * sign,
+            share: Vector3::zeros(),
+            warnings: unit.warnings.clone(),
+        })
+    }
+}
+
+impl PartProperties {
+    /// Its signed mass, centre and tensor: what [`combine`] sums.
+    pub fn part_mass(&self) -> PartMass {
+        PartMass {
+            mass: self.mass,
+            center_of_mass: self.center_of_mass,
+            inertia_com: self.inertia_com,
         }
-    };
-    Ok(PartProperties {
-        name: part.name.clone(),
-        density,
-        mass: sign * placed.mass,
-        volume,
-        center_of_mass: placed.center_of_mass,
-        inertia_com: placed.inertia_com * sign,
-        share: Vector3::zeros(),
-        warnings: a.warnings,
-    })
+    }
+}
+
+/// A unit-density solid's mass properties at `density` (as [`crate::solid::Solid::with_density`]).
+fn with_density(unit: &MassProperties, density: f64) -> Result<MassProperties, MeshError> {
+    let density = positive("density", density)?;
+    Ok(MassProperties::new(
+        unit.mass * density,
+        unit.center_of_mass,
+        unit.inertia_com * density,
+    ))
 }

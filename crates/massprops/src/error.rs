@@ -5,7 +5,7 @@ use std::path::PathBuf;
 /// Why a mesh, a file or a parameter cannot give mass properties.
 ///
 /// Variants name the problem and where it is (file, line, face, vertex) so a user can fix it.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug, Clone, thiserror::Error)]
 pub enum MeshError {
     /// The mesh has no faces (or no vertices).
     #[error("the mesh is empty: it has no faces")]
@@ -86,7 +86,7 @@ pub enum MeshError {
         /// What would bring it into range.
         advice: &'static str,
     },
-    /// The mesh has holes and capping them was refused ([`Holes::Refuse`](crate::Holes)).
+    /// The mesh has holes and capping them was refused ([`Holes::Refuse`](crate::defects::Holes)).
     #[error(
         "the mesh is open: {boundary_edges} edge(s) used by only one face, in {loops} hole(s){}; \
          the volume it encloses is not defined (cap the holes, or use the shell method for sheets)",
@@ -134,8 +134,8 @@ pub enum MeshError {
     Io {
         /// The file.
         path: PathBuf,
-        /// What the operating system said.
-        source: std::io::Error,
+        /// What the operating system said (shared, so that an error can be kept and cloned).
+        source: std::sync::Arc<std::io::Error>,
     },
     /// The file extension is not one we can load.
     #[error("{}: unsupported file type (expected .obj or .stl)", path.display())]

@@ -11,10 +11,10 @@
 //!
 //! Cargo features, both on by default: `io` (OBJ and STL parsing and file loading, through
 //! `tobj` and `stl_io`) and `parallel` (the triangle path and the diagnostics on the rayon pool).
-//! Without `parallel`, [`IntegrationPath::TriangleParallel`] and [`IntegrationPath::Auto`] run
+//! Without `parallel`, [`integrals::IntegrationPath::TriangleParallel`] and [`integrals::IntegrationPath::Auto`] run
 //! the triangle path on the calling thread, with the same result bit for bit (the block order is
 //! fixed either way). With neither, only `nalgebra` and `thiserror` are built: what a dynamics
-//! crate needs for [`symmetric_eigen`].
+//! crate needs for [`principal::symmetric_eigen`].
 //!
 //! Conventions: lengths in the mesh's unit (metres for SI), density per volume (kg/m³); the
 //! inertia tensor is I = ∫ρ(|r|²E − r rᵀ)dV, **off-diagonals −∑m·x·y**; faces wind
@@ -30,48 +30,45 @@
 //! ```
 
 mod analysis;
-mod approximations;
-mod composite;
-mod defects;
-mod diagnostics;
+pub mod approximations;
+pub mod composite;
+pub mod defects;
+pub mod diagnostics;
 mod edges;
 mod error;
 pub mod integrals;
 #[cfg(feature = "io")]
-mod io;
-mod materials;
-mod mesh;
-mod principal;
-mod properties;
+pub mod io;
+pub mod materials;
+pub mod mesh;
+pub mod principal;
+pub mod properties;
 pub mod shapes;
-mod shell;
-mod solid;
+pub mod shell;
+pub mod solid;
+mod units;
 
+// The face of the crate: what a caller reaches for. The layers beneath (the integrals, the
+// eigensolver, the defect pass, the diagnostics, the approximations, the readers) are public
+// modules of their own.
 pub use analysis::{Analysis, Defect, MassSpec, Method, Warning, analyze, analyze_with};
-pub use approximations::{bounding_box_properties, point_mass_properties};
-pub use composite::{Composite, Fill, Part, PartMass, PartProperties, combine, composite};
-pub use defects::{AUTO_WELD_RATIO, Holes, Orientation, Repairs, Shell, Weld, shell_faces};
-pub use diagnostics::{MeshDiagnostics, diagnose};
+pub use composite::{
+    Composite, Fill, IntegratedPart, MaterialEntry, Part, PartProperties, composite,
+};
+pub use defects::Repairs;
 pub use error::MeshError;
-pub use integrals::{IntegrationPath, VolumeIntegrals, volume_integrals};
 #[cfg(feature = "io")]
-pub use io::{
-    BODY_FILE_VERSION, BodyFile, LENGTH_UNITS, MaterialEntry, MeshFile, PartEntry, is_body_file,
-    load_mesh, parse_mesh, parse_obj, parse_stl,
-};
-pub use materials::{MATERIALS, Material, material, material_names};
-pub use mesh::{PolyMesh, weld_exact};
-pub use principal::{
-    DEGENERACY_TOLERANCE, Degeneracy, PrincipalInertia, principal_inertia, symmetric_eigen,
-};
-pub use properties::{Comparison, MassProperties, parallel_axis_term};
-pub use shell::shell_properties;
-pub use solid::{Solid, solid_properties};
+pub use io::{BodyFile, MeshFile, PartEntry, load_mesh, parse_mesh};
+pub use materials::{Material, material};
+pub use mesh::PolyMesh;
+pub use principal::PrincipalInertia;
+pub use properties::MassProperties;
+pub use units::{LengthUnit, UnknownUnit};
 
 /// Mass properties of the solid bounded by `mesh` at uniform `density` (volume method).
 ///
 /// Errors: zero enclosed volume, or a density that is not finite and positive. An inward-wound
-/// mesh gives the same result as its outward-wound twin (see [`Solid::flipped`]).
+/// mesh gives the same result as its outward-wound twin (see [`solid::Solid::flipped`]).
 pub fn mass_properties(mesh: &PolyMesh, density: f64) -> Result<MassProperties, MeshError> {
-    solid_properties(mesh, IntegrationPath::Auto)?.with_density(density)
+    solid::solid_properties(mesh, integrals::IntegrationPath::Auto)?.with_density(density)
 }

@@ -10,7 +10,8 @@ use std::path::Path;
 use common::{
     assert_mat, assert_point, assert_rel, box_tensor, polygon_moments, prism_closed_form, steiner,
 };
-use massprops::{MassProperties, diagnose, load_mesh, mass_properties, shapes};
+use massprops::diagnostics::diagnose;
+use massprops::{MassProperties, load_mesh, mass_properties, shapes};
 use nalgebra::{Matrix3, Point2, Point3, Rotation3, Vector3};
 
 fn asset(name: &str) -> MassProperties {

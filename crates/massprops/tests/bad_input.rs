@@ -6,10 +6,12 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use common::{assert_mat, assert_rel, box_tensor};
+use massprops::diagnostics::diagnose;
 use massprops::shapes::{self, MeshBuilder};
+use massprops::shell::shell_properties;
+use massprops::solid::solid_properties;
 use massprops::{
-    Defect, MassSpec, MeshError, Method, PolyMesh, analyze, diagnose, load_mesh, mass_properties,
-    parse_mesh, shell_properties, solid_properties,
+    Defect, MassSpec, MeshError, Method, PolyMesh, analyze, load_mesh, mass_properties, parse_mesh,
 };
 use nalgebra::{Matrix3, Point3, Vector3};
 
@@ -100,7 +102,7 @@ fn open_mesh_counts_its_boundary_edges() {
     );
     // Refusing names the hole.
     let refuse = massprops::Repairs {
-        holes: massprops::Holes::Refuse,
+        holes: massprops::defects::Holes::Refuse,
         ..Default::default()
     };
     let e = massprops::analyze_with(&mesh, Method::Volume, MassSpec::Density(1.0), &refuse)
@@ -125,7 +127,7 @@ fn non_manifold_edge_between_two_boxes_touching_along_an_edge() {
         Vector3::repeat(1.0),
         Point3::new(1.5, 1.5, 0.5),
     ));
-    let (positions, remap) = massprops::weld_exact(&b.positions);
+    let (positions, remap) = massprops::mesh::weld_exact(&b.positions);
     let faces: Vec<Vec<usize>> = b
         .faces
         .iter()
@@ -186,7 +188,7 @@ fn inverted_mesh_is_flipped_and_warned_about() {
     let mesh = shapes::book().build().flipped();
     let d = diagnose(&mesh);
     assert!(d.is_closed() && d.is_consistently_oriented());
-    let s = solid_properties(&mesh, massprops::IntegrationPath::Auto).expect("volume");
+    let s = solid_properties(&mesh, massprops::integrals::IntegrationPath::Auto).expect("volume");
     assert!(s.flipped);
     assert_rel(s.volume, 28.0, 1e-15, "book volume");
     let a = analyze(&mesh, Method::Volume, MassSpec::Density(2.0)).expect("volume");
@@ -251,9 +253,12 @@ fn degenerate_and_non_planar_faces_are_reported() {
             })
             .collect();
         volumes.push(
-            massprops::solid_properties(&t.build(), massprops::IntegrationPath::Auto)
-                .expect("volume")
-                .volume,
+            massprops::solid::solid_properties(
+                &t.build(),
+                massprops::integrals::IntegrationPath::Auto,
+            )
+            .expect("volume")
+            .volume,
         );
     }
     let span = volumes.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
@@ -496,7 +501,7 @@ fn points_and_polylines_are_not_part_of_the_body() {
 fn a_flat_sheet_has_no_volume_but_a_shell() {
     let sheet = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
     let m = obj(sheet).expect("a valid mesh");
-    let e = solid_properties(&m, massprops::IntegrationPath::Auto).expect_err("flat");
+    let e = solid_properties(&m, massprops::integrals::IntegrationPath::Auto).expect_err("flat");
     assert!(matches!(e, MeshError::ZeroVolume { .. }), "{e:?}");
     assert!(e.to_string().contains("shell"), "{e}");
     assert!(matches!(

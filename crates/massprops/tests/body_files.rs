@@ -75,7 +75,7 @@ fn a_hammer_in_millimetres_matches_its_closed_form_and_reads_back() {
     let path = dir.join("hammer.toml");
     std::fs::write(&path, HAMMER).expect("write");
     let body = BodyFile::read(&path).expect("valid");
-    assert_eq!(body.units, "mm");
+    assert_eq!(body.units, massprops::LengthUnit::Mm);
     let c = composite(&body.load().expect("meshes"), &Repairs::default()).expect("two parts");
     let (mh, ms) = (7850.0 * 0.1 * 0.03 * 0.03, 600.0 * 0.03 * 0.3 * 0.03);
     let m = mh + ms;

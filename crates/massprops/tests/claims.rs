@@ -8,8 +8,10 @@ use std::f64::consts::PI;
 
 use common::{assert_mat, assert_point, assert_rel, box_tensor, tetra_sum};
 use massprops::integrals::IntegrationPath;
+use massprops::principal::Degeneracy;
 use massprops::shapes;
-use massprops::{Degeneracy, MassProperties, PolyMesh, mass_properties, solid_properties};
+use massprops::solid::solid_properties;
+use massprops::{MassProperties, PolyMesh, mass_properties};
 use nalgebra::{Matrix3, Point3, Rotation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 

@@ -8,7 +8,9 @@ use common::{
     tetrahedron,
 };
 use massprops::integrals::IntegrationPath;
-use massprops::{Degeneracy, PolyMesh, mass_properties, shapes, solid_properties};
+use massprops::principal::Degeneracy;
+use massprops::solid::solid_properties;
+use massprops::{PolyMesh, mass_properties, shapes};
 use nalgebra::{Isometry3, Matrix3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 
 /// Every path a closed mesh can be integrated by: Mirtich on the polygons, and Mirtich and the

@@ -5,10 +5,9 @@
 mod common;
 
 use common::{assert_mat, assert_rel, box_tensor};
+use massprops::defects::shell_faces;
 use massprops::shapes;
-use massprops::{
-    Fill, MassSpec, MeshError, Method, Part, Repairs, analyze, composite, shell_faces,
-};
+use massprops::{Fill, MassSpec, MeshError, Method, Part, Repairs, analyze, composite};
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
 
 fn cuboid(size: [f64; 3], center: [f64; 3]) -> massprops::PolyMesh {
@@ -237,7 +236,7 @@ fn a_bad_part_is_named() {
     let mut open = shapes::cube();
     open.faces.pop();
     let refuse = Repairs {
-        holes: massprops::Holes::Refuse,
+        holes: massprops::defects::Holes::Refuse,
         ..Repairs::default()
     };
     let e = composite(

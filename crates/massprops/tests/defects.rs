@@ -4,11 +4,11 @@
 mod common;
 
 use common::{assert_mat, assert_rel, box_tensor};
+use massprops::defects::Holes;
+use massprops::defects::Orientation;
+use massprops::defects::Weld;
 use massprops::shapes::{self, MeshBuilder};
-use massprops::{
-    Analysis, Defect, Holes, MassSpec, Method, Orientation, PolyMesh, Repairs, Weld, analyze,
-    analyze_with,
-};
+use massprops::{Analysis, Defect, MassSpec, Method, PolyMesh, Repairs, analyze, analyze_with};
 use nalgebra::{Point2, Point3, Vector3};
 
 fn cuboid(size: f64, center: [f64; 3]) -> MeshBuilder {
@@ -17,7 +17,7 @@ fn cuboid(size: f64, center: [f64; 3]) -> MeshBuilder {
 
 /// Builds with identical positions welded, as the file readers do.
 fn welded(b: &MeshBuilder) -> PolyMesh {
-    let (positions, remap) = massprops::weld_exact(&b.positions);
+    let (positions, remap) = massprops::mesh::weld_exact(&b.positions);
     let faces: Vec<Vec<usize>> = b
         .faces
         .iter()
@@ -245,7 +245,7 @@ fn float32_cracks_are_closed_not_called_holes() {
     }
     b.faces[1] = moved;
     let mesh = b.build();
-    assert_eq!(massprops::diagnose(&mesh).open_edges, 8);
+    assert_eq!(massprops::diagnostics::diagnose(&mesh).open_edges, 8);
     let a = volume(&mesh);
     assert_eq!(codes(&a), ["cracks_closed"]);
     let w = &a.warnings[0];

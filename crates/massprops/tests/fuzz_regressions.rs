@@ -4,7 +4,9 @@
 
 use std::path::Path;
 
-use massprops::{MassSpec, MeshError, Method, Repairs, Weld, parse_mesh};
+use massprops::{MassSpec, MeshError, Method, Repairs, parse_mesh};
+
+use massprops::defects::Weld;
 
 /// What the fuzz targets do with an input, shared with them.
 #[path = "../../../fuzz/fuzz_targets/common.rs"]

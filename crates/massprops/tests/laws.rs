@@ -6,7 +6,8 @@ mod common;
 use common::{assert_mat, assert_point, assert_rel};
 use massprops::integrals::IntegrationPath;
 use massprops::shapes::{self, MeshBuilder};
-use massprops::{MassProperties, PolyMesh, solid_properties};
+use massprops::solid::solid_properties;
+use massprops::{MassProperties, PolyMesh};
 use nalgebra::{Point2, Point3, Rotation3, UnitQuaternion, Vector3};
 use proptest::prelude::*;
 
@@ -105,7 +106,7 @@ proptest! {
         let predicted = a.transformed(&nalgebra::Isometry3::from_parts(Vector3::zeros().into(), q));
         assert_mat(&predicted.inertia_com, &b.inertia_com, 1e-12, "transformed()");
         // Distinct principal axes rotate with the body (up to sign).
-        if a.principal.degeneracy == massprops::Degeneracy::Distinct {
+        if a.principal.degeneracy == massprops::principal::Degeneracy::Distinct {
             let ra = a.principal.rotation.matrix();
             let rb = b.principal.rotation.matrix();
             for i in 0..3 {

@@ -4,12 +4,13 @@
 mod common;
 
 use common::{assert_mat, assert_rel, box_tensor, tetra_sum};
+use massprops::diagnostics::diagnose;
 use massprops::integrals::IntegrationPath;
+use massprops::principal::Degeneracy;
+use massprops::principal::principal_inertia;
 use massprops::shapes::{self, MeshBuilder};
-use massprops::{
-    Degeneracy, MassProperties, MassSpec, MeshError, Method, PolyMesh, analyze, diagnose,
-    mass_properties, principal_inertia, solid_properties,
-};
+use massprops::solid::solid_properties;
+use massprops::{MassProperties, MassSpec, MeshError, Method, PolyMesh, analyze, mass_properties};
 use nalgebra::{Isometry3, Matrix3, Point2, Point3, Translation3, UnitQuaternion, Vector3};
 
 fn props(mesh: &PolyMesh, path: IntegrationPath) -> MassProperties {
@@ -73,8 +74,8 @@ fn the_ten_integrals_of_a_far_body_are_those_of_the_near_one() {
     let far = mesh
         .map_positions(|p| p + Vector3::new(1e6, 1e6, -1e6))
         .expect("finite");
-    let a = massprops::volume_integrals(&mesh, IntegrationPath::Triangle);
-    let b = massprops::volume_integrals(&far, IntegrationPath::Triangle);
+    let a = massprops::integrals::volume_integrals(&mesh, IntegrationPath::Triangle);
+    let b = massprops::integrals::volume_integrals(&far, IntegrationPath::Triangle);
     for (x, y) in a.values.iter().zip(b.values) {
         assert!(
             (x - y).abs() <= 1e-13 * a.values[4].abs().max(a.values[0].abs()),

@@ -5,9 +5,12 @@
 mod common;
 
 use common::{assert_mat, assert_point, assert_rel, tetra_sum};
+use massprops::PolyMesh;
 use massprops::integrals::IntegrationPath;
+use massprops::integrals::volume_integrals;
 use massprops::shapes::{self, MeshBuilder};
-use massprops::{PolyMesh, Solid, solid_properties, volume_integrals};
+use massprops::solid::Solid;
+use massprops::solid::solid_properties;
 use nalgebra::{Point3, Vector3};
 
 const TOL: f64 = 1e-13;

@@ -6,7 +6,8 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use common::assert_rel;
-use massprops::{Defect, MassSpec, Method, Orientation, load_mesh};
+use massprops::defects::Orientation;
+use massprops::{Defect, MassSpec, Method, load_mesh};
 use nalgebra::{Point3, Vector3};
 
 fn real(name: &str) -> PathBuf {

@@ -288,7 +288,7 @@ fn principal_of_tensor(inertia: &Matrix3<f64>) -> Result<(Vector3<f64>, Matrix3<
     }
     // massprops' Jacobi solver: relative accuracy at any scale, where nalgebra's QR iteration
     // lost the 1e-12 round trip on nearly equal moments.
-    let (values, vectors) = massprops::symmetric_eigen(inertia);
+    let (values, vectors) = massprops::principal::symmetric_eigen(inertia);
     Ok(sorted_principal(values, vectors))
 }
 

@@ -37,3 +37,15 @@ pub fn positive(name: &str, v: f64) -> Result<f64, CliError> {
         )))
     }
 }
+
+impl From<crate::input::InputError> for CliError {
+    fn from(e: crate::input::InputError) -> Self {
+        use crate::input::InputError;
+        match e {
+            InputError::UnknownPart { .. } | InputError::MassOfParts => {
+                CliError::Usage(e.to_string())
+            }
+            InputError::Mesh { .. } | InputError::Read(_) => CliError::Input(e.to_string()),
+        }
+    }
+}

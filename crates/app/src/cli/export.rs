@@ -3,14 +3,15 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use massprops::{Fill, MassProperties, MassSpec, Material, Method};
+use massprops::{MassProperties, MassSpec, Material, Method};
 
 use super::error::{CliError, positive};
-use super::parts::{PartArgs, body_parts, mesh_parts};
+use super::parts::PartArgs;
 use super::repair::RepairArgs;
 use crate::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, UpAxis, density_per_cubic_unit, export,
 };
+use crate::input::{Request, Resolved, Source, resolve};
 
 /// The default density, water's (kg/m³).
 const WATER: f64 = 1000.0;
@@ -25,9 +26,9 @@ pub struct ExportArgs {
     /// Output format.
     #[arg(long, value_enum)]
     pub format: Format,
-    /// Length unit of the mesh's coordinates (OBJ and STL carry none). Default m; a body file
-    /// gives its own.
-    #[arg(long, value_enum)]
+    /// Length unit of the mesh's coordinates (OBJ and STL carry none): m, cm, mm, in or ft.
+    /// Default m; a body file gives its own.
+    #[arg(long, value_parser = parse_unit)]
     pub units: Option<LengthUnit>,
     /// Which mesh axis points up.
     #[arg(long, value_enum, default_value = "y")]
@@ -58,6 +59,12 @@ pub struct ExportArgs {
     pub parts: PartArgs,
 }
 
+fn parse_unit(symbol: &str) -> Result<LengthUnit, String> {
+    symbol
+        .parse()
+        .map_err(|e: massprops::UnknownUnit| e.to_string())
+}
+
 fn parse_material(name: &str) -> Result<Material, String> {
     super::parts::preset(name)
 }
@@ -72,58 +79,51 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
         (None, None, Some(material)) => MassSpec::Density(per_unit(material.density)),
         (None, None, None) => MassSpec::Density(per_unit(WATER)),
     };
-    let file = args.file.display();
-    let repairs = args.repair.repairs(1.0)?;
-    if massprops::is_body_file(&args.file) || args.parts.any() {
-        let (parts, units) = if massprops::is_body_file(&args.file) {
-            let given = args.density.is_some() || args.mass.is_some() || args.material.is_some();
-            if given || args.units.is_some() || args.parts.any() {
-                return Err(CliError::Usage(
-                    "a body file gives each part's material, its units and placements: \
-                     --density, --mass, --material, --units and the per-part options do not \
-                     apply"
-                        .to_owned(),
-                ));
-            }
-            (body_parts(&args.file)?.1, LengthUnit::M)
-        } else {
-            let MassSpec::Density(density) = spec else {
-                return Err(CliError::Usage(
-                    "with parts, give each part's mass with --mass-of NAME=M".to_owned(),
-                ));
-            };
-            let loaded =
-                massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
-            let default = Fill::Solid { density };
-            (mesh_parts(&loaded, &args.parts, default, &per_unit)?, units)
-        };
-        let body = massprops::composite(&parts, &repairs)
-            .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
-        for part in &body.parts {
-            for w in &part.warnings {
-                let text = super::report::warning_text(w, &[]);
-                eprintln!("warning: {file}: part {:?}: {text}", part.name);
-            }
+    if massprops::io::is_body_file(&args.file) {
+        let given = args.density.is_some() || args.mass.is_some() || args.material.is_some();
+        if given || args.units.is_some() || args.parts.any() {
+            return Err(CliError::Usage(
+                "a body file gives each part's material, its units and placements: --density, \
+                 --mass, --material, --units and the per-part options do not apply"
+                    .to_owned(),
+            ));
         }
-        return write(args, &body.properties, units);
     }
-    let loaded = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
-    let analysis = loaded
-        .analyze(Method::Volume, spec, &repairs)
-        .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
-    // Mass given: make it exact (density = m / V, then m = ρV, can miss by an ulp).
-    let properties = match spec {
-        MassSpec::Mass(m) => analysis
-            .properties
-            .with_mass(m)
-            .map_err(|e| CliError::Input(format!("{file}: {e}")))?,
-        MassSpec::Density(_) => analysis.properties,
+    let request = Request {
+        method: Method::Volume,
+        spec,
+        scale: 1.0,
+        repairs: args.repair.repairs(1.0)?,
+        parts: args.parts.materials()?,
+        by_part: false,
+        density_factor: density_per_cubic_unit(1.0, units),
     };
-    for w in &analysis.warnings {
-        eprintln!(
-            "warning: {file}: {}",
-            super::report::warning_text(w, &loaded.face_lines)
-        );
+    let resolved = resolve(Source::Path(&args.file), &request)?;
+    let file = args.file.display();
+    let (properties, units) = match &resolved {
+        Resolved::Mesh { analysis, .. } => {
+            // Mass given: make it exact (density = m / V, then m = ρV, can miss by an ulp).
+            let properties = match spec {
+                MassSpec::Mass(m) => analysis
+                    .properties
+                    .with_mass(m)
+                    .map_err(|e| CliError::Input(format!("{file}: {e}")))?,
+                MassSpec::Density(_) => analysis.properties.clone(),
+            };
+            (properties, units)
+        }
+        Resolved::Parts(parts) => {
+            // A body file's parts are in metres.
+            let units = if parts.body_file_units.is_some() {
+                LengthUnit::M
+            } else {
+                units
+            };
+            (parts.composite.properties.clone(), units)
+        }
+    };
+    for line in super::report::words::warning_lines(&file.to_string(), &resolved) {
+        eprintln!("{line}");
     }
     write(args, &properties, units)
 }

@@ -4,12 +4,13 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use clap::{Args, ValueEnum};
-use massprops::{Fill, MassSpec, Method, Repairs};
+use massprops::{MassSpec, Method};
 
 use super::error::{CliError, positive};
-use super::parts::{PartArgs, body_parts, mesh_parts};
+use super::parts::PartArgs;
 use super::repair::RepairArgs;
-use super::report;
+use super::report::{json, table};
+use crate::input::{Request, Resolved, Source, resolve};
 
 /// Mass-distribution method, as named on the command line.
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -79,91 +80,78 @@ pub fn run(args: &PropsArgs) -> Result<(), CliError> {
         (Some(d), None) => MassSpec::Density(positive("--density", d)?),
         (None, None) => MassSpec::Density(1.0),
     };
-    let repairs = args.repair.repairs(args.scale)?;
-    if massprops::is_body_file(&args.file) || args.parts.any() || args.by_part {
-        return run_composite(args, spec, &repairs);
+    let body_file = massprops::io::is_body_file(&args.file);
+    if body_file
+        && (args.density.is_some() || args.mass.is_some() || args.scale != 1.0 || args.parts.any())
+    {
+        return Err(CliError::Usage(
+            "a body file gives each part's material, units and placement: --density, --mass, \
+             --scale and the per-part options do not apply"
+                .to_owned(),
+        ));
     }
-    let start = Instant::now();
-    let mut loaded =
-        massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
-    let parsed = Instant::now();
-    if args.scale != 1.0 {
-        loaded.mesh = loaded
-            .mesh
-            .map_positions(|p| p * args.scale)
-            .map_err(|e| CliError::Input(format!("{}: {e}", args.file.display())))?;
-    }
-    let mesh = &loaded.mesh;
-    let scaled = Instant::now();
-    // Timed alone only on request: `analyze` integrates again below, with the diagnostics.
-    let integration = args.timings.then(|| {
-        let _ = massprops::solid_properties(mesh, massprops::IntegrationPath::Auto);
-        scaled.elapsed()
-    });
-    let analyzed = Instant::now();
-    let analysis = loaded
-        .analyze(args.method.into(), spec, &repairs)
-        .map_err(|e| CliError::Input(format!("{}: {e}", args.file.display())))?;
-    let computed = Instant::now();
+    let request = Request {
+        method: args.method.into(),
+        spec,
+        scale: args.scale,
+        repairs: args.repair.repairs(args.scale)?,
+        parts: args.parts.materials()?,
+        by_part: args.by_part,
+        density_factor: 1.0,
+    };
+    let resolved = resolve(Source::Path(&args.file), &request)?;
     let file = args.file.display().to_string();
-    let lines = &loaded.face_lines;
-    if args.json {
-        println!("{}", report::json(&file, args.scale, &analysis, lines));
-    } else {
-        print!("{}", report::table(&file, args.scale, &analysis, lines));
-    }
-    if let Some(integration) = integration {
-        let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
-        eprintln!(
-            "timings ({} triangles): read+parse+weld {:.1} ms, volume integration {:.1} ms, \
-             full analysis (integration, diagnostics, defects, approximations) {:.1} ms",
-            mesh.triangle_count(),
-            ms(parsed - start),
-            ms(integration),
-            ms(computed - analyzed),
-        );
+    match &resolved {
+        Resolved::Mesh {
+            file: read,
+            analysis,
+        } => {
+            let lines = &read.face_lines;
+            if args.json {
+                println!("{}", json::single(&file, args.scale, analysis, lines));
+            } else {
+                print!("{}", table::single(&file, args.scale, analysis, lines));
+            }
+            if args.timings {
+                timings(args, &request)?;
+            }
+        }
+        Resolved::Parts(parts) => {
+            let units = match parts.body_file_units {
+                Some(unit) => format!("metres, from a body file in {unit}"),
+                None => "the mesh's units times --scale".to_owned(),
+            };
+            if args.json {
+                println!("{}", json::composite(&file, &units, &parts.composite));
+            } else {
+                print!("{}", table::composite(&file, &units, &parts.composite));
+            }
+        }
     }
     Ok(())
 }
 
-/// `props` of a body made of parts: a body file, or a mesh file's parts.
-fn run_composite(args: &PropsArgs, spec: MassSpec, repairs: &Repairs) -> Result<(), CliError> {
-    let file = args.file.display().to_string();
-    let (units, parts) = if massprops::is_body_file(&args.file) {
-        if args.density.is_some() || args.mass.is_some() || args.scale != 1.0 || args.parts.any() {
-            return Err(CliError::Usage(
-                "a body file gives each part's material, units and placement: --density, \
-                 --mass, --scale and the per-part options do not apply"
-                    .to_owned(),
-            ));
-        }
-        let (body, parts) = body_parts(&args.file)?;
-        (format!("metres, from a body file in {}", body.units), parts)
-    } else {
-        let MassSpec::Density(density) = spec else {
-            return Err(CliError::Usage(
-                "with parts, give each part's mass with --mass-of NAME=M (--mass is the whole \
-                 body's)"
-                    .to_owned(),
-            ));
-        };
-        let mut loaded =
-            massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
-        if args.scale != 1.0 {
-            loaded.mesh = loaded
-                .mesh
-                .map_positions(|p| p * args.scale)
-                .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
-        }
-        let parts = mesh_parts(&loaded, &args.parts, Fill::Solid { density }, &|d| d)?;
-        ("the mesh's units times --scale".to_owned(), parts)
-    };
-    let body = massprops::composite(&parts, repairs)
-        .map_err(|e| CliError::Input(format!("{file}: {e}")))?;
-    if args.json {
-        println!("{}", report::composite_json(&file, &units, &body));
-    } else {
-        print!("{}", report::composite_table(&file, &units, &body));
-    }
+/// `--timings`: each stage of the report timed alone on stderr (read, parse and weld; the volume
+/// integration; the full analysis), run again so that the report itself is never slowed.
+fn timings(args: &PropsArgs, request: &Request) -> Result<(), CliError> {
+    let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+    let start = Instant::now();
+    let file = massprops::load_mesh(&args.file).map_err(|e| CliError::Input(e.to_string()))?;
+    let parsed = start.elapsed();
+    let mesh = &file.mesh;
+    let start = Instant::now();
+    let _ = massprops::solid::solid_properties(mesh, massprops::integrals::IntegrationPath::Auto);
+    let integration = start.elapsed();
+    let start = Instant::now();
+    let _ = file.analyze(request.method, request.spec, &request.repairs);
+    let analysis = start.elapsed();
+    eprintln!(
+        "timings ({} triangles): read+parse+weld {:.1} ms, volume integration {:.1} ms, \
+         full analysis (integration, diagnostics, defects, approximations) {:.1} ms",
+        mesh.triangle_count(),
+        ms(parsed),
+        ms(integration),
+        ms(analysis),
+    );
     Ok(())
 }

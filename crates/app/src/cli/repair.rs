@@ -1,8 +1,10 @@
-//! `--weld` and `--holes`: how `props` and `export` handle cracks and holes in a mesh (the
+//! `--weld` and `--holes`: how `props`, `export` and `simulate` handle cracks and holes in a mesh (the
 //! command line's face of `massprops::Repairs`).
 
 use clap::{Args, ValueEnum};
-use massprops::{Holes, Repairs, Weld};
+use massprops::Repairs;
+use massprops::defects::Holes;
+use massprops::defects::Weld;
 
 use super::error::CliError;
 
@@ -16,7 +18,7 @@ pub enum HolesArg {
     Refuse,
 }
 
-/// Mesh repair options shared by `props` and `export`.
+/// Mesh repair options shared by `props`, `export` and `simulate`.
 #[derive(Args, Debug)]
 pub struct RepairArgs {
     /// Which vertices on open edges are merged to close cracks: `exact` (identical coordinates

@@ -14,7 +14,11 @@ use rbcore::{
     Simulation,
 };
 
+use massprops::MassSpec;
+
 use super::error::{CliError, positive};
+use super::repair::RepairArgs;
+use crate::input::{Request, Resolved, Source, resolve};
 use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
 
 /// Arguments of `simulate`. Without `--mesh` or `--inertia` it runs the canonical
@@ -68,6 +72,9 @@ pub struct SimulateArgs {
     /// (4K(k)/λ) and the one measured, the flips, the drifts, and the axis the polhode circles.
     #[arg(long, conflicts_with_all = ["csv", "every", "compare"])]
     pub summary: bool,
+    /// How cracks and holes in the mesh are handled (with --mesh).
+    #[command(flatten)]
+    pub repair: RepairArgs,
 }
 
 /// Version of the JSON object of `simulate --summary`; bumped on any incompatible change.
@@ -101,36 +108,26 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
     }
     if let Some(path) = &args.mesh {
         let density = positive("--density", args.density.unwrap_or(1.0))?;
-        let input = |e: massprops::MeshError| CliError::Input(format!("{}: {e}", path.display()));
-        // The body `props` reports for the same file: its defects handled the same way.
-        let mut props = if massprops::is_body_file(path) {
-            if args.density.is_some() {
-                return Err(CliError::Usage(
-                    "a body file gives each part's material: --density does not apply".to_owned(),
-                ));
-            }
-            let parts = super::parts::body_parts(path)?.1;
-            massprops::composite(&parts, &massprops::Repairs::default())
-                .map_err(input)?
-                .properties
-        } else {
-            let file = massprops::load_mesh(path).map_err(input)?;
-            let analysis = file
-                .analyze(
-                    massprops::Method::Volume,
-                    massprops::MassSpec::Density(density),
-                    &massprops::Repairs::default(),
-                )
-                .map_err(input)?;
-            for w in &analysis.warnings {
-                eprintln!(
-                    "warning: {}: {}",
-                    path.display(),
-                    super::report::warning_text(w, &file.face_lines)
-                );
-            }
-            analysis.properties
+        if massprops::io::is_body_file(path) && args.density.is_some() {
+            return Err(CliError::Usage(
+                "a body file gives each part's material: --density does not apply".to_owned(),
+            ));
+        }
+        // The body `props` reports for the same file, through the same input path.
+        let request = Request {
+            spec: MassSpec::Density(density),
+            repairs: args.repair.repairs(1.0)?,
+            ..Request::default()
         };
+        let resolved = resolve(Source::Path(path), &request)?;
+        for line in super::report::words::warning_lines(&path.display().to_string(), &resolved) {
+            eprintln!("{line}");
+        }
+        let mut props = match resolved {
+            Resolved::Mesh { analysis, .. } => analysis.properties,
+            Resolved::Parts(parts) => parts.composite.properties,
+        };
+        let input = |e: massprops::MeshError| CliError::Input(format!("{}: {e}", path.display()));
         if let Some(m) = args.mass {
             props = props.with_mass(m).map_err(input)?;
         }

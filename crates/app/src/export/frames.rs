@@ -42,49 +42,10 @@
 //! M(1,1), M(2,2), M(3,3), M(1,2), M(1,3), M(2,3)"). No format here takes the positive
 //! product-of-inertia convention (∑m·x·y) some CAD tools print, so no sign flip is applied.
 
-use massprops::MassProperties;
+use massprops::{LengthUnit, MassProperties};
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 use super::ExportError;
-
-/// A length unit of the mesh or of a target.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum LengthUnit {
-    /// Metre.
-    M,
-    /// Centimetre.
-    Cm,
-    /// Millimetre.
-    Mm,
-    /// International inch, 25.4 mm.
-    In,
-    /// International foot, 304.8 mm.
-    Ft,
-}
-
-impl LengthUnit {
-    /// Metres per unit (exact by definition of each unit).
-    pub fn metres(self) -> f64 {
-        match self {
-            LengthUnit::M => 1.0,
-            LengthUnit::Cm => 0.01,
-            LengthUnit::Mm => 0.001,
-            LengthUnit::In => 0.0254,
-            LengthUnit::Ft => 0.3048,
-        }
-    }
-
-    /// The unit's symbol.
-    pub fn symbol(self) -> &'static str {
-        match self {
-            LengthUnit::M => "m",
-            LengthUnit::Cm => "cm",
-            LengthUnit::Mm => "mm",
-            LengthUnit::In => "in",
-            LengthUnit::Ft => "ft",
-        }
-    }
-}
 
 /// Which mesh axis points up.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

@@ -10,6 +10,7 @@ use std::time::Instant;
 use clap::Args;
 use egui::Key;
 
+mod bench;
 pub mod capture;
 pub mod dialogs;
 pub mod panels;
@@ -18,6 +19,7 @@ pub mod warnings;
 
 use crate::lab::settings::{AppSettings, InertiaSource};
 use crate::lab::{Command, Lab, Message, Variant};
+use bench::Bench;
 use dialogs::{Dialog, DialogPurpose};
 use panels::PanelState;
 use view3d::View3d;
@@ -85,21 +87,6 @@ pub enum RunError {
     Screenshot(String),
 }
 
-/// Frame-time measurement of `--bench-frames`.
-#[derive(Debug)]
-struct Bench {
-    frames: usize,
-    hide_plots: bool,
-    last: Option<Instant>,
-    times: Vec<f64>,
-    /// Milliseconds spent building the UI (CPU, excluding tessellation and painting) per frame.
-    ui_times: Vec<f64>,
-    /// eframe's measure of the previous frame's work (UI, tessellation, painting; not waiting).
-    cpu_times: Vec<f64>,
-    /// Frames skipped before measuring (window mapping, first uploads, shader compilation).
-    warmup: usize,
-}
-
 /// The app.
 pub struct LabApp {
     lab: Lab,
@@ -130,7 +117,7 @@ impl LabApp {
         settings: AppSettings,
         gl: Option<Arc<three_d::context::Context>>,
         ctx: &egui::Context,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, crate::lab::LabError> {
         let mut lab = Lab::new(settings)?;
         let repaint = ctx.clone();
         lab.set_waker(move || repaint.request_repaint());
@@ -185,7 +172,7 @@ impl LabApp {
         // single mesh, a body file) replaces the body.
         let parts = self.lab.primary().body().composition.is_some();
         commands.extend(dropped.into_iter().take(1).map(|path| {
-            if parts && !massprops::is_body_file(&path) {
+            if parts && !massprops::io::is_body_file(&path) {
                 Command::AddPart(path)
             } else {
                 Command::LoadFile(path)
@@ -227,7 +214,7 @@ impl LabApp {
             .show(ui, |ui| {
                 panels::side::show(ui, &self.lab, &mut draft, &mut self.panels, &mut commands);
             });
-        let hide_plots = self.bench.as_ref().is_some_and(|b| b.hide_plots);
+        let hide_plots = self.bench.as_ref().is_some_and(Bench::hides_plots);
         if !hide_plots {
             egui::Panel::bottom("plots")
                 .resizable(true)
@@ -375,93 +362,19 @@ impl LabApp {
             self.view.frame_body(&self.lab);
         }
     }
-
-    /// Counts a benchmark frame; prints the table and closes the window after the last one.
-    fn bench_frame(&mut self, ctx: &egui::Context) {
-        let Some(b) = &mut self.bench else { return };
-        if b.times.len() >= b.frames {
-            // Already reported; the window is closing.
-            return;
-        }
-        let now = Instant::now();
-        if let Some(last) = b.last {
-            if b.warmup > 0 {
-                b.warmup -= 1;
-            } else {
-                b.times.push((now - last).as_secs_f64() * 1e3);
-            }
-        }
-        b.last = Some(now);
-        if b.times.len() >= b.frames {
-            let mut t = b.times.clone();
-            t.sort_by(f64::total_cmp);
-            let pct = |p: f64| t[((p / 100.0) * (t.len() - 1) as f64).round() as usize];
-            let mean = t.iter().sum::<f64>() / t.len() as f64;
-            let mean_of = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64;
-            let (ui_mean, cpu_mean) = (mean_of(&b.ui_times), mean_of(&b.cpu_times));
-            println!(
-                "frames {} ({} triangles, {} samples of history, plots {}): mean {:.1} ms \
-                 ({:.1} fps), p50 {:.1} ms, p90 {:.1} ms, p99 {:.1} ms, max {:.1} ms; \
-                 building the UI {:.2} ms, whole frame's work {:.2} ms",
-                t.len(),
-                self.lab.primary().body().mesh.triangles.len(),
-                self.lab.primary().history().samples().len(),
-                if b.hide_plots { "hidden" } else { "shown" },
-                mean,
-                1e3 / mean,
-                pct(50.0),
-                pct(90.0),
-                pct(99.0),
-                pct(100.0),
-                ui_mean,
-                cpu_mean
-            );
-            self.bench_picking();
-            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-        }
-    }
-
-    /// Times picking the body through a grid of pixels over the framed view (800 × 600).
-    fn bench_picking(&mut self) {
-        self.view.frame_body(&self.lab);
-        let size = nalgebra::Vector2::new(800.0, 600.0);
-        let rays: Vec<_> = (0..400)
-            .map(|k| {
-                let pixel = nalgebra::Point2::new(
-                    250.0 + f64::from(k % 20) * 15.0,
-                    150.0 + f64::from(k / 20) * 15.0,
-                );
-                self.view.camera.ray(pixel, size)
-            })
-            .collect();
-        let start = Instant::now();
-        let primary = self.lab.primary();
-        let hits = rays.iter().filter(|r| primary.pick(r).is_some()).count();
-        let per_ray = start.elapsed().as_secs_f64() / rays.len() as f64;
-        println!(
-            "picking ({} triangles): {:.1} µs per ray ({} of {} rays hit)",
-            primary.body().mesh.triangles.len(),
-            per_ray * 1e6,
-            hits,
-            rays.len()
-        );
-    }
 }
 
 impl eframe::App for LabApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let start = Instant::now();
         self.show(ui);
-        if let Some(b) = &mut self.bench
-            && b.warmup == 0
-        {
-            b.ui_times.push(start.elapsed().as_secs_f64() * 1e3);
-            if let Some(cpu) = frame.info().cpu_usage {
-                b.cpu_times.push(f64::from(cpu) * 1e3);
+        let ctx = ui.ctx().clone();
+        if let Some(b) = &mut self.bench {
+            b.record_work(start.elapsed(), frame.info().cpu_usage);
+            if b.frame(&self.lab, &mut self.view) {
+                ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
         }
-        let ctx = ui.ctx().clone();
-        self.bench_frame(&ctx);
         if let Some(c) = &mut self.capture {
             c.frame(&ctx);
         }
@@ -487,15 +400,9 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
             args.after
         )));
     }
-    let bench = args.bench_frames.map(|frames| Bench {
-        frames: frames.max(1),
-        hide_plots: args.bench_no_plots,
-        last: None,
-        times: Vec::with_capacity(frames),
-        ui_times: Vec::with_capacity(frames),
-        cpu_times: Vec::with_capacity(frames),
-        warmup: 10,
-    });
+    let bench = args
+        .bench_frames
+        .map(|frames| Bench::new(frames, args.bench_no_plots));
     let outcome = capture::Outcome::default();
     let capture = args
         .screenshot

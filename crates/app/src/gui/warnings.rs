@@ -1,6 +1,6 @@
 //! The app's wording of massprops warnings: a short title, the effect on the mass, and what the
 //! numbers on screen mean for this mesh and what the user can do about it in a modelling
-//! program (the command line's wording, with its flags, is `cli::report::warning_text`).
+//! program (the command line's wording, with its flags, is `cli::report::words`).
 
 use massprops::{Defect, Warning};
 
@@ -161,10 +161,7 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
 
 /// "face 12 (line 40)" or "face 12".
 fn face(f: usize, lines: &[u32]) -> String {
-    match lines.get(f) {
-        Some(line) => format!("face {f} (line {line})"),
-        None => format!("face {f}"),
-    }
+    format!("face {}", crate::wording::face_line(f, lines))
 }
 
 /// "e.g. face 12 (line 40), face 13 (line 41)".
@@ -177,11 +174,7 @@ fn faces(list: &[usize], lines: &[u32]) -> String {
 }
 
 fn list(indices: &[usize]) -> String {
-    indices
-        .iter()
-        .map(usize::to_string)
-        .collect::<Vec<_>>()
-        .join(", ")
+    crate::wording::list(indices)
 }
 
 #[cfg(test)]

@@ -137,7 +137,7 @@ mod tests {
     fn t_handle_caps_are_clipped_not_fanned() {
         let poly = massprops::shapes::t_handle().build();
         let m = TriMesh::from_poly(&poly);
-        let d = massprops::diagnose(&poly);
+        let d = massprops::diagnostics::diagnose(&poly);
         assert!((area(&m) - d.surface_area).abs() < 1e-12 * d.surface_area.max(1.0));
         // 8 sides + 2 octagon caps of 6 triangles each.
         assert_eq!(m.triangles.len(), 8 * 2 + 2 * 6);

@@ -4,29 +4,34 @@
 //! the lab and records commands, the tests drive it directly.
 //!
 //! Also here, because the GUI and the tests both need them without a window: the frame clock,
-//! the loader (off the UI thread), the render/picking mesh, picking, the orbit camera's maths and
-//! the one mesh → world transform ([`placement`]).
+//! the loader (off the UI thread), the body as loaded ([`body`]) and a body made of parts
+//! ([`parts`]), the render/picking mesh, picking and the one mesh → world transform
+//! ([`placement`]).
 
-pub mod camera;
+pub mod body;
 pub mod clock;
+mod command;
+mod error;
 pub mod geometry;
 pub mod history;
 pub mod loader;
 pub mod parts;
 pub mod picking;
 pub mod placement;
-pub mod polhodes;
+pub mod samples;
 pub mod settings;
 pub mod specimen;
+#[cfg(test)]
+mod tests;
 
-use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use nalgebra::{Point3, Vector3};
-
+use body::{EditEffect, LoadedBody};
 use clock::FrameClock;
-use loader::{LoadedBody, Loading};
+pub use command::{Command, Message};
+pub use error::LabError;
+use loader::Loading;
 use settings::AppSettings;
 pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView, Variant};
 
@@ -36,96 +41,14 @@ pub const PRIMARY: SpecimenId = SpecimenId(0);
 /// Most copies compared with the primary (each costs a simulation, a history and a ghost).
 pub const MAX_COPIES: usize = 3;
 
-/// An intent recorded by the UI (or a test), applied by [`Lab::apply`].
-#[derive(Debug, Clone, PartialEq)]
-pub enum Command {
-    /// Pause or resume every specimen.
-    TogglePause,
-    /// One fixed step of every specimen (pauses first).
-    Step,
-    /// Every specimen back to the start state of the current body and preset.
-    Reset,
-    /// Spin about principal axis 0, 1 or 2 (moments ascending) with a small perturbation.
-    Preset(usize),
-    /// New settings, applied live to every specimen.
-    Settings(Box<AppSettings>),
-    /// Settings back to defaults.
-    ResetSettings,
-    /// Load a mesh file on the worker thread; it replaces every specimen's body.
-    LoadFile(PathBuf),
-    /// Load a built-in sample by label.
-    LoadSample(String),
-    /// Write a specimen's plot history as CSV.
-    ExportCsv {
-        /// Whose history.
-        specimen: SpecimenId,
-        /// Where to write.
-        path: PathBuf,
-    },
-    /// Poke: impulse of the set magnitude at a world point, along `direction` (the view ray).
-    Poke {
-        /// The specimen poked.
-        specimen: SpecimenId,
-        /// World point on the surface.
-        point: Point3<f64>,
-        /// Direction of the impulse (normalised here).
-        direction: Vector3<f64>,
-    },
-    /// Attach the string at a world point on the surface.
-    Grab {
-        /// The specimen held.
-        specimen: SpecimenId,
-        /// World point on the surface.
-        point: Point3<f64>,
-    },
-    /// Move the string's free end.
-    Drag {
-        /// The specimen held.
-        specimen: SpecimenId,
-        /// The new free end (world).
-        target: Point3<f64>,
-    },
-    /// Detach the string.
-    Release {
-        /// The specimen held.
-        specimen: SpecimenId,
-    },
-    /// Run the primary and up to [`MAX_COPIES`] copies of it from the same start, each copy
-    /// changed by its [`Variant`]; an empty list ends the comparison (the primary goes on).
-    Compare(Vec<Variant>),
-    /// Show a line (outcomes the GUI learns itself: a cancelled dialog, a finished recording).
-    Notify(Message),
-    /// Dismiss the message line.
-    DismissMessage,
-    /// Make the body's parts the parts of its file (objects, groups, STL solids, or connected
-    /// shells), each at the body's current density.
-    SplitIntoParts,
-    /// Add a mesh file as a new part at the origin, of water's density (a single-mesh body
-    /// becomes its first part, whole).
-    AddPart(PathBuf),
-    /// Change one part's settings (material, void, thin wall, placement, name) and whether it
-    /// is drawn; the motion goes on with p and L kept.
-    EditPart {
-        /// Which part.
-        index: usize,
-        /// Its new settings (placement in metres).
-        entry: Box<massprops::PartEntry>,
-        /// Drawn in the 3D view.
-        visible: bool,
-    },
-    /// Remove one part.
-    RemovePart(usize),
-    /// Write the body as a body file (and, beside it, the meshes of parts that have no file).
-    SaveBody(PathBuf),
-}
-
-/// A line for the user: an error (red) or information.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Message {
-    /// The text.
-    pub text: String,
-    /// Whether something went wrong.
-    pub error: bool,
+/// Whether time runs: held once, here, for every specimen (they run or pause together).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RunMode {
+    /// Every frame advances every specimen by the scaled wall-clock time.
+    #[default]
+    Running,
+    /// Time stands still; [`Command::Step`] advances one fixed step at a time.
+    Paused,
 }
 
 /// The model of the whole app.
@@ -136,10 +59,12 @@ pub struct Lab {
     specimens: Vec<Specimen>,
     next_id: u32,
     preset_axis: usize,
+    run_mode: RunMode,
     clock: FrameClock,
     loading: Option<Loading>,
     message: Option<Message>,
-    /// Bumped whenever the body's mesh changes, so the 3D view re-uploads it.
+    /// Bumped whenever what is drawn of the body changes (a new body, a part moved, shown or
+    /// hidden), so the 3D view uploads it again; an edit of masses alone leaves it.
     generation: u64,
     /// Called by worker threads when they have news (a repaint request in the app).
     waker: Waker,
@@ -161,7 +86,7 @@ impl Lab {
     ///
     /// # Errors
     /// Only if the built-in T-handle cannot be analysed (a bug).
-    pub fn new(settings: AppSettings) -> Result<Self, String> {
+    pub fn new(settings: AppSettings) -> Result<Self, LabError> {
         let body = Arc::new(LoadedBody::t_handle()?);
         let axis = 1;
         let same = Variant::Same;
@@ -179,6 +104,7 @@ impl Lab {
             specimens: vec![primary],
             next_id: 1,
             preset_axis: axis,
+            run_mode: RunMode::Running,
             clock: FrameClock::new(),
             loading: None,
             message: None,
@@ -202,27 +128,29 @@ impl Lab {
     /// Carries out one command; failures become the message line, the model stays usable.
     pub fn apply(&mut self, command: Command) {
         if let Err(e) = self.try_apply(command) {
-            self.message = Some(Message {
-                text: e,
-                error: true,
-            });
+            self.message = Some(Message::error(&e));
         }
     }
 
-    fn try_apply(&mut self, command: Command) -> Result<(), String> {
+    /// Carries out one command, or says why it could not (nothing changed then).
+    ///
+    /// # Errors
+    /// The command's own failure: a file that does not load, a part the body does not have, a
+    /// setting the simulation refuses, ….
+    pub fn try_apply(&mut self, command: Command) -> Result<(), LabError> {
         match command {
             Command::TogglePause => {
-                let run = self.is_paused();
-                for s in &mut self.specimens {
-                    if run { s.resume() } else { s.pause() }
-                }
+                self.run_mode = match self.run_mode {
+                    RunMode::Running => RunMode::Paused,
+                    RunMode::Paused => RunMode::Running,
+                };
                 self.clock.stop();
             }
             Command::Step => {
+                self.run_mode = RunMode::Paused;
                 self.clock.stop();
                 for s in &mut self.specimens {
-                    s.pause();
-                    s.step().map_err(stopped)?;
+                    s.step().map_err(LabError::Stopped)?;
                 }
             }
             Command::Reset => self.restart(self.preset_axis)?,
@@ -244,7 +172,10 @@ impl Lab {
                     history.write_csv(&mut out)?;
                     std::io::Write::flush(&mut out)
                 };
-                write().map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                write().map_err(|e| LabError::Write {
+                    path: path.clone(),
+                    message: e.to_string(),
+                })?;
                 let n = history.samples().len();
                 self.info(format!("wrote {n} samples to {}", path.display()));
             }
@@ -265,10 +196,10 @@ impl Lab {
             Command::Release { specimen } => self.specimen_mut(specimen)?.release(),
             Command::Compare(variants) => {
                 if variants.len() > MAX_COPIES {
-                    return Err(format!(
-                        "at most {MAX_COPIES} copies can be compared, not {}",
-                        variants.len()
-                    ));
+                    return Err(LabError::TooManyCopies {
+                        max: MAX_COPIES,
+                        asked: variants.len(),
+                    });
                 }
                 if variants.is_empty() {
                     // The body goes on where it is; only the copies go.
@@ -302,24 +233,28 @@ impl Lab {
                 entry,
                 visible,
             } => {
-                let mut parts = self.current_parts(true)?;
-                let part = parts
-                    .get_mut(index)
-                    .ok_or_else(|| format!("no part number {index}"))?;
-                part.entry = *entry;
-                part.visible = visible;
-                if !parts.iter().any(|p| p.visible) {
-                    return Err("the last part shown stays shown".to_owned());
+                let body = self.primary().body();
+                if body.composition.is_none() {
+                    // A single mesh becomes a body of one part: a change of topology.
+                    let mut parts = self.current_parts(true)?;
+                    let part = parts.get_mut(index).ok_or(LabError::NoPart(index))?;
+                    part.entry = *entry;
+                    part.visible = visible;
+                    if !parts.iter().any(|p| p.visible) {
+                        return Err(LabError::LastShown);
+                    }
+                    return self.rebody(parts);
                 }
-                self.rebody(parts)?;
+                let (edited, effect) = body.edit_part(index, *entry, visible)?;
+                self.set_body(Arc::new(edited), effect == EditEffect::Drawing)?;
             }
             Command::RemovePart(index) => {
                 let mut parts = self.current_parts(true)?;
                 if index >= parts.len() {
-                    return Err(format!("no part number {index}"));
+                    return Err(LabError::NoPart(index));
                 }
                 if parts.len() == 1 {
-                    return Err("a body keeps at least one part".to_owned());
+                    return Err(LabError::LastPart);
                 }
                 parts.remove(index);
                 self.rebody(parts)?;
@@ -335,19 +270,29 @@ impl Lab {
 
     /// The body's parts: its own, or for a single mesh at the current density, the whole mesh
     /// as one part (`whole`) or its file's parts.
-    fn current_parts(&self, whole: bool) -> Result<Vec<parts::PartModel>, String> {
+    fn current_parts(&self, whole: bool) -> Result<Vec<parts::PartModel>, LabError> {
         let body = self.primary().body();
         if let Some(c) = &body.composition {
             return Ok(c.parts.clone());
         }
-        parts::from_single(body, self.primary().density(), whole)
+        let Some((path, file)) = &body.file else {
+            return Err(LabError::AlreadyParts(body.name.clone()));
+        };
+        parts::from_single(&body.name, path, file, self.primary().density(), whole)
     }
 
-    /// Every specimen goes on with the body `parts` make, p and L kept. Nothing changes if the
-    /// parts make no body or one specimen cannot take it.
-    fn rebody(&mut self, parts: Vec<parts::PartModel>) -> Result<(), String> {
+    /// Every specimen goes on with the body `parts` make, p and L kept (a change of topology:
+    /// the body is assembled again). Nothing changes if the parts make no body or one specimen
+    /// cannot take it.
+    fn rebody(&mut self, parts: Vec<parts::PartModel>) -> Result<(), LabError> {
         let name = self.primary().body().name.clone();
         let body = Arc::new(LoadedBody::from_parts(&name, parts)?);
+        self.set_body(body, true)
+    }
+
+    /// Every specimen goes on with `body`, p and L kept; `redraw`: what is drawn changed.
+    /// Nothing changes if one specimen cannot take it.
+    fn set_body(&mut self, body: Arc<LoadedBody>, redraw: bool) -> Result<(), LabError> {
         let old = self.primary().body_arc().clone();
         for i in 0..self.specimens.len() {
             if let Err(e) = self.specimens[i].set_body(body.clone(), &self.settings) {
@@ -358,12 +303,14 @@ impl Lab {
                 return Err(e);
             }
         }
-        self.generation += 1;
+        if redraw {
+            self.generation += 1;
+        }
         Ok(())
     }
 
     /// Every specimen starts again on the current body, spinning about `axis`.
-    fn restart(&mut self, axis: usize) -> Result<(), String> {
+    fn restart(&mut self, axis: usize) -> Result<(), LabError> {
         let body = self.primary().body_arc().clone();
         self.start_all(&self.plan(), &body, axis)?;
         self.preset_axis = axis;
@@ -379,13 +326,13 @@ impl Lab {
     }
 
     /// Replaces every specimen by `plan`'s, all starting on `body` spinning about `axis`; the
-    /// paused flag is kept. Nothing changes if one cannot start (the message names its variant).
+    /// run mode is kept. Nothing changes if one cannot start (the message names its variant).
     fn start_all(
         &mut self,
         plan: &[(SpecimenId, Variant)],
         body: &Arc<LoadedBody>,
         axis: usize,
-    ) -> Result<(), String> {
+    ) -> Result<(), LabError> {
         let fresh = plan
             .iter()
             .map(|&(id, variant)| {
@@ -393,23 +340,22 @@ impl Lab {
                     if variant == Variant::Same {
                         e
                     } else {
-                        format!("{}: {e}", variant.label())
+                        LabError::Copy {
+                            variant: variant.label(),
+                            source: Box::new(e),
+                        }
                     }
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let paused = self.is_paused();
         self.specimens = fresh;
-        if paused {
-            self.specimens.iter_mut().for_each(Specimen::pause);
-        }
         self.clock.stop();
         Ok(())
     }
 
     /// New settings for every specimen; if one rejects them, the ones already changed are put
     /// back so that all keep the same settings.
-    fn set_settings(&mut self, new: AppSettings) -> Result<(), String> {
+    fn set_settings(&mut self, new: AppSettings) -> Result<(), LabError> {
         let old = self.settings.clone();
         for i in 0..self.specimens.len() {
             if let Err(e) = self.specimens[i].set_settings(&old, &new) {
@@ -426,7 +372,7 @@ impl Lab {
 
     /// Makes `body` every specimen's body, keeping the old one if the new one cannot be
     /// simulated.
-    fn install(&mut self, body: LoadedBody) -> Result<(), String> {
+    fn install(&mut self, body: LoadedBody) -> Result<(), LabError> {
         let body = Arc::new(body);
         self.start_all(&self.plan(), &body, self.preset_axis)?;
         self.generation += 1;
@@ -467,21 +413,21 @@ impl Lab {
     }
 
     /// Advances every specimen by `frame_dt` simulated seconds (at most rbcore's catch-up cap of
-    /// steps each; the rest is counted in [`Specimen::dropped`]). A diverging specimen pauses
-    /// and says so on the message line.
+    /// steps each; the rest is counted in [`Specimen::dropped`]), unless paused. A diverging
+    /// specimen pauses the lab and says so on the message line.
     pub fn advance(&mut self, frame_dt: f64) {
+        if self.is_paused() {
+            return;
+        }
         let mut failure = None;
         for s in &mut self.specimens {
-            if s.sim().is_paused() {
-                continue;
-            }
             if let Err(e) = s.advance(frame_dt) {
-                failure = Some(stopped(e));
+                failure = Some(LabError::Stopped(e));
             }
         }
-        if let Some(text) = failure {
-            self.specimens.iter_mut().for_each(Specimen::pause);
-            self.message = Some(Message { text, error: true });
+        if let Some(e) = failure {
+            self.run_mode = RunMode::Paused;
+            self.message = Some(Message::error(&e));
         }
     }
 
@@ -509,7 +455,7 @@ impl Lab {
         }
     }
 
-    fn finish_load(&mut self, result: Result<LoadedBody, String>) {
+    fn finish_load(&mut self, result: Result<LoadedBody, LabError>) {
         let outcome = result.and_then(|body| self.install(body));
         if let Err(e) = outcome {
             self.message = Some(Message {
@@ -535,23 +481,27 @@ impl Lab {
     ///
     /// # Errors
     /// No specimen has that id (it was removed).
-    pub fn specimen(&self, id: SpecimenId) -> Result<&Specimen, String> {
+    pub fn specimen(&self, id: SpecimenId) -> Result<&Specimen, LabError> {
         self.specimens
             .iter()
             .find(|s| s.id() == id)
-            .ok_or_else(|| format!("no body number {}", id.0))
+            .ok_or(LabError::NoSpecimen(id.0))
     }
-    fn specimen_mut(&mut self, id: SpecimenId) -> Result<&mut Specimen, String> {
+    fn specimen_mut(&mut self, id: SpecimenId) -> Result<&mut Specimen, LabError> {
         self.specimens
             .iter_mut()
             .find(|s| s.id() == id)
-            .ok_or_else(|| format!("no body number {}", id.0))
+            .ok_or(LabError::NoSpecimen(id.0))
     }
-    /// Whether the simulation is paused (all specimens run or pause together).
+    /// Whether time runs or stands still (for every specimen).
+    pub fn run_mode(&self) -> RunMode {
+        self.run_mode
+    }
+    /// Whether the simulation is paused.
     pub fn is_paused(&self) -> bool {
-        self.primary().sim().is_paused()
+        self.run_mode == RunMode::Paused
     }
-    /// Mesh generation counter (changes when a new mesh is installed).
+    /// Drawing generation (changes when what is drawn of the body changes).
     pub fn generation(&self) -> u64 {
         self.generation
     }
@@ -568,603 +518,5 @@ impl Lab {
         !self.is_paused()
             || self.loading.is_some()
             || self.specimens.iter().any(|s| s.poke_flash().is_some())
-    }
-}
-
-/// The message for a diverged simulation.
-fn stopped(e: rbcore::SimError) -> String {
-    format!("simulation stopped: {e}. Press Reset.")
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use settings::{InertiaSource, MassSpec};
-
-    fn lab() -> Lab {
-        Lab::new(AppSettings::default()).expect("lab")
-    }
-
-    fn settings_with(lab: &Lab, change: impl FnOnce(&mut AppSettings)) -> Command {
-        let mut s = lab.settings().clone();
-        change(&mut s);
-        Command::Settings(Box::new(s))
-    }
-
-    /// Runs the lab `seconds` of simulated time in steps.
-    fn run(lab: &mut Lab, steps: usize) {
-        for _ in 0..steps {
-            lab.apply(Command::Step);
-        }
-    }
-
-    #[test]
-    fn editing_a_part_mid_run_keeps_angular_momentum_and_saving_reads_back() {
-        let mut lab = lab();
-        lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
-        assert!(
-            lab.message().is_none_or(|m| !m.error),
-            "{:?}",
-            lab.message()
-        );
-        let body = lab.primary().body();
-        let c = body.composition.as_ref().expect("parts");
-        assert_eq!(c.parts.len(), 2);
-        let steel = lab.primary().properties(InertiaSource::Exact).mass;
-        run(&mut lab, 50);
-        let l = lab.primary().sim().body().angular_momentum();
-        let p = lab.primary().sim().body().momentum();
-        // The head becomes aluminium: lighter, the centre of mass moves down the handle.
-        let mut head = lab
-            .primary()
-            .body()
-            .composition
-            .as_ref()
-            .expect("parts")
-            .parts[0]
-            .entry
-            .clone();
-        head.material = massprops::MaterialEntry::Preset("aluminium".to_owned());
-        lab.apply(Command::EditPart {
-            index: 0,
-            entry: Box::new(head),
-            visible: true,
-        });
-        assert!(
-            lab.message().is_none_or(|m| !m.error),
-            "{:?}",
-            lab.message()
-        );
-        let b = lab.primary().sim().body();
-        assert!(
-            (b.angular_momentum() - l).norm() <= 1e-12 * l.norm(),
-            "L kept"
-        );
-        assert!(
-            (b.momentum() - p).norm() <= 1e-12 * (1.0 + p.norm()),
-            "p kept"
-        );
-        let aluminium = lab.primary().properties(InertiaSource::Exact).mass;
-        let head_volume = 0.12 * 0.03 * 0.03;
-        assert!(
-            ((steel - aluminium) - (7850.0 - 2700.0) * head_volume).abs() < 1e-12,
-            "{steel} - {aluminium}"
-        );
-        run(&mut lab, 10);
-
-        // Saved and opened again: the same body.
-        let dir = std::env::temp_dir().join(format!("inertia-lab-parts-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).expect("temp dir");
-        let path = dir.join("hammer.toml");
-        lab.apply(Command::SaveBody(path.clone()));
-        assert!(
-            lab.message().is_some_and(|m| !m.error),
-            "{:?}",
-            lab.message()
-        );
-        let again = parts::from_body_file(&path).expect("reads back");
-        let reopened = LoadedBody::from_parts("hammer", again).expect("a body");
-        let whole = &reopened.composition.as_ref().expect("parts").whole;
-        assert!((whole.mass - aluminium).abs() <= 1e-12 * aluminium);
-        std::fs::remove_dir_all(&dir).ok();
-    }
-
-    #[test]
-    fn a_hammer_built_from_two_meshes_is_saved_and_opened_with_its_centre_in_the_head() {
-        let dir = std::env::temp_dir().join(format!("inertia-lab-build-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).expect("temp dir");
-        let handle = dir.join("handle.obj");
-        let bar =
-            massprops::shapes::cuboid(Vector3::new(0.1, 1.0, 0.1), Point3::new(0.0, -1.0, 0.0));
-        std::fs::write(&handle, massprops::shapes::to_obj("handle", "", &bar)).expect("write");
-        let mut lab = lab();
-        // The unit cube (the head), then the handle as a second part.
-        lab.apply(Command::LoadSample("Cube".to_owned()));
-        lab.apply(Command::AddPart(handle));
-        assert!(
-            lab.message().is_some_and(|m| !m.error),
-            "{:?}",
-            lab.message()
-        );
-        let parts = lab.current_parts(true).expect("parts");
-        assert_eq!(parts.len(), 2);
-        for (index, material) in [(0, "steel"), (1, "wood")] {
-            let mut entry = parts[index].entry.clone();
-            entry.material = massprops::MaterialEntry::Preset(material.to_owned());
-            lab.apply(Command::EditPart {
-                index,
-                entry: Box::new(entry),
-                visible: true,
-            });
-        }
-        let path = dir.join("hammer.toml");
-        lab.apply(Command::SaveBody(path.clone()));
-        assert!(
-            lab.message().is_some_and(|m| !m.error),
-            "{:?}",
-            lab.message()
-        );
-        let reopened =
-            LoadedBody::from_parts("hammer", parts::from_body_file(&path).expect("reads"))
-                .expect("a body");
-        let whole = &reopened.composition.as_ref().expect("parts").whole;
-        // 7850 kg at y = 0 and 0.01 m³ × 600 kg/m³ = 6 kg at y = −1: the centre is in the head.
-        let y = -6.0 / (7850.0 + 6.0);
-        assert!(
-            (whole.center_of_mass.y - y).abs() < 1e-12,
-            "{}",
-            whole.center_of_mass
-        );
-        assert!(whole.center_of_mass.y > -0.5);
-        std::fs::remove_dir_all(&dir).ok();
-    }
-
-    #[test]
-    fn a_body_in_millimetres_saved_from_the_lab_reads_back_the_same() {
-        let dir = std::env::temp_dir().join(format!("inertia-lab-mm-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).expect("temp dir");
-        let cube = massprops::shapes::cuboid(Vector3::repeat(100.0), Point3::origin());
-        std::fs::write(
-            dir.join("cube.obj"),
-            massprops::shapes::to_obj("cube", "mm", &cube),
-        )
-        .expect("write");
-        let body_file = dir.join("in-mm.toml");
-        std::fs::write(
-            &body_file,
-            "units = \"mm\"\n[[part]]\nname = \"cube\"\nmesh = \"cube.obj\"\nmaterial = \"steel\"\ntranslation = [0, 200, 0]\n",
-        )
-        .expect("write");
-        let mut lab = lab();
-        let body =
-            LoadedBody::from_parts("in-mm", parts::from_body_file(&body_file).expect("reads"))
-                .expect("a body");
-        lab.install(body).expect("installs");
-        let mass = lab.primary().properties(InertiaSource::Exact).mass;
-        assert!((mass - 7.85).abs() < 1e-12, "{mass}");
-        let saved = dir.join("saved.toml");
-        lab.apply(Command::SaveBody(saved.clone()));
-        let again = LoadedBody::from_parts("saved", parts::from_body_file(&saved).expect("reads"))
-            .expect("a body");
-        let whole = &again.composition.as_ref().expect("parts").whole;
-        assert!((whole.mass - 7.85).abs() < 1e-12, "{}", whole.mass);
-        assert!((whole.center_of_mass.y - 0.2).abs() < 1e-12);
-        std::fs::remove_dir_all(&dir).ok();
-    }
-
-    #[test]
-    fn a_hidden_part_is_not_picked() {
-        let mut lab = lab();
-        lab.apply(Command::LoadSample("Hollow box & solid box".to_owned()));
-        let placement = lab.primary().placement();
-        // Along +x through the hollow box's centre (mesh origin): its wall is at x = −0.15, its
-        // cavity's at −0.13.
-        let ray = picking::Ray {
-            origin: placement.to_world(&Point3::new(-1.0, 0.0, 0.0)),
-            dir: placement.to_world(&Point3::origin())
-                - placement.to_world(&Point3::new(-1.0, 0.0, 0.0)),
-        };
-        let hit_x = |lab: &Lab| {
-            let hit = lab.primary().pick(&ray).expect("hits");
-            lab.primary().placement().to_mesh(&hit.point).x
-        };
-        assert!((hit_x(&lab) + 0.15).abs() < 1e-9);
-        let outer = lab
-            .primary()
-            .body()
-            .composition
-            .as_ref()
-            .expect("parts")
-            .parts[0]
-            .entry
-            .clone();
-        lab.apply(Command::EditPart {
-            index: 0,
-            entry: Box::new(outer),
-            visible: false,
-        });
-        assert!((hit_x(&lab) + 0.13).abs() < 1e-9, "{}", hit_x(&lab));
-    }
-
-    #[test]
-    fn a_hollow_mesh_splits_into_a_solid_and_a_void() {
-        // A 3 m box with an inward 1 m box inside, as one mesh with no objects.
-        let mut b = massprops::shapes::cuboid(Vector3::repeat(3.0), Point3::origin());
-        let mut cavity = massprops::shapes::cuboid(Vector3::repeat(1.0), Point3::origin());
-        cavity.faces.iter_mut().for_each(|f| f.reverse());
-        b.append(&cavity);
-        let text = massprops::shapes::to_obj("hollow", "", &b).replace("o hollow\n", "");
-        let file = massprops::parse_mesh(text.as_bytes(), std::path::Path::new("hollow.obj"))
-            .expect("parses");
-        let body = LoadedBody::new("hollow", PathBuf::from("hollow.obj"), file).expect("body");
-        let mut lab = lab();
-        lab.install(body).expect("installs");
-        let whole = lab.primary().properties(InertiaSource::Exact).mass;
-        assert!((whole - 26_000.0).abs() < 1e-9, "{whole}");
-        lab.apply(Command::SplitIntoParts);
-        let c = lab.primary().body().composition.as_ref().expect("parts");
-        let voids: Vec<bool> = c.parts.iter().map(|p| p.entry.void).collect();
-        assert_eq!(voids, [false, true]);
-        let split = lab.primary().properties(InertiaSource::Exact).mass;
-        assert!((split - whole).abs() <= 1e-9 * whole, "{split} vs {whole}");
-    }
-
-    #[test]
-    fn a_mesh_splits_into_its_parts_and_takes_a_new_one() {
-        let mut lab = lab();
-        lab.apply(Command::LoadSample("Hammer".to_owned()));
-        let whole = lab.primary().properties(InertiaSource::Exact).mass;
-        lab.apply(Command::SplitIntoParts);
-        let c = lab.primary().body().composition.as_ref().expect("parts");
-        let names: Vec<&str> = c.parts.iter().map(|p| p.entry.name.as_str()).collect();
-        assert_eq!(names, ["handle", "head"]);
-        let split = lab.primary().properties(InertiaSource::Exact).mass;
-        assert!((split - whole).abs() <= 1e-12 * whole, "{split} vs {whole}");
-        // A part that would leave no body is refused and the body stays.
-        let mut void = c.parts[1].entry.clone();
-        void.void = true;
-        void.material = massprops::MaterialEntry::Density(1e6);
-        lab.apply(Command::EditPart {
-            index: 1,
-            entry: Box::new(void),
-            visible: true,
-        });
-        assert!(
-            lab.message().is_some_and(|m| m.error),
-            "{:?}",
-            lab.message()
-        );
-        let kept = lab.primary().properties(InertiaSource::Exact).mass;
-        assert!((kept - whole).abs() <= 1e-12 * whole);
-        lab.apply(Command::RemovePart(1));
-        let c = lab.primary().body().composition.as_ref().expect("parts");
-        assert_eq!(c.parts.len(), 1);
-    }
-
-    #[test]
-    fn switching_the_source_keeps_the_mesh_in_place_and_momenta() {
-        let mut lab = lab();
-        lab.advance(0.5);
-        let corner = lab.primary().body().mesh.positions[3];
-        let before = lab.primary().placement().to_world(&corner);
-        let b = lab.primary().sim().body();
-        let (p, l) = (b.momentum(), b.angular_momentum());
-        lab.apply(settings_with(&lab, |s| {
-            s.body.source = InertiaSource::BoundingBox;
-        }));
-        assert!(lab.message().is_none(), "{:?}", lab.message());
-        let primary = lab.primary();
-        assert!((primary.placement().to_world(&corner) - before).norm() < 1e-12);
-        assert_eq!(primary.sim().body().momentum(), p);
-        assert!((primary.sim().body().angular_momentum() - l).norm() < 1e-15);
-        // The body now turns about the box centre.
-        let bbox = primary
-            .properties(InertiaSource::BoundingBox)
-            .center_of_mass;
-        let bbox_mesh = Point3::from(bbox.coords / primary.placement().scale);
-        let at = primary.placement().to_world(&bbox_mesh);
-        assert!((at - primary.sim().body().position()).norm() < 1e-12);
-    }
-
-    #[test]
-    fn placement_matches_the_body_frame() {
-        let mut lab = lab();
-        lab.apply(settings_with(&lab, |s| s.body.scale = 3.0));
-        lab.advance(0.7);
-        let sp = lab.primary();
-        let p = sp.placement();
-        let c = sp.used_properties().center_of_mass;
-        for &x in sp.body().mesh.positions.iter().take(20) {
-            let via_body = sp
-                .sim()
-                .body()
-                .point_to_world(&Point3::from(x.coords * 3.0 - c.coords));
-            assert!((p.to_world(&x) - via_body).norm() < 1e-12);
-        }
-    }
-
-    #[test]
-    fn rejected_settings_change_nothing_and_say_why() {
-        let mut lab = lab();
-        let before = lab.settings().clone();
-        lab.apply(settings_with(&lab, |s| s.physics.dt = -1.0));
-        assert!(lab.message().is_some_and(|m| m.error));
-        assert_eq!(lab.settings(), &before);
-        lab.apply(settings_with(&lab, |s| {
-            s.body.mass = MassSpec::Mass(f64::NAN);
-        }));
-        assert_eq!(lab.settings(), &before);
-        lab.advance(0.1);
-        assert!(
-            lab.primary()
-                .history()
-                .samples()
-                .iter()
-                .all(|s| s.values().iter().all(|v| v.is_finite()))
-        );
-    }
-
-    #[test]
-    fn every_step_is_recorded_and_time_beyond_the_cap_is_reported() {
-        let mut lab = lab();
-        let dt = lab.primary().sim().settings().dt;
-        let cap = lab.primary().sim().settings().max_catch_up_steps;
-        let n0 = lab.primary().history().samples().len();
-        lab.advance(5.0 * dt);
-        assert_eq!(lab.primary().history().samples().len(), n0 + 5);
-        assert_eq!(lab.primary().dropped(), 0.0);
-        // A frame 40 steps long runs the cap and drops the rest, and says how much.
-        lab.advance(40.0 * dt);
-        let sp = lab.primary();
-        assert_eq!(sp.history().samples().len(), n0 + 5 + cap as usize);
-        // rbcore drops whole steps and keeps the rest (under one step, after round-off) queued.
-        let expected = (40.0 - f64::from(cap)) * dt;
-        let dropped = sp.dropped();
-        assert!(
-            dropped <= expected * (1.0 + 1e-9) && dropped >= expected - dt * (1.0 + 1e-9),
-            "{dropped} vs {expected}"
-        );
-        assert!((sp.sim().time() - f64::from(5 + cap) * dt).abs() < 1e-12);
-    }
-
-    /// The T-handle's flips come when the exact solution says: the measured interval between
-    /// reversals of ω₂ is half the period predicted from E and |L|; a poke starts the count over.
-    #[test]
-    fn measured_flips_match_the_predicted_period() {
-        let mut lab = lab();
-        let rbcore::Polhode::Circles { period, .. } = lab.primary().polhode() else {
-            panic!("{:?}", lab.primary().polhode());
-        };
-        assert_eq!(lab.primary().history().flip_interval(), None);
-        lab.advance_for(15.0);
-        let measured = lab
-            .primary()
-            .history()
-            .flip_interval()
-            .expect("flips in 15 s");
-        assert!(
-            ((measured - period / 2.0) / (period / 2.0)).abs() < 1e-3,
-            "{measured} vs {}",
-            period / 2.0
-        );
-        let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
-        lab.apply(Command::Poke {
-            specimen: PRIMARY,
-            point,
-            direction: Vector3::new(0.0, 0.0, 1.0),
-        });
-        assert_eq!(lab.primary().history().flip_interval(), None);
-    }
-
-    /// A frame of 150 ms at dt = 1/240 is 36 steps: the cap's 16 run and the rest is reported,
-    /// not lost in the clock.
-    #[test]
-    fn a_slow_frame_reports_the_time_it_skipped() {
-        let mut lab = lab();
-        let s = *lab.primary().sim().settings();
-        let t0 = Instant::now();
-        lab.frame(t0);
-        lab.frame(t0 + Duration::from_millis(150));
-        let sp = lab.primary();
-        assert_eq!(sp.sim().steps(), u64::from(s.max_catch_up_steps));
-        let expected = 0.150 - f64::from(s.max_catch_up_steps) * s.dt;
-        let dropped = sp.dropped();
-        assert!(
-            dropped <= expected * (1.0 + 1e-9) && dropped >= expected - s.dt * (1.0 + 1e-9),
-            "{dropped} vs {expected}"
-        );
-    }
-
-    /// Settings the attached string cannot take are refused before anything changes.
-    #[test]
-    fn settings_refused_by_the_string_change_nothing() {
-        let mut lab = lab();
-        lab.advance(0.2);
-        let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.0, 0.0);
-        lab.apply(Command::Grab {
-            specimen: PRIMARY,
-            point,
-        });
-        let (placement, props) = (
-            lab.primary().placement(),
-            *lab.primary().properties(InertiaSource::BoundingBox),
-        );
-        lab.apply(settings_with(&lab, |s| {
-            s.body.source = InertiaSource::BoundingBox;
-            s.interaction.string_frequency = -1.0;
-        }));
-        assert!(
-            lab.message()
-                .is_some_and(|m| m.error && m.text.contains("string"))
-        );
-        assert_eq!(lab.settings().body.source, InertiaSource::Exact);
-        assert_eq!(lab.primary().placement(), placement);
-        assert_eq!(lab.primary().properties(InertiaSource::BoundingBox), &props);
-    }
-
-    #[test]
-    fn poke_string_and_csv_export() {
-        let mut lab = lab();
-        lab.apply(Command::TogglePause);
-        let l0 = lab.primary().sim().body().angular_momentum();
-        let com = lab.primary().sim().body().position();
-        let point = com + Vector3::new(0.03, 0.0, 0.0);
-        lab.apply(Command::Poke {
-            specimen: PRIMARY,
-            point,
-            direction: Vector3::new(0.0, 0.0, -2.0),
-        });
-        let j = Vector3::new(0.0, 0.0, -lab.primary().poke_impulse(lab.settings()));
-        let dl = lab.primary().sim().body().angular_momentum() - l0;
-        assert!((dl - (point - com).cross(&j)).norm() < 1e-15);
-        assert!(lab.primary().poke_flash().is_some());
-        lab.apply(Command::Poke {
-            specimen: PRIMARY,
-            point,
-            direction: Vector3::zeros(),
-        });
-        assert!(lab.message().is_some_and(|m| m.error));
-
-        lab.apply(Command::TogglePause);
-        lab.apply(Command::Grab {
-            specimen: PRIMARY,
-            point,
-        });
-        let target = point + Vector3::new(0.0, 0.05, 0.0);
-        lab.apply(Command::Drag {
-            specimen: PRIMARY,
-            target,
-        });
-        let s = lab.primary().string_view().expect("attached");
-        assert_eq!(s.target, target);
-        let cap = lab.primary().string_max_force(lab.settings());
-        assert!(s.force.norm() <= cap * (1.0 + 1e-12));
-        lab.advance(0.2);
-        lab.apply(Command::Release { specimen: PRIMARY });
-        assert!(lab.primary().string_view().is_none());
-
-        let path = std::env::temp_dir().join(format!("inertia-lab-{}.csv", std::process::id()));
-        lab.apply(Command::ExportCsv {
-            specimen: PRIMARY,
-            path: path.clone(),
-        });
-        let text = std::fs::read_to_string(&path).expect("written");
-        assert_eq!(
-            text.lines().count(),
-            lab.primary().history().samples().len() + 1
-        );
-        std::fs::remove_file(&path).ok();
-        lab.apply(Command::ExportCsv {
-            specimen: PRIMARY,
-            path: PathBuf::from("/no/such/dir/x.csv"),
-        });
-        assert!(
-            lab.message()
-                .is_some_and(|m| m.error && m.text.contains("/no/such/dir"))
-        );
-    }
-
-    /// Copies with the same settings stay identical bit for bit; a copy that differs in one
-    /// choice diverges; a poke acts only on the specimen it names; settings reach every copy.
-    #[test]
-    fn compared_copies_differ_only_where_a_setting_differs() {
-        let mut lab = lab();
-        lab.advance(0.3);
-        lab.apply(Command::Compare(vec![
-            Variant::Same,
-            Variant::Source(InertiaSource::BoundingBox),
-            Variant::Model(rbcore::RotationModel::Textbook),
-        ]));
-        assert!(lab.message().is_none(), "{:?}", lab.message());
-        assert_eq!(lab.specimens().len(), 4);
-        assert_eq!(lab.primary().sim().time(), 0.0, "all start together");
-        // Two reversals of ω₂ (at T/4 and 3T/4, T = 11.1 s) fit in 10 s.
-        lab.advance_for(10.0);
-        let [primary, same, bbox, textbook] = lab.specimens() else {
-            panic!("four specimens")
-        };
-        assert_eq!(primary.history().samples(), same.history().samples());
-        assert_eq!(
-            primary.sim().body().orientation(),
-            same.sim().body().orientation()
-        );
-        let w = |s: &Specimen| s.history().last().expect("samples").omega_principal;
-        assert!((Vector3::from(w(primary)) - Vector3::from(w(bbox))).norm() > 0.1);
-        // The textbook model never turns ω in the body: it keeps the start's ω.
-        let w0 = textbook.history().samples()[0].omega_principal;
-        assert!((Vector3::from(w(textbook)) - Vector3::from(w0)).norm() < 1e-9);
-        assert!(primary.history().flip_interval().is_some());
-        assert!(textbook.history().flip_interval().is_none());
-        // The drift tables: every copy conserves E to round-off, the primary's drift is README's.
-        assert!(primary.drift().max_energy() < 1e-12);
-        assert_eq!(bbox.variant(), Variant::Source(InertiaSource::BoundingBox));
-
-        let same_id = lab.specimens()[1].id();
-        let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
-        lab.apply(Command::Poke {
-            specimen: same_id,
-            point,
-            direction: Vector3::new(0.0, 0.0, 1.0),
-        });
-        lab.advance(0.5);
-        let (a, b) = (&lab.specimens()[0], &lab.specimens()[1]);
-        assert_ne!(
-            a.sim().body().angular_momentum(),
-            b.sim().body().angular_momentum()
-        );
-        lab.apply(settings_with(&lab, |s| s.body.scale = 2.0));
-        assert!(lab.specimens().iter().all(|s| s.placement().scale == 2.0));
-        // The bounding-box copy keeps its source whatever the lab's is.
-        let bbox = &lab.specimens()[2];
-        let expected = bbox
-            .properties(InertiaSource::BoundingBox)
-            .principal
-            .moments;
-        assert_eq!(bbox.sim().body().moments(), expected);
-
-        lab.apply(Command::Compare(vec![Variant::Same; 4]));
-        assert!(
-            lab.message()
-                .is_some_and(|m| m.error && m.text.contains("at most 3"))
-        );
-        assert_eq!(
-            lab.specimens().len(),
-            4,
-            "a refused comparison changes nothing"
-        );
-        let t = lab.primary().sim().time();
-        lab.apply(Command::Compare(Vec::new()));
-        assert_eq!(lab.specimens().len(), 1);
-        assert_eq!(
-            lab.primary().sim().time(),
-            t,
-            "stopping keeps the body's motion"
-        );
-        lab.apply(Command::Release { specimen: same_id });
-        assert!(lab.message().is_some_and(|m| m.text.contains("no body")));
-    }
-
-    /// Reset and the presets restart from the same state: the same spin about the chosen axis,
-    /// with the documented perturbation, at the settings' rate.
-    #[test]
-    fn reset_and_presets_start_the_documented_spin() {
-        let mut lab = lab();
-        let rate = lab.settings().body.spin_rate;
-        for axis in 0..3 {
-            lab.apply(Command::Preset(axis));
-            lab.advance(0.4);
-            lab.apply(Command::Reset);
-            let sp = lab.primary();
-            assert_eq!(sp.sim().time(), 0.0);
-            assert_eq!(sp.history().samples().len(), 1);
-            let w = sp.sim().diagnostics().omega_principal;
-            for k in 0..3 {
-                let expected = if k == axis { rate } else { 0.02 * rate };
-                assert!((w[k] - expected).abs() < 1e-12 * rate, "{axis} {w}");
-            }
-        }
-        lab.apply(settings_with(&lab, |s| s.body.spin_rate = 3.0));
-        lab.apply(Command::ResetSettings);
-        assert_eq!(lab.settings(), &AppSettings::default());
     }
 }

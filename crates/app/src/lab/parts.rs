@@ -1,16 +1,19 @@
 //! A body made of parts, as the lab holds it: each part's settings as a body file writes them
 //! ([`massprops::PartEntry`]), its mesh and its mass integrals at unit density, kept so that a
-//! change of material or placement is a sum (`massprops::combine`), not a new integration.
+//! change of material or placement is a sum (`massprops::composite::combine`), not a new integration.
 
 use std::path::{Path, PathBuf};
 
+use std::sync::Arc;
+
+use massprops::composite::PartMass;
 use massprops::{
-    BodyFile, MassProperties, MassSpec, MaterialEntry, Method, PartEntry, PartMass, PolyMesh,
+    BodyFile, Fill, IntegratedPart, LengthUnit, MaterialEntry, MeshFile, PartEntry, PolyMesh,
     Repairs, Warning,
 };
 use nalgebra::Isometry3;
 
-use super::loader::LoadedBody;
+use super::error::LabError;
 
 /// One part: what the user set, and what was integrated once.
 #[derive(Debug, Clone)]
@@ -22,16 +25,10 @@ pub struct PartModel {
     /// Its mesh is only a piece of `entry.mesh` that no object names (a connected shell): a
     /// body file must get it its own mesh file.
     pub piece: bool,
-    /// Its surface in its own coordinates (metres).
-    pub mesh: PolyMesh,
-    /// Its solid at density 1 in its own coordinates; `None` when it encloses no volume.
-    solid: Option<MassProperties>,
-    /// Its faces wind inward (the solid above is that of the outward-wound surface).
-    wound_inward: bool,
-    /// Its surface at surface density 1 (for a thin wall).
-    surface: MassProperties,
-    /// What its mesh has wrong (faces count within the part).
-    pub warnings: Vec<Warning>,
+    /// Its surface in its own coordinates (metres); shared, so that an edit copies no mesh.
+    pub mesh: Arc<PolyMesh>,
+    /// Its solid and surface at unit density, integrated once.
+    integrated: Arc<IntegratedPart>,
 }
 
 impl PartModel {
@@ -39,25 +36,37 @@ impl PartModel {
     ///
     /// # Errors
     /// The mesh has no area (the message names the part).
-    pub fn new(entry: PartEntry, mesh: PolyMesh) -> Result<Self, String> {
-        let name = &entry.name;
-        let unit = MassSpec::Density(1.0);
-        let repairs = Repairs::default();
-        let solid = massprops::analyze_with(&mesh, Method::Volume, unit, &repairs).ok();
-        let surface = massprops::analyze_with(&mesh, Method::Shell, unit, &repairs)
-            .map_err(|e| format!("part \"{name}\": {e}"))?;
-        let warnings = solid
-            .as_ref()
-            .map_or_else(|| surface.warnings.clone(), |s| s.warnings.clone());
+    pub fn new(entry: PartEntry, mesh: PolyMesh) -> Result<Self, LabError> {
+        let integrated = IntegratedPart::new(&mesh, &Repairs::default());
+        Self::integrated(entry, Arc::new(mesh), Arc::new(integrated))
+    }
+
+    /// A part whose mesh was integrated already.
+    ///
+    /// # Errors
+    /// The mesh has no area (the message names the part).
+    pub fn integrated(
+        entry: PartEntry,
+        mesh: Arc<PolyMesh>,
+        integrated: Arc<IntegratedPart>,
+    ) -> Result<Self, LabError> {
+        // A part must at least have a surface to be drawn and to take a thin wall.
+        let wall = Fill::ThinWall {
+            density: 1.0,
+            thickness: 1.0,
+        };
+        integrated
+            .properties(&entry.name, wall, &Isometry3::identity())
+            .map_err(|source| LabError::Part {
+                part: entry.name.clone(),
+                source,
+            })?;
         Ok(Self {
             entry,
             visible: true,
             piece: false,
             mesh,
-            wound_inward: solid.as_ref().is_some_and(|a| a.flipped),
-            solid: solid.map(|a| a.properties),
-            surface: surface.properties,
-            warnings,
+            integrated,
         })
     }
 
@@ -67,70 +76,73 @@ impl PartModel {
         self.entry.placement(1.0)
     }
 
+    /// Its fill, by massprops' one rule (the lab keeps lengths in metres).
+    pub fn fill(&self) -> Fill {
+        self.entry.fill(1.0)
+    }
+
     /// The part's density (kg/m³): given, or its preset's, or its mass over its volume.
     pub fn density(&self) -> Option<f64> {
         match &self.entry.material {
-            MaterialEntry::Density(d) => Some(*d),
-            MaterialEntry::Preset(name) => massprops::material(name).map(|m| m.density),
-            MaterialEntry::Mass(m) => self.solid.as_ref().map(|s| m / s.mass),
+            MaterialEntry::Mass(m) => self.integrated.volume().map(|v| m / v),
+            other => other.density(),
         }
     }
 
-    /// Its signed mass as it counts in the body, in body coordinates.
+    /// What its mesh has wrong for its fill (faces count within the part).
+    pub fn warnings(&self) -> &[Warning] {
+        self.integrated.warnings(self.fill())
+    }
+
+    /// Its signed mass as it counts in the body, in body coordinates: a sum of its unit-density
+    /// integrals, nothing integrated again.
     ///
     /// # Errors
     /// A solid, void or mass given to a part that encloses no volume, or no density.
-    pub fn mass(&self) -> Result<PartMass, String> {
+    pub fn mass(&self) -> Result<PartMass, LabError> {
         let name = &self.entry.name;
-        let density = self
-            .density()
-            .ok_or_else(|| format!("part \"{name}\": encloses no volume to give a mass to"))?;
-        let (unit, scale) = match self.entry.thin_wall {
-            Some(t) => (&self.surface, density * t),
-            None => {
-                let solid = self.solid.as_ref().ok_or_else(|| {
-                    format!("part \"{name}\": encloses no volume; give it a thin wall instead")
-                })?;
-                (solid, density)
-            }
-        };
-        let placed = unit.transformed(&self.placement());
-        let sign = if self.entry.void { -1.0 } else { 1.0 };
-        Ok(PartMass {
-            mass: sign * placed.mass * scale,
-            center_of_mass: placed.center_of_mass,
-            inertia_com: placed.inertia_com * (sign * scale),
-        })
+        if self.density().is_none() {
+            return Err(LabError::NoDensity { part: name.clone() });
+        }
+        let fill = self.fill();
+        if self.integrated.volume().is_none() && !matches!(fill, Fill::ThinWall { .. }) {
+            return Err(LabError::NoVolume { part: name.clone() });
+        }
+        self.integrated
+            .properties(name, fill, &self.placement())
+            .map(|p| p.part_mass())
+            .map_err(|source| LabError::Part {
+                part: name.clone(),
+                source,
+            })
     }
 
     /// Its surface moved into place (body coordinates).
-    pub fn placed_mesh(&self) -> Result<PolyMesh, String> {
+    pub fn placed_mesh(&self) -> Result<PolyMesh, LabError> {
         let p = self.placement();
         self.mesh
             .map_positions(|q| p * q)
-            .map_err(|e| format!("part \"{}\": {e}", self.entry.name))
+            .map_err(|source| LabError::Part {
+                part: self.entry.name.clone(),
+                source,
+            })
     }
 }
 
 /// The parts of a body file, integrated (in metres: placements and meshes converted).
-pub fn from_body_file(path: &Path) -> Result<Vec<PartModel>, String> {
-    let body = BodyFile::read(path).map_err(|e| e.to_string())?;
-    let parts = body.load().map_err(|e| e.to_string())?;
-    let unit = body.unit();
-    let folder = path.parent().unwrap_or(Path::new(""));
-    body.parts
+pub fn from_body_file(path: &Path) -> Result<Vec<PartModel>, LabError> {
+    let body = BodyFile::read(path)?;
+    let parts = body.load()?;
+    // Its file is not in metres: a body file written from the lab (in metres) must carry the
+    // part's mesh in metres too.
+    let piece = body.unit() != 1.0;
+    body.in_metres()
+        .parts
         .into_iter()
         .zip(parts)
-        .map(|(mut entry, part)| {
-            // The lab works in metres, with absolute mesh paths (a saved file makes them relative
-            // again).
-            entry.translation = entry.translation.map(|c| c * unit);
-            entry.thin_wall = entry.thin_wall.map(|t| t * unit);
-            entry.mesh = folder.join(&entry.mesh);
+        .map(|(entry, part)| {
             let mut model = PartModel::new(entry, part.mesh)?;
-            // Its file is not in metres: a body file written from the lab (in metres) must
-            // carry the part's mesh in metres too.
-            model.piece = unit != 1.0;
+            model.piece = piece;
             Ok(model)
         })
         .collect()
@@ -142,7 +154,7 @@ pub fn to_body_file(parts: &[PartModel], path: &Path) -> BodyFile {
     let folder = path.parent().unwrap_or(Path::new(""));
     BodyFile {
         path: path.to_path_buf(),
-        units: "m".to_owned(),
+        units: LengthUnit::M,
         parts: parts
             .iter()
             .map(|p| PartEntry {
@@ -191,8 +203,8 @@ pub fn entry_for(name: &str, mesh: &Path, object: Option<&str>) -> PartEntry {
 }
 
 /// A mesh file as one new part (all of it), named after the file, of water's density.
-pub fn from_mesh_file(path: &Path) -> Result<Vec<PartModel>, String> {
-    let file = massprops::load_mesh(path).map_err(|e| e.to_string())?;
+pub fn from_mesh_file(path: &Path) -> Result<Vec<PartModel>, LabError> {
+    let file = massprops::load_mesh(path)?;
     let name = path
         .file_stem()
         .map_or_else(|| "part".to_owned(), |s| s.to_string_lossy().into_owned());
@@ -202,26 +214,29 @@ pub fn from_mesh_file(path: &Path) -> Result<Vec<PartModel>, String> {
     )?])
 }
 
-/// A single-mesh body's parts, each of `density`: its file's named parts, or its connected
-/// shells (a shell wound inward in a mesh that is not inverted as a whole is a cavity: a void);
-/// or, when `whole`, the whole mesh as one part.
-pub fn from_single(body: &LoadedBody, density: f64, whole: bool) -> Result<Vec<PartModel>, String> {
-    let Some((path, file)) = &body.file else {
-        return Err(format!("{} is already made of parts", body.name));
-    };
+/// A single-mesh body's parts, each of `density`: the named parts of `file` (read from `path`,
+/// shown as `body`), or its connected shells (a shell wound inward in a mesh that is not
+/// inverted as a whole is a cavity: a void); or, when `whole`, the whole mesh as one part.
+pub fn from_single(
+    body: &str,
+    path: &Path,
+    file: &MeshFile,
+    density: f64,
+    whole: bool,
+) -> Result<Vec<PartModel>, LabError> {
     let solid = |name: &str, object: Option<&str>, mesh: PolyMesh| {
         let mut entry = entry_for(name, path, object);
         entry.material = MaterialEntry::Density(density);
         PartModel::new(entry, mesh)
     };
     if whole {
-        return Ok(vec![solid(&body.name, None, file.mesh.clone())?]);
+        return Ok(vec![solid(body, None, file.mesh.clone())?]);
     }
     let named = !file.face_parts.is_empty();
     let pieces = file.parts();
     let mut parts = Vec::with_capacity(pieces.len());
     for (name, faces) in &pieces {
-        let mesh = file.mesh.subset(faces).map_err(|e| e.to_string())?;
+        let mesh = file.mesh.subset(faces)?;
         let mut part = solid(name, named.then_some(name.as_str()), mesh)?;
         part.piece = !named;
         parts.push(part);
@@ -231,8 +246,12 @@ pub fn from_single(body: &LoadedBody, density: f64, whole: bool) -> Result<Vec<P
         let signed: Vec<f64> = parts
             .iter()
             .map(|p| {
-                let volume = p.solid.as_ref().map_or(0.0, |s| s.mass);
-                if p.wound_inward { -volume } else { volume }
+                let volume = p.integrated.volume().unwrap_or(0.0);
+                if p.integrated.wound_inward() {
+                    -volume
+                } else {
+                    volume
+                }
             })
             .collect();
         if signed.iter().sum::<f64>() > 0.0 {
@@ -246,7 +265,7 @@ pub fn from_single(body: &LoadedBody, density: f64, whole: bool) -> Result<Vec<P
 
 /// Writes `parts` as a body file at `path`; a part whose mesh file is not on disk (a sample's, a
 /// connected shell's) gets its own OBJ beside the body file. Returns what was written, in words.
-pub fn save(parts: &[PartModel], path: &Path) -> Result<String, String> {
+pub fn save(parts: &[PartModel], path: &Path) -> Result<String, LabError> {
     let folder = path.parent().unwrap_or(Path::new(""));
     let stem = path
         .file_stem()
@@ -269,15 +288,22 @@ pub fn save(parts: &[PartModel], path: &Path) -> Result<String, String> {
             .find(|n| !written.contains(n) && !referenced.contains(&folder.join(n)))
             .unwrap_or_default();
         let target = folder.join(&file_name);
-        std::fs::write(&target, obj_text(&part.entry.name, &part.mesh))
-            .map_err(|e| format!("cannot write {}: {e}", target.display()))?;
+        std::fs::write(&target, obj_text(&part.entry.name, &part.mesh)).map_err(|e| {
+            LabError::Write {
+                path: target.clone(),
+                message: e.to_string(),
+            }
+        })?;
         part.entry.mesh = target;
         part.entry.object = None;
         part.piece = false;
         written.push(file_name);
     }
     let text = to_body_file(&saved, path).to_toml();
-    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    std::fs::write(path, text).map_err(|e| LabError::Write {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
     Ok(if written.is_empty() {
         format!("{} parts", parts.len())
     } else {

@@ -129,6 +129,37 @@ impl Bvh {
         Self { nodes, order }
     }
 
+    /// Recomputes every box for moved vertices (the same triangles: a part placed elsewhere),
+    /// keeping the tree. Children always come after their parent, so one backward pass sees
+    /// both children of a node before the node. Picking stays exact; only its speed depends on
+    /// how well the old split suits the new positions.
+    pub fn refit(&mut self, mesh: &TriMesh) {
+        for k in (0..self.nodes.len()).rev() {
+            let node = self.nodes[k];
+            let (lo, hi) = if node.count > 0 {
+                let range = node.start as usize..(node.start + node.count) as usize;
+                let mut lo = Vector3::repeat(f64::INFINITY);
+                let mut hi = Vector3::repeat(f64::NEG_INFINITY);
+                for &i in &self.order[range] {
+                    for v in mesh.triangles[i as usize] {
+                        let p = mesh.positions[v as usize].coords;
+                        lo = lo.inf(&p);
+                        hi = hi.sup(&p);
+                    }
+                }
+                (lo, hi)
+            } else {
+                let (left, right) = (
+                    &self.nodes[node.start as usize - 1],
+                    &self.nodes[node.start as usize],
+                );
+                (left.lo.inf(&right.lo), left.hi.sup(&right.hi))
+            };
+            self.nodes[k].lo = lo;
+            self.nodes[k].hi = hi;
+        }
+    }
+
     /// The nearest triangle the ray hits (front or back face), if any.
     pub fn pick(&self, mesh: &TriMesh, ray: &Ray) -> Option<Hit> {
         self.pick_where(mesh, ray, &|_| true)

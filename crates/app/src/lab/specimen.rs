@@ -5,15 +5,18 @@
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use massprops::{Comparison, MassProperties};
+use massprops::MassProperties;
+
+use massprops::properties::Comparison;
 use nalgebra::{Point3, UnitQuaternion, Vector3};
 use rbcore::{
     Advance, Body, DriftTracker, Integrator, Polhode, RotationModel, SimError, Simulation,
     SoftString,
 };
 
+use super::body::LoadedBody;
+use super::error::LabError;
 use super::history::History;
-use super::loader::LoadedBody;
 use super::picking::{Hit, Ray};
 use super::placement::Placement;
 use super::settings::{AppSettings, InertiaSource, MassSpec};
@@ -127,24 +130,26 @@ impl Specimen {
         body: Arc<LoadedBody>,
         settings: &AppSettings,
         axis: usize,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, LabError> {
         let settings = &variant.apply(settings);
         let props = scaled_properties(&body, settings)?;
         let used = &props[source_index(settings.body.source)];
         let mut b =
             Body::from_principal(used.mass, used.principal.moments, used.principal.rotation)
-                .map_err(|e| format!("{}: {e}", body.name))?;
+                .map_err(|e| LabError::from(e).named(&body.name))?;
         // Orientation maps principal → world: this puts the mesh axes on the world axes.
         b.set_orientation(UnitQuaternion::from_rotation_matrix(
             &used.principal.rotation,
-        ))
-        .map_err(|e| e.to_string())?;
+        ))?;
         let rate = settings.body.spin_rate;
         let mut omega = Vector3::repeat(PERTURBATION * rate);
         omega[axis.min(2)] = rate;
         b.set_omega_principal(omega)
-            .map_err(|e| format!("spin rate: {e}"))?;
-        let sim = Simulation::new(b, settings.physics.to_sim()).map_err(|e| e.to_string())?;
+            .map_err(|source| LabError::Body {
+                what: "spin rate",
+                source,
+            })?;
+        let sim = Simulation::new(b, settings.physics.to_sim())?;
         let d0 = sim.diagnostics();
         let mut history = History::new(capacity(settings));
         history.push(&d0);
@@ -169,7 +174,7 @@ impl Specimen {
     ///
     /// # Errors
     /// The settings are invalid; nothing has changed then.
-    pub fn set_settings(&mut self, old: &AppSettings, new: &AppSettings) -> Result<(), String> {
+    pub fn set_settings(&mut self, old: &AppSettings, new: &AppSettings) -> Result<(), LabError> {
         let (old, new) = (&self.variant.apply(old), &self.variant.apply(new));
         let props = scaled_properties(&self.body, new)?;
         self.reshape(props, new, old.body != new.body)?;
@@ -189,7 +194,7 @@ impl Specimen {
         &mut self,
         body: Arc<LoadedBody>,
         settings: &AppSettings,
-    ) -> Result<(), String> {
+    ) -> Result<(), LabError> {
         let settings = &self.variant.apply(settings);
         let props = scaled_properties(&body, settings)?;
         self.reshape(props, settings, true)?;
@@ -203,11 +208,11 @@ impl Specimen {
         props: [MassProperties; 3],
         new: &AppSettings,
         changed: bool,
-    ) -> Result<(), String> {
+    ) -> Result<(), LabError> {
         let used = &props[source_index(new.body.source)];
         // Checked before anything changes, so a rejected value leaves the specimen as it was.
         Body::from_principal(used.mass, used.principal.moments, used.principal.rotation)
-            .map_err(|e| format!("mass properties rejected: {e}"))?;
+            .map_err(rejected)?;
         // The body frame's origin is the used centre of mass. A new source, or a part changed,
         // moves it within the mesh by `shift`: the pose moves with it so the mesh stays where it
         // is on screen. A new size keeps the centre of mass in place and the body grows about it.
@@ -228,20 +233,23 @@ impl Specimen {
                     i.string_damping,
                     used.mass * i.string_max_accel,
                 )
-                .map_err(|e| format!("string: {e}"))?;
+                .map_err(string_refused)?;
                 Some(moved)
             }
             None => None,
         };
         self.sim
             .set_settings(new.physics.to_sim())
-            .map_err(|e| format!("setting rejected: {e}"))?;
+            .map_err(|source| LabError::Simulation {
+                what: "setting rejected",
+                source,
+            })?;
         if changed {
             let b = self.sim.body_mut();
             let position = b.position() + b.body_orientation() * shift;
             b.set_mass_properties(used.mass, used.principal.moments, used.principal.rotation)
-                .map_err(|e| format!("mass properties rejected: {e}"))?;
-            b.set_position(position).map_err(|e| e.to_string())?;
+                .map_err(rejected)?;
+            b.set_position(position)?;
             self.disturbed();
         }
         if moved_string.is_some() {
@@ -259,7 +267,7 @@ impl Specimen {
     /// [`Specimen::dropped`].
     ///
     /// # Errors
-    /// The simulation diverged; it is paused and the steps before stay recorded.
+    /// The simulation diverged (the lab pauses); the steps before stay recorded.
     pub fn advance(&mut self, frame_dt: f64) -> Result<Advance, SimError> {
         let (history, drift) = (&mut self.history, &mut self.drift);
         let result = self
@@ -270,27 +278,19 @@ impl Specimen {
                 drift.observe(&d);
             })
             .inspect(|a| self.dropped += a.dropped);
-        if result.is_err() {
-            self.sim.pause();
-        }
         result
     }
 
     /// One fixed step (recorded).
     ///
     /// # Errors
-    /// The simulation diverged; it is paused.
+    /// The simulation diverged (the lab pauses).
     pub fn step(&mut self) -> Result<(), SimError> {
-        let result = self.sim.step();
-        match &result {
-            Ok(()) => {
-                let d = self.sim.diagnostics();
-                self.history.push(&d);
-                self.drift.observe(&d);
-            }
-            Err(_) => self.sim.pause(),
-        }
-        result
+        self.sim.step()?;
+        let d = self.sim.diagnostics();
+        self.history.push(&d);
+        self.drift.observe(&d);
+        Ok(())
     }
 
     /// Applies the impulse `magnitude · direction/|direction|` at the world point `point`.
@@ -303,16 +303,17 @@ impl Specimen {
         direction: Vector3<f64>,
         magnitude: f64,
         now: Instant,
-    ) -> Result<(), String> {
+    ) -> Result<(), LabError> {
         let n = direction.norm();
         if !(n.is_finite() && n > 0.0) {
-            return Err("poke: the view ray has no direction".to_owned());
+            return Err(LabError::NoPokeDirection);
         }
         let j = direction * (magnitude / n);
         let r = point - self.sim.body().position();
-        self.sim
-            .poke(&point, &j)
-            .map_err(|e| format!("poke: {e}"))?;
+        self.sim.poke(&point, &j).map_err(|source| LabError::Body {
+            what: "poke",
+            source,
+        })?;
         self.poke = Some(PokeFlash {
             point,
             impulse: j,
@@ -327,7 +328,7 @@ impl Specimen {
     ///
     /// # Errors
     /// The string's settings are invalid.
-    pub fn grab(&mut self, point: Point3<f64>, settings: &AppSettings) -> Result<(), String> {
+    pub fn grab(&mut self, point: Point3<f64>, settings: &AppSettings) -> Result<(), LabError> {
         let i = &settings.interaction;
         let attachment = self.sim.body().point_to_body(&point);
         let string = SoftString::new(
@@ -337,7 +338,7 @@ impl Specimen {
             i.string_damping,
             self.string_max_force(settings),
         )
-        .map_err(|e| format!("string: {e}"))?;
+        .map_err(string_refused)?;
         self.sim.set_string(Some(string));
         self.disturbed();
         Ok(())
@@ -347,9 +348,9 @@ impl Specimen {
     ///
     /// # Errors
     /// The target is not finite.
-    pub fn drag(&mut self, target: Point3<f64>) -> Result<(), String> {
+    pub fn drag(&mut self, target: Point3<f64>) -> Result<(), LabError> {
         if let Some(s) = self.sim.string_mut() {
-            s.set_target(target).map_err(|e| format!("string: {e}"))?;
+            s.set_target(target).map_err(string_refused)?;
         }
         Ok(())
     }
@@ -391,14 +392,6 @@ impl Specimen {
     /// The simulation (read-only).
     pub fn sim(&self) -> &Simulation {
         &self.sim
-    }
-    /// Pauses the simulation.
-    pub fn pause(&mut self) {
-        self.sim.pause();
-    }
-    /// Resumes the simulation.
-    pub fn resume(&mut self) {
-        self.sim.resume();
     }
     /// The loaded body.
     pub fn body(&self) -> &LoadedBody {
@@ -531,7 +524,7 @@ fn source_index(source: InertiaSource) -> usize {
 fn scaled_properties(
     body: &LoadedBody,
     settings: &AppSettings,
-) -> Result<[MassProperties; 3], String> {
+) -> Result<[MassProperties; 3], LabError> {
     let s = settings.body.scale;
     let a = &body.analysis;
     // A body of parts takes its mass from their materials; a single mesh from the settings.
@@ -539,20 +532,42 @@ fn scaled_properties(
     let exact = whole
         .unwrap_or(&a.properties)
         .scaled_at_fixed_density(s)
-        .map_err(|e| format!("size: {e}"))?;
+        .map_err(|source| LabError::Rescale {
+            what: "size",
+            source,
+        })?;
     let mass = match (whole, settings.body.mass) {
         (Some(_), _) => exact.mass,
         (None, MassSpec::Density(d)) => exact.mass * d,
         (None, MassSpec::Mass(m)) => m,
     };
-    let fit = |p: &MassProperties| -> Result<MassProperties, String> {
+    let fit = |p: &MassProperties| -> Result<MassProperties, LabError> {
         p.scaled_at_fixed_density(s)
             .and_then(|p| p.with_mass(mass))
-            .map_err(|e| format!("mass: {e}"))
+            .map_err(|source| LabError::Rescale {
+                what: "mass",
+                source,
+            })
     };
     Ok([
         fit(whole.unwrap_or(&a.properties))?,
         fit(&a.bounding_box)?,
         fit(&a.point_masses)?,
     ])
+}
+
+/// rbcore's refusal of new mass properties.
+fn rejected(source: rbcore::BodyError) -> LabError {
+    LabError::Body {
+        what: "mass properties rejected",
+        source,
+    }
+}
+
+/// rbcore's refusal of a string.
+fn string_refused(source: rbcore::BodyError) -> LabError {
+    LabError::Body {
+        what: "string",
+        source,
+    }
 }

@@ -299,7 +299,7 @@ mod tests {
         let unit = Vector3::new(1.0, 1.0, 1.0);
         let mut b = shapes::cuboid(unit, Point3::origin());
         b.append(&shapes::cuboid(unit, Point3::new(1.0, 1.0, 0.0)));
-        let (positions, remap) = crate::weld_exact(&b.positions);
+        let (positions, remap) = crate::mesh::weld_exact(&b.positions);
         let faces: Vec<Vec<usize>> = b
             .faces
             .iter()

@@ -23,28 +23,22 @@ use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
 use serde::Deserialize;
 use toml::Spanned;
 
-use crate::{Fill, MeshError, Part, load_mesh, material, material_names};
+use crate::{
+    Fill, LengthUnit, MaterialEntry, MeshError, Part, load_mesh, material,
+    materials::material_names,
+};
 
 /// The body-file format this program reads and writes (the optional `version` key; a file
 /// without one is read as this version). Bumped on any incompatible change.
 pub const BODY_FILE_VERSION: i64 = 1;
-
-/// Length units a body file may use, with their size in metres.
-pub const LENGTH_UNITS: [(&str, f64); 5] = [
-    ("m", 1.0),
-    ("cm", 0.01),
-    ("mm", 0.001),
-    ("in", 0.0254),
-    ("ft", 0.3048),
-];
 
 /// A body file as written: the parts and their settings, not yet loaded.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyFile {
     /// The file it was read from (meshes are relative to its folder).
     pub path: PathBuf,
-    /// The length unit's name (one of [`LENGTH_UNITS`]).
-    pub units: String,
+    /// The length unit of its lengths and of its meshes' coordinates.
+    pub units: LengthUnit,
     /// The parts, in order.
     pub parts: Vec<PartEntry>,
 }
@@ -70,17 +64,6 @@ pub struct PartEntry {
     pub thin_wall: Option<f64>,
     /// The line of its `[[part]]` header, for messages.
     pub line: usize,
-}
-
-/// How a part's mass is given.
-#[derive(Debug, Clone, PartialEq)]
-pub enum MaterialEntry {
-    /// `density = ρ` (kg/m³).
-    Density(f64),
-    /// `material = "steel"`: a preset of [`MATERIALS`](crate::MATERIALS).
-    Preset(String),
-    /// `mass = m` (kg).
-    Mass(f64),
 }
 
 #[derive(Deserialize)]
@@ -123,6 +106,13 @@ pub fn is_body_file(path: &Path) -> bool {
 }
 
 impl PartEntry {
+    /// Its fill for a file in `unit` metres (the thin wall converted to metres), by the one rule
+    /// [`MaterialEntry::fill`].
+    pub fn fill(&self, unit: f64) -> Fill {
+        self.material
+            .fill(self.void, self.thin_wall.map(|t| t * unit))
+    }
+
     /// Mesh coordinates → body coordinates in metres for a file in `unit` metres: the rotation
     /// (about the mesh origin), then the translation.
     pub fn placement(&self, unit: f64) -> Isometry3<f64> {
@@ -145,7 +135,7 @@ impl BodyFile {
     pub fn read(path: &Path) -> Result<Self, MeshError> {
         let text = std::fs::read_to_string(path).map_err(|source| MeshError::Io {
             path: path.to_path_buf(),
-            source,
+            source: source.into(),
         })?;
         Self::parse(&text, path)
     }
@@ -175,22 +165,11 @@ impl BodyFile {
             ));
         }
         let units = match &raw.units {
-            None => "m".to_owned(),
-            Some(u) => {
-                let name = u.get_ref().to_ascii_lowercase();
-                if !LENGTH_UNITS.iter().any(|(n, _)| *n == name) {
-                    let names: Vec<&str> = LENGTH_UNITS.iter().map(|(n, _)| *n).collect();
-                    return Err(error(
-                        Some(u.span().start),
-                        format!(
-                            "units: unknown unit {:?} (use one of {})",
-                            u.get_ref(),
-                            names.join(", ")
-                        ),
-                    ));
-                }
-                name
-            }
+            None => LengthUnit::M,
+            Some(u) => u
+                .get_ref()
+                .parse::<LengthUnit>()
+                .map_err(|e| error(Some(u.span().start), format!("units: {e}")))?,
         };
         if raw.part.is_empty() {
             return Err(error(None, "the body has no [[part]]".to_owned()));
@@ -320,10 +299,29 @@ impl BodyFile {
 
     /// The size of the file's length unit in metres.
     pub fn unit(&self) -> f64 {
-        LENGTH_UNITS
-            .iter()
-            .find(|(n, _)| *n == self.units)
-            .map_or(1.0, |u| u.1)
+        self.units.metres()
+    }
+
+    /// The same body with every length in metres (translations, thin walls; the meshes are
+    /// converted by [`BodyFile::load`]) and each mesh path joined to the body file's folder:
+    /// the settings of the parts [`BodyFile::load`] gives.
+    pub fn in_metres(&self) -> BodyFile {
+        let unit = self.unit();
+        let folder = self.path.parent().unwrap_or(Path::new(""));
+        BodyFile {
+            path: self.path.clone(),
+            units: LengthUnit::M,
+            parts: self
+                .parts
+                .iter()
+                .map(|p| PartEntry {
+                    mesh: folder.join(&p.mesh),
+                    translation: p.translation.map(|c| c * unit),
+                    thin_wall: p.thin_wall.map(|t| t * unit),
+                    ..p.clone()
+                })
+                .collect(),
+        }
     }
 
     /// Loads every part's mesh (each file once) and builds the parts, in metres.
@@ -381,24 +379,7 @@ impl BodyFile {
                 }
             };
             let mesh = mesh.map_positions(|p| p * unit)?;
-            let density = |m: &MaterialEntry| match m {
-                MaterialEntry::Density(d) => *d,
-                MaterialEntry::Preset(name) => material(name).map_or(f64::NAN, |m| m.density),
-                MaterialEntry::Mass(_) => f64::NAN,
-            };
-            let fill = match (&entry.material, entry.void, entry.thin_wall) {
-                (MaterialEntry::Mass(m), ..) => Fill::Mass { mass: *m },
-                (m, true, _) => Fill::Void {
-                    density: density(m),
-                },
-                (m, false, Some(t)) => Fill::ThinWall {
-                    density: density(m),
-                    thickness: t * unit,
-                },
-                (m, false, None) => Fill::Solid {
-                    density: density(m),
-                },
-            };
+            let fill = entry.fill(unit);
             parts.push(Part {
                 name: entry.name.clone(),
                 mesh,
@@ -413,7 +394,7 @@ impl BodyFile {
     pub fn to_toml(&self) -> String {
         let mut s = format!(
             "version = {BODY_FILE_VERSION}\nunits = \"{}\"\n",
-            self.units
+            self.units.symbol()
         );
         for p in &self.parts {
             s.push_str("\n[[part]]\n");

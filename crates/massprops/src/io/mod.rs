@@ -8,7 +8,7 @@ mod stl;
 
 use std::path::Path;
 
-pub use body::{BODY_FILE_VERSION, BodyFile, LENGTH_UNITS, MaterialEntry, PartEntry, is_body_file};
+pub use body::{BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
 pub use obj::parse_obj;
 pub use stl::parse_stl;
 
@@ -48,7 +48,7 @@ impl MeshFile {
     /// solids), or else the connected shells, named "shell 1", "shell 2", ….
     pub fn parts(&self) -> Vec<(String, Vec<u32>)> {
         if self.face_parts.is_empty() {
-            return crate::shell_faces(&self.mesh)
+            return crate::defects::shell_faces(&self.mesh)
                 .into_iter()
                 .enumerate()
                 .map(|(i, faces)| (format!("shell {}", i + 1), faces))
@@ -76,7 +76,7 @@ impl MeshFile {
 pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
     let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
         path: path.to_path_buf(),
-        source,
+        source: source.into(),
     })?;
     parse_mesh(&bytes, path)
 }

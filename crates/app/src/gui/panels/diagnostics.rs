@@ -2,7 +2,7 @@
 //! with its effect on the mass; clicking a warning highlights its faces in the 3D view.
 
 use egui::{Color32, RichText};
-use massprops::Orientation;
+use massprops::defects::Orientation;
 
 use super::PanelState;
 use crate::gui::warnings;
@@ -62,7 +62,7 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
 
 /// "2 shells: 1 solid, 1 cavity" and the like.
 fn shells_line(a: &massprops::Analysis) -> String {
-    let closed: Vec<&massprops::Shell> = a.shells.iter().filter(|s| s.closed).collect();
+    let closed: Vec<&massprops::defects::Shell> = a.shells.iter().filter(|s| s.closed).collect();
     let cavities = closed
         .iter()
         .filter(|s| s.orientation == Orientation::Inward && s.depth.is_some_and(|d| d % 2 == 1))

@@ -10,6 +10,7 @@ pub mod diagnostics;
 pub mod help;
 pub mod parts;
 pub mod plots;
+pub mod polhodes;
 pub mod side;
 pub mod sphere;
 pub mod toolbar;

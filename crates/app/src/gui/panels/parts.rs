@@ -6,7 +6,8 @@
 use std::path::PathBuf;
 
 use egui::{Color32, RichText};
-use massprops::{MATERIALS, MaterialEntry, PartEntry};
+use massprops::materials::MATERIALS;
+use massprops::{MaterialEntry, PartEntry};
 
 use super::{PanelState, number};
 use crate::gui::dialogs::DialogPurpose;
@@ -244,7 +245,7 @@ fn editor(
     if ui.button("Remove part").clicked() {
         commands.push(Command::RemovePart(index));
     }
-    for w in &part.warnings {
+    for w in part.warnings() {
         ui.small(
             RichText::new(format!(
                 "{}: {}",

@@ -8,7 +8,7 @@ use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
 use super::{PanelState, number};
 use crate::gui::dialogs::DialogPurpose;
-use crate::lab::loader::{SAMPLE_BODIES, SAMPLES};
+use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassSpec};
 use crate::lab::{Command, Lab};
 

@@ -2,16 +2,16 @@
 //! With no torque it stays on the sphere |L| = const and on its energy ellipsoid, so it runs along
 //! its own polhode, drawn in L's colour among a family of others; the separatrix through axis 2
 //! (orange) divides those circling the stable axes 1 and 3. The current L is the white dot with a fading trail; drag to
-//! orbit. The geometry is `lab::polhodes`; this file only projects and paints it.
+//! orbit. The geometry is `polhodes.rs`; this file only projects and paints it.
 
 use egui::{Color32, Pos2, Sense, Stroke};
 use nalgebra::{UnitQuaternion, Vector3};
 use rbcore::{Integrator, RotationModel, Stability};
 
 use super::PanelState;
+use super::polhodes::{self, Curve, CurveKind, polhodes};
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::Lab;
-use crate::lab::polhodes::{self, Curve, CurveKind, polhodes};
 
 const POLHODE_COLOR: Color32 = Color32::from_rgb(150, 150, 160);
 const SEPARATRIX_COLOR: Color32 = Color32::from_rgb(255, 170, 60);

@@ -6,7 +6,7 @@
 use nalgebra::{Matrix4, Point2, Point3, Translation3, Vector2};
 use three_d::{CpuMesh, Indices, Mat4, Positions, Srgba, Vec3};
 
-use crate::lab::camera::OrbitCamera;
+use super::camera::OrbitCamera;
 use crate::lab::geometry::TriMesh;
 
 /// f64 point → three-d vector.

@@ -1,6 +1,7 @@
 //! The 3D view: camera control, the poke and string gestures (recorded as commands), the three-d
 //! paint callback for the shaded body, and the overlay drawn with egui on top.
 
+pub mod camera;
 pub mod convert;
 pub mod overlay;
 pub mod scene;
@@ -11,7 +12,7 @@ use std::time::Instant;
 use egui::{Color32, PointerButton, Sense, Stroke};
 use nalgebra::{Matrix4, Point3, Vector3};
 
-use crate::lab::camera::OrbitCamera;
+use self::camera::OrbitCamera;
 use crate::lab::settings::GhostLayout;
 use crate::lab::{Command, Lab, PRIMARY};
 use convert::FrameParams;
@@ -353,7 +354,7 @@ impl View3d {
 
 /// For a body made of parts, each triangle's colour (its part's), or `None` for a hidden part;
 /// empty for a single mesh (drawn in the body colour).
-fn triangle_colors(body: &crate::lab::loader::LoadedBody) -> Vec<Option<[u8; 3]>> {
+fn triangle_colors(body: &crate::lab::body::LoadedBody) -> Vec<Option<[u8; 3]>> {
     let Some(c) = &body.composition else {
         return Vec::new();
     };

@@ -4,7 +4,7 @@
 
 use nalgebra::{Isometry3, Matrix4, Perspective3, Point2, Point3, Vector2, Vector3};
 
-use super::picking::Ray;
+use crate::lab::picking::Ray;
 
 /// Radians of orbit per pixel dragged.
 const ORBIT_RATE: f64 = 0.008;

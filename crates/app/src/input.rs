@@ -1,0 +1,292 @@
+//! One input path: a file (an OBJ or STL mesh, or a body file of parts) and what the user said
+//! about its mass and its defects, turned into a body. `props`, `export` and `simulate` and the
+//! app's loader all come through [`resolve`], so the same file with the same flags is the same
+//! body everywhere, with the same warnings.
+//!
+//! A mesh file is one body unless its parts are given their own materials ([`Request::parts`]) or
+//! a report per part is asked for ([`Request::by_part`]); a body file is always parts, with the
+//! materials, placements and units it gives (in metres once read).
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use massprops::composite::PlacedPart;
+use massprops::{
+    Analysis, BodyFile, Composite, Fill, IntegratedPart, LengthUnit, MassSpec, MaterialEntry,
+    MeshError, MeshFile, Method, PartEntry, PolyMesh, Repairs,
+};
+use nalgebra::Isometry3;
+
+/// How a body is to be made of a file.
+#[derive(Debug, Clone)]
+pub struct Request {
+    /// How the mass is distributed (a body of parts: each part's fill decides).
+    pub method: Method,
+    /// A density (per mesh unit cubed, per unit squared for the shell method) or a mass.
+    pub spec: MassSpec,
+    /// Every coordinate multiplied by this before computing (1 for none).
+    pub scale: f64,
+    /// How cracks and holes are handled.
+    pub repairs: Repairs,
+    /// Materials given to single parts of a mesh file, by part name.
+    pub parts: Vec<PartMaterial>,
+    /// A mesh file reported part by part even without materials of their own.
+    pub by_part: bool,
+    /// kg/m³ → the mesh's density unit (1 for metres, `unit³` for a mesh in another unit), for
+    /// the part materials.
+    pub density_factor: f64,
+}
+
+impl Default for Request {
+    /// The solid at density 1, defects handled as massprops does by default.
+    fn default() -> Self {
+        Self {
+            method: Method::Volume,
+            spec: MassSpec::Density(1.0),
+            scale: 1.0,
+            repairs: Repairs::default(),
+            parts: Vec::new(),
+            by_part: false,
+            density_factor: 1.0,
+        }
+    }
+}
+
+/// A material given to one named part of a mesh file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PartMaterial {
+    /// Where it was given (`--density-of`, …), for messages.
+    pub source: &'static str,
+    /// The part's name.
+    pub name: String,
+    /// Its material (a density in kg/m³, a preset, or a mass in kg).
+    pub material: MaterialEntry,
+}
+
+/// A file made into a body.
+#[derive(Debug, Clone)]
+pub enum Resolved {
+    /// One mesh, as read (and scaled), with its analysis.
+    Mesh {
+        /// The file's mesh, face lines and reader warnings.
+        file: MeshFile,
+        /// Its mass properties, approximations, diagnostics and warnings.
+        analysis: Analysis,
+    },
+    /// A body made of parts.
+    Parts(Parts),
+}
+
+/// A body made of parts, as resolved: each part integrated once, and the sums.
+#[derive(Debug, Clone)]
+pub struct Parts {
+    /// The body file's unit, or `None` for a mesh file's parts (in its units times the scale).
+    pub body_file_units: Option<LengthUnit>,
+    /// Each part: its settings (lengths in metres for a body file), mesh and integrals.
+    pub parts: Vec<ResolvedPart>,
+    /// The whole and each part's contribution.
+    pub composite: Composite,
+}
+
+/// One part of a [`Parts`].
+#[derive(Debug, Clone)]
+pub struct ResolvedPart {
+    /// Its settings as a body file writes them (a mesh file's part: its file and object).
+    pub entry: PartEntry,
+    /// Its surface, in its own coordinates.
+    pub mesh: Arc<PolyMesh>,
+    /// Its solid and surface at unit density.
+    pub integrated: Arc<IntegratedPart>,
+}
+
+/// Why a file gives no body.
+#[derive(Debug, Clone, thiserror::Error)]
+pub enum InputError {
+    /// The file (or a part's mesh) cannot be read or gives no body.
+    #[error("{}: {source}", path.display())]
+    Mesh {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        #[source]
+        source: MeshError,
+    },
+    /// The file cannot be read or parsed at all (the message names it already).
+    #[error(transparent)]
+    Read(MeshError),
+    /// A part material names a part the file does not have.
+    #[error("{flag}: the file has no part {name:?} (its parts: {})", known.join(", "))]
+    UnknownPart {
+        /// Where it was given.
+        flag: &'static str,
+        /// The name given.
+        name: String,
+        /// The file's parts.
+        known: Vec<String>,
+    },
+    /// A body of parts needs each part's mass, not one for the whole.
+    #[error("with parts, give each part's mass with --mass-of NAME=M (--mass is the whole body's)")]
+    MassOfParts,
+}
+
+/// Where the file's bytes come from.
+#[derive(Debug, Clone, Copy)]
+pub enum Source<'a> {
+    /// Read the file.
+    Path(&'a Path),
+    /// Bytes already read from this path (the app reads with a progress bar).
+    Bytes(&'a [u8], &'a Path),
+}
+
+impl Source<'_> {
+    fn path(&self) -> &Path {
+        match self {
+            Source::Path(p) | Source::Bytes(_, p) => p,
+        }
+    }
+}
+
+/// Makes `source` into a body as `request` says.
+///
+/// # Errors
+/// The file cannot be read, parsed or integrated (named, with the reason), a part material names
+/// no part of the file, or a total mass is given for parts.
+pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputError> {
+    let path = source.path();
+    let at = |source: MeshError| InputError::Mesh {
+        path: path.to_path_buf(),
+        source,
+    };
+    if massprops::io::is_body_file(path) {
+        let body = match source {
+            Source::Path(p) => BodyFile::read(p),
+            Source::Bytes(bytes, p) => std::str::from_utf8(bytes)
+                .map_err(|e| MeshError::Malformed {
+                    path: p.to_path_buf(),
+                    line: None,
+                    message: format!("not UTF-8 text: {e}"),
+                })
+                .and_then(|text| BodyFile::parse(text, p)),
+        }
+        .map_err(InputError::Read)?;
+        return body_file_parts(&body, request).map(Resolved::Parts);
+    }
+    let mut file = match source {
+        Source::Path(p) => massprops::load_mesh(p),
+        Source::Bytes(bytes, p) => massprops::parse_mesh(bytes, p),
+    }
+    .map_err(InputError::Read)?;
+    if request.scale != 1.0 {
+        file.mesh = file.mesh.map_positions(|p| p * request.scale).map_err(at)?;
+    }
+    if !request.parts.is_empty() || request.by_part {
+        return mesh_file_parts(path, &file, request).map(Resolved::Parts);
+    }
+    let analysis = file
+        .analyze(request.method, request.spec, &request.repairs)
+        .map_err(at)?;
+    Ok(Resolved::Mesh { file, analysis })
+}
+
+/// A body file's parts, integrated and summed.
+fn body_file_parts(body: &BodyFile, request: &Request) -> Result<Parts, InputError> {
+    let at = |source: MeshError| InputError::Mesh {
+        path: body.path.clone(),
+        source,
+    };
+    let loaded = body.load().map_err(InputError::Read)?;
+    let entries = body.in_metres().parts;
+    let parts = entries
+        .into_iter()
+        .zip(loaded)
+        .map(|(entry, part)| (entry, part.mesh, part.fill, part.placement))
+        .collect();
+    let mut parts = integrate(parts, &request.repairs).map_err(at)?;
+    parts.body_file_units = Some(body.units);
+    Ok(parts)
+}
+
+/// A mesh file's parts (its objects, groups or solids, or its connected shells), each with the
+/// material `request` gives it or the request's density.
+fn mesh_file_parts(path: &Path, file: &MeshFile, request: &Request) -> Result<Parts, InputError> {
+    let MassSpec::Density(density) = request.spec else {
+        return Err(InputError::MassOfParts);
+    };
+    let found = file.parts();
+    let names: Vec<String> = found.iter().map(|(n, _)| n.clone()).collect();
+    let default = MaterialEntry::Density(density);
+    let mut materials: Vec<MaterialEntry> = vec![default; found.len()];
+    for given in &request.parts {
+        let Some(k) = names.iter().position(|n| *n == given.name) else {
+            return Err(InputError::UnknownPart {
+                flag: given.source,
+                name: given.name.clone(),
+                known: names,
+            });
+        };
+        // Densities in kg/m³ become the mesh's density unit; a mass stays in kg.
+        materials[k] = match &given.material {
+            MaterialEntry::Mass(m) => MaterialEntry::Mass(*m),
+            m => MaterialEntry::Density(m.density().unwrap_or(f64::NAN) * request.density_factor),
+        };
+    }
+    let named = !file.part_names.is_empty();
+    let mut parts = Vec::with_capacity(found.len());
+    for ((name, faces), material) in found.iter().zip(materials) {
+        let mesh = file.mesh.subset(faces).map_err(|e| InputError::Mesh {
+            path: path.to_path_buf(),
+            source: MeshError::InPart {
+                part: name.clone(),
+                source: Box::new(e),
+            },
+        })?;
+        let fill = material.fill(false, None);
+        let entry = PartEntry {
+            name: name.clone(),
+            mesh: path.to_path_buf(),
+            object: named.then(|| name.clone()),
+            material,
+            rotation: None,
+            translation: [0.0; 3],
+            void: false,
+            thin_wall: None,
+            line: 0,
+        };
+        parts.push((entry, mesh, fill, Isometry3::identity()));
+    }
+    integrate(parts, &request.repairs).map_err(|source| InputError::Mesh {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+/// Integrates each part once and sums them: `(settings, mesh, fill, placement)` each.
+fn integrate(
+    parts: Vec<(PartEntry, PolyMesh, Fill, Isometry3<f64>)>,
+    repairs: &Repairs,
+) -> Result<Parts, MeshError> {
+    let resolved: Vec<ResolvedPart> = parts
+        .iter()
+        .map(|(entry, mesh, ..)| ResolvedPart {
+            entry: entry.clone(),
+            integrated: Arc::new(IntegratedPart::new(mesh, repairs)),
+            mesh: Arc::new(PolyMesh::clone(mesh)),
+        })
+        .collect();
+    let placed: Vec<PlacedPart<'_>> = parts
+        .iter()
+        .zip(&resolved)
+        .map(|((entry, _, fill, placement), r)| PlacedPart {
+            name: &entry.name,
+            fill: *fill,
+            placement: *placement,
+            integrated: &r.integrated,
+        })
+        .collect();
+    let composite = massprops::composite::sum(&placed)?;
+    Ok(Parts {
+        body_file_units: None,
+        parts: resolved,
+        composite,
+    })
+}

@@ -1,0 +1,593 @@
+//! Scenarios of the whole model, driven by commands as the GUI records them: parts edited
+//! mid-run, comparisons, loads that fail, strings and pokes.
+
+use std::path::PathBuf;
+
+use nalgebra::{Point3, Vector3};
+
+use super::*;
+use settings::{InertiaSource, MassSpec};
+
+fn lab() -> Lab {
+    Lab::new(AppSettings::default()).expect("lab")
+}
+
+fn settings_with(lab: &Lab, change: impl FnOnce(&mut AppSettings)) -> Command {
+    let mut s = lab.settings().clone();
+    change(&mut s);
+    Command::Settings(Box::new(s))
+}
+
+/// Runs the lab `seconds` of simulated time in steps.
+fn run(lab: &mut Lab, steps: usize) {
+    for _ in 0..steps {
+        lab.apply(Command::Step);
+    }
+}
+
+#[test]
+fn editing_a_part_mid_run_keeps_angular_momentum_and_saving_reads_back() {
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let body = lab.primary().body();
+    let c = body.composition.as_ref().expect("parts");
+    assert_eq!(c.parts.len(), 2);
+    let steel = lab.primary().properties(InertiaSource::Exact).mass;
+    run(&mut lab, 50);
+    let l = lab.primary().sim().body().angular_momentum();
+    let p = lab.primary().sim().body().momentum();
+    // The head becomes aluminium: lighter, the centre of mass moves down the handle.
+    let mut head = lab
+        .primary()
+        .body()
+        .composition
+        .as_ref()
+        .expect("parts")
+        .parts[0]
+        .entry
+        .clone();
+    head.material = massprops::MaterialEntry::Preset("aluminium".to_owned());
+    lab.apply(Command::EditPart {
+        index: 0,
+        entry: Box::new(head),
+        visible: true,
+    });
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let b = lab.primary().sim().body();
+    assert!(
+        (b.angular_momentum() - l).norm() <= 1e-12 * l.norm(),
+        "L kept"
+    );
+    assert!(
+        (b.momentum() - p).norm() <= 1e-12 * (1.0 + p.norm()),
+        "p kept"
+    );
+    let aluminium = lab.primary().properties(InertiaSource::Exact).mass;
+    let head_volume = 0.12 * 0.03 * 0.03;
+    assert!(
+        ((steel - aluminium) - (7850.0 - 2700.0) * head_volume).abs() < 1e-12,
+        "{steel} - {aluminium}"
+    );
+    run(&mut lab, 10);
+
+    // Saved and opened again: the same body.
+    let dir = std::env::temp_dir().join(format!("inertia-lab-parts-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("hammer.toml");
+    lab.apply(Command::SaveBody(path.clone()));
+    assert!(
+        lab.message().is_some_and(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let again = parts::from_body_file(&path).expect("reads back");
+    let reopened = LoadedBody::from_parts("hammer", again).expect("a body");
+    let whole = &reopened.composition.as_ref().expect("parts").whole;
+    assert!((whole.mass - aluminium).abs() <= 1e-12 * aluminium);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_hammer_built_from_two_meshes_is_saved_and_opened_with_its_centre_in_the_head() {
+    let dir = std::env::temp_dir().join(format!("inertia-lab-build-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let handle = dir.join("handle.obj");
+    let bar = massprops::shapes::cuboid(Vector3::new(0.1, 1.0, 0.1), Point3::new(0.0, -1.0, 0.0));
+    std::fs::write(&handle, massprops::shapes::to_obj("handle", "", &bar)).expect("write");
+    let mut lab = lab();
+    // The unit cube (the head), then the handle as a second part.
+    lab.apply(Command::LoadSample("Cube".to_owned()));
+    lab.apply(Command::AddPart(handle));
+    assert!(
+        lab.message().is_some_and(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let parts = lab.current_parts(true).expect("parts");
+    assert_eq!(parts.len(), 2);
+    for (index, material) in [(0, "steel"), (1, "wood")] {
+        let mut entry = parts[index].entry.clone();
+        entry.material = massprops::MaterialEntry::Preset(material.to_owned());
+        lab.apply(Command::EditPart {
+            index,
+            entry: Box::new(entry),
+            visible: true,
+        });
+    }
+    let path = dir.join("hammer.toml");
+    lab.apply(Command::SaveBody(path.clone()));
+    assert!(
+        lab.message().is_some_and(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let reopened = LoadedBody::from_parts("hammer", parts::from_body_file(&path).expect("reads"))
+        .expect("a body");
+    let whole = &reopened.composition.as_ref().expect("parts").whole;
+    // 7850 kg at y = 0 and 0.01 m³ × 600 kg/m³ = 6 kg at y = −1: the centre is in the head.
+    let y = -6.0 / (7850.0 + 6.0);
+    assert!(
+        (whole.center_of_mass.y - y).abs() < 1e-12,
+        "{}",
+        whole.center_of_mass
+    );
+    assert!(whole.center_of_mass.y > -0.5);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_body_in_millimetres_saved_from_the_lab_reads_back_the_same() {
+    let dir = std::env::temp_dir().join(format!("inertia-lab-mm-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let cube = massprops::shapes::cuboid(Vector3::repeat(100.0), Point3::origin());
+    std::fs::write(
+        dir.join("cube.obj"),
+        massprops::shapes::to_obj("cube", "mm", &cube),
+    )
+    .expect("write");
+    let body_file = dir.join("in-mm.toml");
+    std::fs::write(
+        &body_file,
+        "units = \"mm\"\n[[part]]\nname = \"cube\"\nmesh = \"cube.obj\"\nmaterial = \"steel\"\ntranslation = [0, 200, 0]\n",
+    )
+    .expect("write");
+    let mut lab = lab();
+    let body = LoadedBody::from_parts("in-mm", parts::from_body_file(&body_file).expect("reads"))
+        .expect("a body");
+    lab.install(body).expect("installs");
+    let mass = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!((mass - 7.85).abs() < 1e-12, "{mass}");
+    let saved = dir.join("saved.toml");
+    lab.apply(Command::SaveBody(saved.clone()));
+    let again = LoadedBody::from_parts("saved", parts::from_body_file(&saved).expect("reads"))
+        .expect("a body");
+    let whole = &again.composition.as_ref().expect("parts").whole;
+    assert!((whole.mass - 7.85).abs() < 1e-12, "{}", whole.mass);
+    assert!((whole.center_of_mass.y - 0.2).abs() < 1e-12);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_hidden_part_is_not_picked() {
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hollow box & solid box".to_owned()));
+    let placement = lab.primary().placement();
+    // Along +x through the hollow box's centre (mesh origin): its wall is at x = −0.15, its
+    // cavity's at −0.13.
+    let ray = picking::Ray {
+        origin: placement.to_world(&Point3::new(-1.0, 0.0, 0.0)),
+        dir: placement.to_world(&Point3::origin())
+            - placement.to_world(&Point3::new(-1.0, 0.0, 0.0)),
+    };
+    let hit_x = |lab: &Lab| {
+        let hit = lab.primary().pick(&ray).expect("hits");
+        lab.primary().placement().to_mesh(&hit.point).x
+    };
+    assert!((hit_x(&lab) + 0.15).abs() < 1e-9);
+    let outer = lab
+        .primary()
+        .body()
+        .composition
+        .as_ref()
+        .expect("parts")
+        .parts[0]
+        .entry
+        .clone();
+    lab.apply(Command::EditPart {
+        index: 0,
+        entry: Box::new(outer),
+        visible: false,
+    });
+    assert!((hit_x(&lab) + 0.13).abs() < 1e-9, "{}", hit_x(&lab));
+}
+
+#[test]
+fn a_hollow_mesh_splits_into_a_solid_and_a_void() {
+    // A 3 m box with an inward 1 m box inside, as one mesh with no objects.
+    let mut b = massprops::shapes::cuboid(Vector3::repeat(3.0), Point3::origin());
+    let mut cavity = massprops::shapes::cuboid(Vector3::repeat(1.0), Point3::origin());
+    cavity.faces.iter_mut().for_each(|f| f.reverse());
+    b.append(&cavity);
+    let text = massprops::shapes::to_obj("hollow", "", &b).replace("o hollow\n", "");
+    let file =
+        massprops::parse_mesh(text.as_bytes(), std::path::Path::new("hollow.obj")).expect("parses");
+    let body = LoadedBody::new("hollow", PathBuf::from("hollow.obj"), file).expect("body");
+    let mut lab = lab();
+    lab.install(body).expect("installs");
+    let whole = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!((whole - 26_000.0).abs() < 1e-9, "{whole}");
+    lab.apply(Command::SplitIntoParts);
+    let c = lab.primary().body().composition.as_ref().expect("parts");
+    let voids: Vec<bool> = c.parts.iter().map(|p| p.entry.void).collect();
+    assert_eq!(voids, [false, true]);
+    let split = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!((split - whole).abs() <= 1e-9 * whole, "{split} vs {whole}");
+}
+
+#[test]
+fn a_mesh_splits_into_its_parts_and_takes_a_new_one() {
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hammer".to_owned()));
+    let whole = lab.primary().properties(InertiaSource::Exact).mass;
+    lab.apply(Command::SplitIntoParts);
+    let c = lab.primary().body().composition.as_ref().expect("parts");
+    let names: Vec<&str> = c.parts.iter().map(|p| p.entry.name.as_str()).collect();
+    assert_eq!(names, ["handle", "head"]);
+    let split = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!((split - whole).abs() <= 1e-12 * whole, "{split} vs {whole}");
+    // A part that would leave no body is refused and the body stays.
+    let mut void = c.parts[1].entry.clone();
+    void.void = true;
+    void.material = massprops::MaterialEntry::Density(1e6);
+    lab.apply(Command::EditPart {
+        index: 1,
+        entry: Box::new(void),
+        visible: true,
+    });
+    assert!(
+        lab.message().is_some_and(|m| m.error),
+        "{:?}",
+        lab.message()
+    );
+    let kept = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!((kept - whole).abs() <= 1e-12 * whole);
+    lab.apply(Command::RemovePart(1));
+    let c = lab.primary().body().composition.as_ref().expect("parts");
+    assert_eq!(c.parts.len(), 1);
+}
+
+#[test]
+fn switching_the_source_keeps_the_mesh_in_place_and_momenta() {
+    let mut lab = lab();
+    lab.advance(0.5);
+    let corner = lab.primary().body().mesh.positions[3];
+    let before = lab.primary().placement().to_world(&corner);
+    let b = lab.primary().sim().body();
+    let (p, l) = (b.momentum(), b.angular_momentum());
+    lab.apply(settings_with(&lab, |s| {
+        s.body.source = InertiaSource::BoundingBox;
+    }));
+    assert!(lab.message().is_none(), "{:?}", lab.message());
+    let primary = lab.primary();
+    assert!((primary.placement().to_world(&corner) - before).norm() < 1e-12);
+    assert_eq!(primary.sim().body().momentum(), p);
+    assert!((primary.sim().body().angular_momentum() - l).norm() < 1e-15);
+    // The body now turns about the box centre.
+    let bbox = primary
+        .properties(InertiaSource::BoundingBox)
+        .center_of_mass;
+    let bbox_mesh = Point3::from(bbox.coords / primary.placement().scale);
+    let at = primary.placement().to_world(&bbox_mesh);
+    assert!((at - primary.sim().body().position()).norm() < 1e-12);
+}
+
+#[test]
+fn placement_matches_the_body_frame() {
+    let mut lab = lab();
+    lab.apply(settings_with(&lab, |s| s.body.scale = 3.0));
+    lab.advance(0.7);
+    let sp = lab.primary();
+    let p = sp.placement();
+    let c = sp.used_properties().center_of_mass;
+    for &x in sp.body().mesh.positions.iter().take(20) {
+        let via_body = sp
+            .sim()
+            .body()
+            .point_to_world(&Point3::from(x.coords * 3.0 - c.coords));
+        assert!((p.to_world(&x) - via_body).norm() < 1e-12);
+    }
+}
+
+#[test]
+fn rejected_settings_change_nothing_and_say_why() {
+    let mut lab = lab();
+    let before = lab.settings().clone();
+    lab.apply(settings_with(&lab, |s| s.physics.dt = -1.0));
+    assert!(lab.message().is_some_and(|m| m.error));
+    assert_eq!(lab.settings(), &before);
+    lab.apply(settings_with(&lab, |s| {
+        s.body.mass = MassSpec::Mass(f64::NAN);
+    }));
+    assert_eq!(lab.settings(), &before);
+    lab.advance(0.1);
+    assert!(
+        lab.primary()
+            .history()
+            .samples()
+            .iter()
+            .all(|s| s.values().iter().all(|v| v.is_finite()))
+    );
+}
+
+#[test]
+fn every_step_is_recorded_and_time_beyond_the_cap_is_reported() {
+    let mut lab = lab();
+    let dt = lab.primary().sim().settings().dt;
+    let cap = lab.primary().sim().settings().max_catch_up_steps;
+    let n0 = lab.primary().history().samples().len();
+    lab.advance(5.0 * dt);
+    assert_eq!(lab.primary().history().samples().len(), n0 + 5);
+    assert_eq!(lab.primary().dropped(), 0.0);
+    // A frame 40 steps long runs the cap and drops the rest, and says how much.
+    lab.advance(40.0 * dt);
+    let sp = lab.primary();
+    assert_eq!(sp.history().samples().len(), n0 + 5 + cap as usize);
+    // rbcore drops whole steps and keeps the rest (under one step, after round-off) queued.
+    let expected = (40.0 - f64::from(cap)) * dt;
+    let dropped = sp.dropped();
+    assert!(
+        dropped <= expected * (1.0 + 1e-9) && dropped >= expected - dt * (1.0 + 1e-9),
+        "{dropped} vs {expected}"
+    );
+    assert!((sp.sim().time() - f64::from(5 + cap) * dt).abs() < 1e-12);
+}
+
+/// The T-handle's flips come when the exact solution says: the measured interval between
+/// reversals of ω₂ is half the period predicted from E and |L|; a poke starts the count over.
+#[test]
+fn measured_flips_match_the_predicted_period() {
+    let mut lab = lab();
+    let rbcore::Polhode::Circles { period, .. } = lab.primary().polhode() else {
+        panic!("{:?}", lab.primary().polhode());
+    };
+    assert_eq!(lab.primary().history().flip_interval(), None);
+    lab.advance_for(15.0);
+    let measured = lab
+        .primary()
+        .history()
+        .flip_interval()
+        .expect("flips in 15 s");
+    assert!(
+        ((measured - period / 2.0) / (period / 2.0)).abs() < 1e-3,
+        "{measured} vs {}",
+        period / 2.0
+    );
+    let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
+    lab.apply(Command::Poke {
+        specimen: PRIMARY,
+        point,
+        direction: Vector3::new(0.0, 0.0, 1.0),
+    });
+    assert_eq!(lab.primary().history().flip_interval(), None);
+}
+
+/// A frame of 150 ms at dt = 1/240 is 36 steps: the cap's 16 run and the rest is reported,
+/// not lost in the clock.
+#[test]
+fn a_slow_frame_reports_the_time_it_skipped() {
+    let mut lab = lab();
+    let s = *lab.primary().sim().settings();
+    let t0 = Instant::now();
+    lab.frame(t0);
+    lab.frame(t0 + Duration::from_millis(150));
+    let sp = lab.primary();
+    assert_eq!(sp.sim().steps(), u64::from(s.max_catch_up_steps));
+    let expected = 0.150 - f64::from(s.max_catch_up_steps) * s.dt;
+    let dropped = sp.dropped();
+    assert!(
+        dropped <= expected * (1.0 + 1e-9) && dropped >= expected - s.dt * (1.0 + 1e-9),
+        "{dropped} vs {expected}"
+    );
+}
+
+/// Settings the attached string cannot take are refused before anything changes.
+#[test]
+fn settings_refused_by_the_string_change_nothing() {
+    let mut lab = lab();
+    lab.advance(0.2);
+    let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.0, 0.0);
+    lab.apply(Command::Grab {
+        specimen: PRIMARY,
+        point,
+    });
+    let (placement, props) = (
+        lab.primary().placement(),
+        *lab.primary().properties(InertiaSource::BoundingBox),
+    );
+    lab.apply(settings_with(&lab, |s| {
+        s.body.source = InertiaSource::BoundingBox;
+        s.interaction.string_frequency = -1.0;
+    }));
+    assert!(
+        lab.message()
+            .is_some_and(|m| m.error && m.text.contains("string"))
+    );
+    assert_eq!(lab.settings().body.source, InertiaSource::Exact);
+    assert_eq!(lab.primary().placement(), placement);
+    assert_eq!(lab.primary().properties(InertiaSource::BoundingBox), &props);
+}
+
+#[test]
+fn poke_string_and_csv_export() {
+    let mut lab = lab();
+    lab.apply(Command::TogglePause);
+    let l0 = lab.primary().sim().body().angular_momentum();
+    let com = lab.primary().sim().body().position();
+    let point = com + Vector3::new(0.03, 0.0, 0.0);
+    lab.apply(Command::Poke {
+        specimen: PRIMARY,
+        point,
+        direction: Vector3::new(0.0, 0.0, -2.0),
+    });
+    let j = Vector3::new(0.0, 0.0, -lab.primary().poke_impulse(lab.settings()));
+    let dl = lab.primary().sim().body().angular_momentum() - l0;
+    assert!((dl - (point - com).cross(&j)).norm() < 1e-15);
+    assert!(lab.primary().poke_flash().is_some());
+    lab.apply(Command::Poke {
+        specimen: PRIMARY,
+        point,
+        direction: Vector3::zeros(),
+    });
+    assert!(lab.message().is_some_and(|m| m.error));
+
+    lab.apply(Command::TogglePause);
+    lab.apply(Command::Grab {
+        specimen: PRIMARY,
+        point,
+    });
+    let target = point + Vector3::new(0.0, 0.05, 0.0);
+    lab.apply(Command::Drag {
+        specimen: PRIMARY,
+        target,
+    });
+    let s = lab.primary().string_view().expect("attached");
+    assert_eq!(s.target, target);
+    let cap = lab.primary().string_max_force(lab.settings());
+    assert!(s.force.norm() <= cap * (1.0 + 1e-12));
+    lab.advance(0.2);
+    lab.apply(Command::Release { specimen: PRIMARY });
+    assert!(lab.primary().string_view().is_none());
+
+    let path = std::env::temp_dir().join(format!("inertia-lab-{}.csv", std::process::id()));
+    lab.apply(Command::ExportCsv {
+        specimen: PRIMARY,
+        path: path.clone(),
+    });
+    let text = std::fs::read_to_string(&path).expect("written");
+    assert_eq!(
+        text.lines().count(),
+        lab.primary().history().samples().len() + 1
+    );
+    std::fs::remove_file(&path).ok();
+    lab.apply(Command::ExportCsv {
+        specimen: PRIMARY,
+        path: PathBuf::from("/no/such/dir/x.csv"),
+    });
+    assert!(
+        lab.message()
+            .is_some_and(|m| m.error && m.text.contains("/no/such/dir"))
+    );
+}
+
+/// Copies with the same settings stay identical bit for bit; a copy that differs in one
+/// choice diverges; a poke acts only on the specimen it names; settings reach every copy.
+#[test]
+fn compared_copies_differ_only_where_a_setting_differs() {
+    let mut lab = lab();
+    lab.advance(0.3);
+    lab.apply(Command::Compare(vec![
+        Variant::Same,
+        Variant::Source(InertiaSource::BoundingBox),
+        Variant::Model(rbcore::RotationModel::Textbook),
+    ]));
+    assert!(lab.message().is_none(), "{:?}", lab.message());
+    assert_eq!(lab.specimens().len(), 4);
+    assert_eq!(lab.primary().sim().time(), 0.0, "all start together");
+    // Two reversals of ω₂ (at T/4 and 3T/4, T = 11.1 s) fit in 10 s.
+    lab.advance_for(10.0);
+    let [primary, same, bbox, textbook] = lab.specimens() else {
+        panic!("four specimens")
+    };
+    assert_eq!(primary.history().samples(), same.history().samples());
+    assert_eq!(
+        primary.sim().body().orientation(),
+        same.sim().body().orientation()
+    );
+    let w = |s: &Specimen| s.history().last().expect("samples").omega_principal;
+    assert!((Vector3::from(w(primary)) - Vector3::from(w(bbox))).norm() > 0.1);
+    // The textbook model never turns ω in the body: it keeps the start's ω.
+    let w0 = textbook.history().samples()[0].omega_principal;
+    assert!((Vector3::from(w(textbook)) - Vector3::from(w0)).norm() < 1e-9);
+    assert!(primary.history().flip_interval().is_some());
+    assert!(textbook.history().flip_interval().is_none());
+    // The drift tables: every copy conserves E to round-off, the primary's drift is README's.
+    assert!(primary.drift().max_energy() < 1e-12);
+    assert_eq!(bbox.variant(), Variant::Source(InertiaSource::BoundingBox));
+
+    let same_id = lab.specimens()[1].id();
+    let point = lab.primary().sim().body().position() + Vector3::new(0.02, 0.01, 0.0);
+    lab.apply(Command::Poke {
+        specimen: same_id,
+        point,
+        direction: Vector3::new(0.0, 0.0, 1.0),
+    });
+    lab.advance(0.5);
+    let (a, b) = (&lab.specimens()[0], &lab.specimens()[1]);
+    assert_ne!(
+        a.sim().body().angular_momentum(),
+        b.sim().body().angular_momentum()
+    );
+    lab.apply(settings_with(&lab, |s| s.body.scale = 2.0));
+    assert!(lab.specimens().iter().all(|s| s.placement().scale == 2.0));
+    // The bounding-box copy keeps its source whatever the lab's is.
+    let bbox = &lab.specimens()[2];
+    let expected = bbox
+        .properties(InertiaSource::BoundingBox)
+        .principal
+        .moments;
+    assert_eq!(bbox.sim().body().moments(), expected);
+
+    lab.apply(Command::Compare(vec![Variant::Same; 4]));
+    assert!(
+        lab.message()
+            .is_some_and(|m| m.error && m.text.contains("at most 3"))
+    );
+    assert_eq!(
+        lab.specimens().len(),
+        4,
+        "a refused comparison changes nothing"
+    );
+    let t = lab.primary().sim().time();
+    lab.apply(Command::Compare(Vec::new()));
+    assert_eq!(lab.specimens().len(), 1);
+    assert_eq!(
+        lab.primary().sim().time(),
+        t,
+        "stopping keeps the body's motion"
+    );
+    lab.apply(Command::Release { specimen: same_id });
+    assert!(lab.message().is_some_and(|m| m.text.contains("no body")));
+}
+
+/// Reset and the presets restart from the same state: the same spin about the chosen axis,
+/// with the documented perturbation, at the settings' rate.
+#[test]
+fn reset_and_presets_start_the_documented_spin() {
+    let mut lab = lab();
+    let rate = lab.settings().body.spin_rate;
+    for axis in 0..3 {
+        lab.apply(Command::Preset(axis));
+        lab.advance(0.4);
+        lab.apply(Command::Reset);
+        let sp = lab.primary();
+        assert_eq!(sp.sim().time(), 0.0);
+        assert_eq!(sp.history().samples().len(), 1);
+        let w = sp.sim().diagnostics().omega_principal;
+        for k in 0..3 {
+            let expected = if k == axis { rate } else { 0.02 * rate };
+            assert!((w[k] - expected).abs() < 1e-12 * rate, "{axis} {w}");
+        }
+    }
+    lab.apply(settings_with(&lab, |s| s.body.spin_rate = 3.0));
+    lab.apply(Command::ResetSettings);
+    assert_eq!(lab.settings(), &AppSettings::default());
+}

@@ -1,0 +1,35 @@
+//! Formatting shared by every front end's words (the command line's report, the app's panels):
+//! how a face and its file line, and a list of indices, are written. What each front end says
+//! around them stays its own.
+
+/// One face as "12" or "12 (line 40)": zero-based, with its one-based file line where the file
+/// has lines (`lines[f]` is face f's).
+pub fn face_line(f: usize, lines: &[u32]) -> String {
+    match lines.get(f) {
+        Some(line) => format!("{f} (line {line})"),
+        None => f.to_string(),
+    }
+}
+
+/// Indices as "1, 4, 9".
+pub fn list(indices: &[usize]) -> String {
+    indices
+        .iter()
+        .map(usize::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn faces_name_their_line_when_the_file_has_lines() {
+        assert_eq!(face_line(2, &[10, 11, 40]), "2 (line 40)");
+        assert_eq!(face_line(3, &[10, 11, 40]), "3");
+        assert_eq!(face_line(0, &[]), "0");
+        assert_eq!(list(&[1, 4, 9]), "1, 4, 9");
+        assert_eq!(list(&[]), "");
+    }
+}
