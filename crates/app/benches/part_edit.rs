@@ -4,7 +4,7 @@
 //!
 //! `cargo bench -p inertia-lab --bench part_edit`
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use inertia_lab::lab::settings::AppSettings;
@@ -23,9 +23,9 @@ fn big_part() -> PathBuf {
 }
 
 /// The default T-handle with the big torus added as a second part.
-fn lab_with_big_part(path: &PathBuf) -> Lab {
+fn lab_with_big_part(path: &Path) -> Lab {
     let mut lab = Lab::new(AppSettings::default()).expect("lab");
-    lab.apply(Command::AddPart(path.clone()));
+    lab.apply(Command::AddPart(path.to_path_buf()));
     assert!(
         lab.message().is_none_or(|m| !m.error),
         "{:?}",

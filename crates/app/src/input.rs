@@ -71,7 +71,7 @@ pub enum Resolved {
         /// The file's mesh, face lines and reader warnings.
         file: MeshFile,
         /// Its mass properties, approximations, diagnostics and warnings.
-        analysis: Analysis,
+        analysis: Box<Analysis>,
     },
     /// A body made of parts.
     Parts(Parts),
@@ -185,7 +185,10 @@ pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputE
     let analysis = file
         .analyze(request.method, request.spec, &request.repairs)
         .map_err(at)?;
-    Ok(Resolved::Mesh { file, analysis })
+    Ok(Resolved::Mesh {
+        file,
+        analysis: Box::new(analysis),
+    })
 }
 
 /// A body file's parts, integrated and summed.

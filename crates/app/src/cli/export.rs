@@ -108,7 +108,7 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
                     .properties
                     .with_mass(m)
                     .map_err(|e| CliError::Input(format!("{file}: {e}")))?,
-                MassSpec::Density(_) => analysis.properties.clone(),
+                MassSpec::Density(_) => analysis.properties,
             };
             (properties, units)
         }
@@ -119,7 +119,7 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
             } else {
                 units
             };
-            (parts.composite.properties.clone(), units)
+            (parts.composite.properties, units)
         }
     };
     for line in super::report::words::warning_lines(&file.to_string(), &resolved) {

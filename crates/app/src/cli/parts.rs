@@ -8,6 +8,9 @@ use massprops::{Material, MaterialEntry};
 use super::error::CliError;
 use crate::input::PartMaterial;
 
+/// Reads the VALUE of a NAME=VALUE flag as a material, or says why not.
+type ReadMaterial<'a> = dyn Fn(&str) -> Result<MaterialEntry, String> + 'a;
+
 /// Per-part materials for a mesh file's parts.
 #[derive(Args, Debug, Default)]
 pub struct PartArgs {
@@ -40,11 +43,7 @@ impl PartArgs {
             Ok(x) if x.is_finite() && x > 0.0 => Ok(x),
             _ => Err(format!("{v:?} is not a positive number")),
         };
-        let flags: [(
-            &'static str,
-            &Vec<String>,
-            &dyn Fn(&str) -> Result<MaterialEntry, String>,
-        ); 3] = [
+        let flags: [(&'static str, &Vec<String>, &ReadMaterial<'_>); 3] = [
             ("--density-of", &self.density_of, &|v| {
                 number(v).map(MaterialEntry::Density)
             }),

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use massprops::composite::combine;
 use massprops::{
-    Analysis, BodyFile, MassProperties, MassSpec, MeshFile, Method, PartEntry, PolyMesh, Repairs,
+    Analysis, BodyFile, MassProperties, MassSpec, MeshFile, Method, PartEntry, PolyMesh,
 };
 use nalgebra::{Point3, Vector3};
 
@@ -18,6 +18,7 @@ use super::geometry::TriMesh;
 use super::parts::PartModel;
 use super::picking::Bvh;
 use super::samples::{SAMPLE_BODIES, SAMPLE_PART_MESHES, SAMPLES};
+use crate::input::Request;
 
 /// A body made of parts, as loaded: the parts and what they make together.
 #[derive(Debug, Clone)]
@@ -103,13 +104,20 @@ impl LoadedBody {
     /// The mesh encloses no volume even with its holes capped, or is otherwise unusable; the
     /// message names the cause and `name`.
     pub fn new(name: &str, path: PathBuf, file: MeshFile) -> Result<Self, LabError> {
+        // As the one input path analyses a file for the lab.
+        let r = Request::default();
         let analysis = file
-            .analyze(Method::Volume, MassSpec::Density(1.0), &Repairs::default())
+            .analyze(r.method, r.spec, &r.repairs)
             .map_err(|e| LabError::from(e).named(name))?;
+        Ok(Self::analysed(name, path, file, analysis))
+    }
+
+    /// A mesh read from `path` with its analysis at unit density.
+    pub fn analysed(name: &str, path: PathBuf, file: MeshFile, analysis: Analysis) -> Self {
         let mut body = Self::assemble(name, &file.mesh, analysis);
         body.face_lines = file.face_lines.clone();
         body.file = Some((path, Arc::new(file)));
-        Ok(body)
+        body
     }
 
     /// The drawing and picking mesh of `poly`, with its analysis and each warning's faces.
@@ -225,7 +233,7 @@ impl LoadedBody {
                 massprops::approximations::bounding_box_properties(&merged, whole)?;
             body.analysis.point_masses =
                 massprops::approximations::point_mass_properties(&merged, whole)?;
-            body.analysis.properties = body.analysis.point_masses.clone();
+            body.analysis.properties = body.analysis.point_masses;
             body.sphere = mesh.bounding_sphere();
             body.mesh = Arc::new(mesh);
             body.bvh = Arc::new(bvh);

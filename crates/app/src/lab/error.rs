@@ -15,6 +15,9 @@ pub enum LabError {
     /// A mesh or body file that cannot be read or gives no body.
     #[error(transparent)]
     Mesh(#[from] MeshError),
+    /// A file that gives no body through the one input path.
+    #[error(transparent)]
+    Input(#[from] crate::input::InputError),
     /// A mesh or body named for the message (a file name, a sample's label, a body's name).
     #[error("{name}: {source}")]
     Named {
@@ -59,6 +62,9 @@ pub enum LabError {
     /// Split into parts was asked of a body that has them already.
     #[error("{0} is already made of parts")]
     AlreadyParts(String),
+    /// A mesh file where a body file of parts was expected.
+    #[error("{}: not a body file of parts (.toml)", .0.display())]
+    NotBodyFile(PathBuf),
     /// A part index that the body does not have.
     #[error("no part number {0}")]
     NoPart(usize),

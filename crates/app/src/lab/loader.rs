@@ -9,7 +9,8 @@ use std::thread;
 
 use super::body::LoadedBody;
 use super::error::LabError;
-use super::parts::from_body_file;
+use super::parts::from_resolved;
+use crate::input::{self, Request, Resolved, Source};
 
 /// What the worker reports.
 #[derive(Debug)]
@@ -97,17 +98,21 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
         bytes.extend_from_slice(&chunk[..n]);
         progress("reading", bytes.len() as f32 / total as f32);
     }
-    if massprops::io::is_body_file(path) {
-        progress("parts", 0.0);
-        let parts = from_body_file(path)?;
-        return LoadedBody::from_parts(&name, parts);
-    }
-    progress("parsing", 0.0);
-    let file = massprops::parse_mesh(&bytes, path)?;
+    progress("parsing and mass properties", 0.0);
+    // The one input path every command takes, at density 1 with the default repairs (the lab
+    // rescales mass and size live).
+    let resolved = input::resolve(Source::Bytes(&bytes, path), &Request::default())?;
     drop(bytes);
-    progress("mass properties and picking index", 0.0);
-    LoadedBody::new(&name, path.to_path_buf(), file)
-        .map_err(|e| e.named(path.display().to_string()))
+    progress("picking index", 0.0);
+    match resolved {
+        Resolved::Mesh { file, analysis } => Ok(LoadedBody::analysed(
+            &name,
+            path.to_path_buf(),
+            file,
+            *analysis,
+        )),
+        Resolved::Parts(parts) => LoadedBody::from_parts(&name, from_resolved(parts)?),
+    }
 }
 
 #[cfg(test)]

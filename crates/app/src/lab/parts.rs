@@ -14,6 +14,7 @@ use massprops::{
 use nalgebra::Isometry3;
 
 use super::error::LabError;
+use crate::input::{self, Request, Resolved, Source};
 
 /// One part: what the user set, and what was integrated once.
 #[derive(Debug, Clone)]
@@ -129,19 +130,25 @@ impl PartModel {
     }
 }
 
-/// The parts of a body file, integrated (in metres: placements and meshes converted).
+/// The parts of a body file, through the one input path (in metres: placements and meshes
+/// converted).
 pub fn from_body_file(path: &Path) -> Result<Vec<PartModel>, LabError> {
-    let body = BodyFile::read(path)?;
-    let parts = body.load()?;
-    // Its file is not in metres: a body file written from the lab (in metres) must carry the
-    // part's mesh in metres too.
-    let piece = body.unit() != 1.0;
-    body.in_metres()
+    match input::resolve(Source::Path(path), &Request::default())? {
+        Resolved::Parts(parts) => from_resolved(parts),
+        Resolved::Mesh { .. } => Err(LabError::NotBodyFile(path.to_path_buf())),
+    }
+}
+
+/// The lab's parts of a resolved body of parts, integrated already.
+pub fn from_resolved(parts: input::Parts) -> Result<Vec<PartModel>, LabError> {
+    // A body file not in metres: one written back from the lab (in metres) must carry its
+    // parts' meshes in metres too.
+    let piece = parts.body_file_units.is_some_and(|u| u != LengthUnit::M);
+    parts
         .parts
         .into_iter()
-        .zip(parts)
-        .map(|(entry, part)| {
-            let mut model = PartModel::new(entry, part.mesh)?;
+        .map(|p| {
+            let mut model = PartModel::integrated(p.entry, p.mesh, p.integrated)?;
             model.piece = piece;
             Ok(model)
         })

@@ -270,15 +270,13 @@ impl Specimen {
     /// The simulation diverged (the lab pauses); the steps before stay recorded.
     pub fn advance(&mut self, frame_dt: f64) -> Result<Advance, SimError> {
         let (history, drift) = (&mut self.history, &mut self.drift);
-        let result = self
-            .sim
+        self.sim
             .advance_with(frame_dt, |sim| {
                 let d = sim.diagnostics();
                 history.push(&d);
                 drift.observe(&d);
             })
-            .inspect(|a| self.dropped += a.dropped);
-        result
+            .inspect(|a| self.dropped += a.dropped)
     }
 
     /// One fixed step (recorded).
