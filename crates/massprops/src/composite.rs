@@ -406,3 +406,97 @@ fn with_density(unit: &MassProperties, density: f64) -> Result<MassProperties, M
         unit.inertia_com * density,
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::{Translation3, UnitQuaternion};
+
+    use super::*;
+    use crate::{analyze_with, shapes};
+
+    /// What `analyze_with` gives for `fill`, placed: the reference an integrated part must equal
+    /// bit for bit.
+    fn analysed(mesh: &PolyMesh, fill: Fill, placement: &Isometry3<f64>) -> (f64, MassProperties) {
+        let (method, spec, sign) = match fill {
+            Fill::Solid { density } => (Method::Volume, MassSpec::Density(density), 1.0),
+            Fill::Mass { mass } => (Method::Volume, MassSpec::Mass(mass), 1.0),
+            Fill::Void { density } => (Method::Volume, MassSpec::Density(density), -1.0),
+            Fill::ThinWall { density, thickness } => {
+                (Method::Shell, MassSpec::Density(density * thickness), 1.0)
+            }
+        };
+        let a = analyze_with(mesh, method, spec, &Repairs::default()).expect("analysis");
+        (sign, a.properties.transformed(placement))
+    }
+
+    #[test]
+    fn an_integrated_part_gives_what_the_analysis_of_each_fill_gives_bit_for_bit() {
+        let placement = Isometry3::from_parts(
+            Translation3::new(0.3, -1.25, 2.0),
+            UnitQuaternion::from_euler_angles(0.4, -1.1, 2.3),
+        );
+        let fills = [
+            Fill::Solid { density: 7850.0 },
+            Fill::Mass { mass: 0.2 },
+            Fill::Void { density: 600.0 },
+            Fill::ThinWall {
+                density: 1240.0,
+                thickness: 0.0015,
+            },
+        ];
+        for (name, mesh) in [
+            ("hammer", shapes::hammer().build()),
+            ("torus", shapes::sample_torus().build()),
+            ("T-handle", shapes::t_handle().build()),
+        ] {
+            let part = IntegratedPart::new(&mesh, &Repairs::default());
+            for fill in fills {
+                let p = part.properties(name, fill, &placement).expect("fill");
+                let (sign, expected) = analysed(&mesh, fill, &placement);
+                assert_eq!(p.mass, sign * expected.mass, "{name} {fill:?}");
+                assert_eq!(p.center_of_mass, expected.center_of_mass, "{name} {fill:?}");
+                assert_eq!(
+                    p.inertia_com,
+                    expected.inertia_com * sign,
+                    "{name} {fill:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_sheet_takes_a_thin_wall_and_refuses_a_solid_as_the_analysis_does() {
+        let mut sheet = shapes::cube();
+        sheet.faces.truncate(1);
+        let mesh = sheet.build();
+        let part = IntegratedPart::new(&mesh, &Repairs::default());
+        assert_eq!(part.volume(), None);
+        let wall = Fill::ThinWall {
+            density: 1000.0,
+            thickness: 0.002,
+        };
+        let p = part
+            .properties("sheet", wall, &Isometry3::identity())
+            .expect("a wall");
+        // One unit square at 2 kg/m².
+        assert!((p.mass - 2.0).abs() < 1e-12, "{}", p.mass);
+        let solid = Fill::Solid { density: 1000.0 };
+        let e = part
+            .properties("sheet", solid, &Isometry3::identity())
+            .expect_err("no volume");
+        let direct = analyze_with(
+            &mesh,
+            Method::Volume,
+            MassSpec::Density(1000.0),
+            &Repairs::default(),
+        )
+        .expect_err("no volume");
+        assert_eq!(e.to_string(), direct.to_string());
+        let bad = part.properties(
+            "sheet",
+            Fill::Solid { density: -1.0 },
+            &Isometry3::identity(),
+        );
+        assert!(bad.expect_err("negative").to_string().contains("density"));
+    }
+}

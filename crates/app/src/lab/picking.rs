@@ -278,6 +278,41 @@ mod tests {
     }
 
     #[test]
+    fn a_refitted_index_picks_what_brute_force_finds_after_a_part_moves() {
+        // Two tori; the second is moved after the index is built (a part placed elsewhere).
+        let mut b = massprops::shapes::torus(1.0, 0.3, 48, 24);
+        let second = massprops::shapes::torus(0.5, 0.2, 32, 16);
+        let first_vertices = b.positions.len();
+        b.append(&second);
+        let mut mesh = TriMesh::from_poly(&b.build());
+        let mut bvh = Bvh::build(&mesh);
+        for p in &mut mesh.positions[first_vertices..] {
+            *p += Vector3::new(2.5, 0.4, -0.3);
+        }
+        let stale = bvh.clone();
+        bvh.refit(&mesh);
+        let (mut hits, mut stale_misses) = (0, 0);
+        for k in 0..400 {
+            let (x, y) = (
+                -1.5 + f64::from(k % 20) * 0.25,
+                -1.5 + f64::from(k / 20) * 0.15,
+            );
+            let ray = Ray {
+                origin: Point3::new(x, y, 5.0),
+                dir: Vector3::new(0.05, -0.02, -1.0),
+            };
+            let expected = brute(&mesh, &ray);
+            let got = bvh.pick(&mesh, &ray).map(|h| h.t);
+            assert_eq!(got, expected, "ray {k}");
+            hits += usize::from(expected.is_some());
+            stale_misses += usize::from(stale.pick(&mesh, &ray).map(|h| h.t) != expected);
+        }
+        assert!(hits > 50, "{hits} hits");
+        // Without the refit the old boxes miss the moved torus.
+        assert!(stale_misses > 10, "{stale_misses}");
+    }
+
+    #[test]
     fn hits_the_near_face_of_a_cube() {
         let mesh = TriMesh::from_poly(&massprops::shapes::cube().build());
         let bvh = Bvh::build(&mesh);

@@ -591,3 +591,152 @@ fn reset_and_presets_start_the_documented_spin() {
     lab.apply(Command::ResetSettings);
     assert_eq!(lab.settings(), &AppSettings::default());
 }
+
+/// The hammer sample's body and the parts it is made of.
+fn hammer() -> (Lab, Vec<parts::PartModel>) {
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+    let parts = lab
+        .primary()
+        .body()
+        .composition
+        .clone()
+        .expect("parts")
+        .parts;
+    (lab, parts)
+}
+
+#[test]
+fn a_material_edit_re_sums_the_masses_without_assembling_the_body_again() {
+    let (mut lab, parts) = hammer();
+    let before = lab.primary().body_arc().clone();
+    let generation = lab.generation();
+    let mut head = parts[0].entry.clone();
+    head.material = massprops::MaterialEntry::Preset("brass".to_owned());
+    head.thin_wall = Some(0.004);
+    lab.apply(Command::EditPart {
+        index: 0,
+        entry: Box::new(head.clone()),
+        visible: true,
+    });
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let after = lab.primary().body();
+    // The same drawing and picking index (shared, not copied), nothing to upload again.
+    assert!(Arc::ptr_eq(&before.mesh, &after.mesh));
+    assert!(Arc::ptr_eq(&before.bvh, &after.bvh));
+    assert_eq!(lab.generation(), generation);
+    // The masses are what assembling the edited parts from scratch gives, bit for bit.
+    let mut edited = parts.clone();
+    edited[0].entry = head;
+    let rebuilt = LoadedBody::from_parts("hammer", edited).expect("a body");
+    let (c, r) = (
+        after.composition.as_ref().expect("parts"),
+        rebuilt.composition.as_ref().expect("parts"),
+    );
+    assert_eq!(c.whole, r.whole);
+    assert_eq!(c.shares, r.shares);
+    assert_eq!(c.masses, r.masses);
+    // The approximations are rescaled to the new mass (to round-off; the specimen rescales
+    // them to its own mass again anyway).
+    for (a, b) in [
+        (&after.analysis.bounding_box, &rebuilt.analysis.bounding_box),
+        (&after.analysis.point_masses, &rebuilt.analysis.point_masses),
+    ] {
+        assert_eq!(a.mass, b.mass);
+        assert_eq!(a.center_of_mass, b.center_of_mass);
+        let scale = b.inertia_com.norm();
+        assert!((a.inertia_com - b.inertia_com).norm() <= 4.0 * f64::EPSILON * scale);
+    }
+    // A brass wall 4 mm thick on the 0.12 × 0.03 × 0.03 head: σ = ρ t on its area.
+    let area = 2.0 * (0.12 * 0.03 * 2.0 + 0.03 * 0.03);
+    assert!(
+        (c.masses[0] - 8500.0 * 0.004 * area).abs() < 1e-12,
+        "{}",
+        c.masses[0]
+    );
+}
+
+#[test]
+fn a_placement_edit_moves_one_part_and_picks_as_a_fresh_index_would() {
+    let (mut lab, parts) = hammer();
+    let generation = lab.generation();
+    let mut handle = parts[1].entry.clone();
+    handle.translation = [0.05, -0.02, 0.01];
+    handle.rotation = Some(([0.0, 0.0, 1.0], 20.0));
+    lab.apply(Command::EditPart {
+        index: 1,
+        entry: Box::new(handle.clone()),
+        visible: true,
+    });
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    assert_eq!(lab.generation(), generation + 1, "moved: drawn again");
+    let after = lab.primary().body();
+    let mut edited = parts.clone();
+    edited[1].entry = handle;
+    let rebuilt = LoadedBody::from_parts("hammer", edited).expect("a body");
+    assert_eq!(after.mesh.positions, rebuilt.mesh.positions);
+    assert_eq!(after.mesh.triangles, rebuilt.mesh.triangles);
+    assert_eq!(after.sphere, rebuilt.sphere);
+    let (c, r) = (
+        after.composition.as_ref().expect("parts"),
+        rebuilt.composition.as_ref().expect("parts"),
+    );
+    assert_eq!(c.whole, r.whole);
+    assert_eq!(after.analysis.bounding_box, rebuilt.analysis.bounding_box);
+    assert_eq!(after.analysis.point_masses, rebuilt.analysis.point_masses);
+    // The refitted index finds what the rebuilt one finds.
+    let (mut hits, (c0, radius)) = (0, rebuilt.sphere);
+    for k in 0..400 {
+        let origin = c0
+            + Vector3::new(
+                -radius + f64::from(k % 20) * radius / 10.0,
+                -radius + f64::from(k / 20) * radius / 10.0,
+                2.0 * radius,
+            );
+        let ray = picking::Ray {
+            origin,
+            dir: -Vector3::z(),
+        };
+        let (a, b) = (
+            after.bvh.pick(&after.mesh, &ray),
+            rebuilt.bvh.pick(&rebuilt.mesh, &ray),
+        );
+        assert_eq!(a.map(|h| h.t), b.map(|h| h.t), "ray {k}");
+        hits += usize::from(a.is_some());
+    }
+    assert!(hits > 20, "{hits} hits");
+}
+
+#[test]
+fn hiding_a_part_is_drawn_again_and_the_last_shown_part_stays() {
+    let (mut lab, parts) = hammer();
+    let generation = lab.generation();
+    lab.apply(Command::EditPart {
+        index: 0,
+        entry: Box::new(parts[0].entry.clone()),
+        visible: false,
+    });
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    assert_eq!(lab.generation(), generation + 1);
+    lab.apply(Command::EditPart {
+        index: 1,
+        entry: Box::new(parts[1].entry.clone()),
+        visible: false,
+    });
+    let m = lab.message().expect("refused");
+    assert!(m.error && m.text.contains("last part shown"), "{m:?}");
+    let c = lab.primary().body().composition.clone().expect("parts");
+    assert!(!c.parts[0].visible && c.parts[1].visible);
+}
