@@ -47,6 +47,22 @@ pub enum MassSpec {
 }
 
 /// Everything known about a body: the chosen method's result and the rest for comparison.
+///
+/// ```
+/// use massprops::{Analysis, MassSpec, Method, analyze, shapes};
+///
+/// // The unit cube at a mass of 3 kg: density 3, every moment m·a²/6 = 0.5.
+/// let cube = shapes::cube().build();
+/// let a: Analysis = analyze(&cube, Method::Volume, MassSpec::Mass(3.0)).unwrap();
+/// assert_eq!((a.volume, a.density), (Some(1.0), Some(3.0)));
+/// assert!((a.properties.principal.moments.add_scalar(-0.5)).amax() < 1e-12);
+/// // Its eight vertices as point masses of 3/8 kg, each (1/2)² + (1/2)² from every axis.
+/// assert!((a.point_masses.principal.moments.add_scalar(-1.5)).amax() < 1e-12);
+/// // The thin shell of the same mass: 5/18 · m·a².
+/// let shell = analyze(&cube, Method::Shell, MassSpec::Mass(3.0)).unwrap();
+/// assert!((shell.properties.principal.moments.add_scalar(-5.0 / 6.0)).amax() < 1e-12);
+/// assert!(a.warnings.is_empty() && !a.flipped);
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Analysis {
     /// The method of `properties`.
@@ -83,7 +99,7 @@ pub struct Warning {
     /// holes for `holes_capped`, records for `two_corner_faces`.
     pub count: usize,
     /// Some of the faces concerned, as zero-based indices into the mesh given to [`analyze`],
-    /// ascending, at most [`EXAMPLES`](crate::diagnostics::EXAMPLES).
+    /// ascending, at most five.
     pub faces: Vec<usize>,
     /// The estimated relative change in mass that the defect makes, as a fraction of the mass
     /// found (of the area for the shell method): positive when the defect adds mass. For a
@@ -213,6 +229,20 @@ impl Analysis {
 
 /// Computes the chosen method's mass properties, the approximations and the diagnostics, with
 /// the default handling of defects ([`Repairs::default`]).
+///
+/// ```
+/// use massprops::{MassSpec, Method, analyze, shapes};
+///
+/// // The L-bracket (metres) in steel: 100 × 10 + 10 × 50 mm² of section, 30 mm deep.
+/// let mesh = shapes::l_bracket().build();
+/// let a = analyze(&mesh, Method::Volume, MassSpec::Density(7850.0)).unwrap();
+/// let volume = (0.1 * 0.01 + 0.01 * 0.05) * 0.03;
+/// assert!((a.volume.unwrap() - volume).abs() < 1e-15);
+/// assert!((a.properties.mass - 7850.0 * volume).abs() < 1e-12);
+/// // Its centre of mass is far from its bounding box's, which the approximation keeps.
+/// let bbox = a.bounding_box.compare_to(&a.properties);
+/// assert!(bbox.com_offset > 0.01);
+/// ```
 pub fn analyze(mesh: &PolyMesh, method: Method, spec: MassSpec) -> Result<Analysis, MeshError> {
     analyze_with(mesh, method, spec, &Repairs::default())
 }

@@ -125,6 +125,29 @@ pub struct Composite {
 /// The mass properties of a body made of `parts`, each part's mesh handled as `repairs` says:
 /// each part integrated once ([`IntegratedPart`]), then the sums of [`combine`].
 ///
+/// ```
+/// use massprops::{Fill, Part, Repairs, composite, shapes};
+/// use nalgebra::{Isometry3, Point3, Vector3};
+///
+/// // A hollow box: a 2 m cube with a 1 m cube of its material removed, density 1.
+/// let cube = |a: f64| shapes::cuboid(Vector3::repeat(a), Point3::origin()).build();
+/// let part = |name: &str, a: f64, fill: Fill| Part {
+///     name: name.into(),
+///     mesh: cube(a),
+///     fill,
+///     placement: Isometry3::identity(),
+/// };
+/// let parts = [
+///     part("shell", 2.0, Fill::Solid { density: 1.0 }),
+///     part("cavity", 1.0, Fill::Void { density: 1.0 }),
+/// ];
+/// let body = composite(&parts, &Repairs::default()).unwrap();
+/// // m = 8 − 1 and I = (8·2² − 1·1²)/6 about every axis.
+/// assert!((body.properties.mass - 7.0).abs() < 1e-12);
+/// assert!((body.properties.principal.moments.add_scalar(-31.0 / 6.0)).amax() < 1e-12);
+/// assert!(body.parts[1].mass < 0.0); // a void counts negative
+/// ```
+///
 /// Errors: no parts; a part that cannot be integrated (named); a fill that is not a positive
 /// number; voids that remove as much as there is or more, or leave an inertia tensor that no
 /// body has (named with the total found).

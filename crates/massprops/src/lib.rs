@@ -29,6 +29,11 @@
 //! assert!((p.inertia_com[(0, 0)] - 56.0 * 65.0 / 12.0).abs() < 1e-10);
 //! ```
 
+/// The README's example, compiled and run as a doctest.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
 mod analysis;
 pub mod approximations;
 pub mod composite;

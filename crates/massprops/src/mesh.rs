@@ -15,6 +15,34 @@ use crate::MeshError;
 /// counter-clockwise seen from outside (right-hand rule gives the outward normal). A constructed
 /// mesh is always valid for integration: every index is in range, every coordinate finite, every
 /// face has at least three corners.
+///
+/// ```
+/// use massprops::{PolyMesh, mass_properties};
+/// use nalgebra::Point3;
+///
+/// // The tetrahedron with corners at the origin and the unit points, wound outward.
+/// let corners = vec![
+///     Point3::new(0.0, 0.0, 0.0),
+///     Point3::new(1.0, 0.0, 0.0),
+///     Point3::new(0.0, 1.0, 0.0),
+///     Point3::new(0.0, 0.0, 1.0),
+/// ];
+/// let faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let mesh = PolyMesh::new(corners, &faces).unwrap();
+/// assert_eq!((mesh.face_count(), mesh.triangle_count()), (4, 4));
+///
+/// // Volume 1/6, centre (1/4, 1/4, 1/4); about the origin ∫x² dV = 1/60 and ∫xy dV = 1/120, so
+/// // I_xx = ∫(y² + z²) dV = 1/30 and I_xy = −∫xy dV = −1/120.
+/// let p = mass_properties(&mesh, 1.0).unwrap();
+/// assert!((p.mass - 1.0 / 6.0).abs() < 1e-15);
+/// assert!((p.center_of_mass - Point3::new(0.25, 0.25, 0.25)).norm() < 1e-15);
+/// let origin = p.inertia_origin();
+/// assert!((origin[(0, 0)] - 1.0 / 30.0).abs() < 1e-15);
+/// assert!((origin[(0, 1)] + 1.0 / 120.0).abs() < 1e-15);
+///
+/// // Wound inward, the same body (the result is flipped).
+/// assert!((mass_properties(&mesh.flipped(), 1.0).unwrap().mass - 1.0 / 6.0).abs() < 1e-15);
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct PolyMesh {
     positions: Vec<Point3<f64>>,

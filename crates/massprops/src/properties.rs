@@ -11,6 +11,26 @@ use crate::principal::{Degeneracy, PrincipalInertia, principal_inertia};
 
 /// Mass, centre of mass and inertia tensor (tensor convention, about the centre of mass, in the
 /// mesh's axes), with the principal moments and axes derived from it.
+///
+/// ```
+/// use massprops::{MassProperties, mass_properties, shapes};
+/// use nalgebra::{Matrix3, Point3, Vector3};
+///
+/// // A 1 × 4 × 7 box centred on the origin at density 2: m = 56, I = m·diag(65, 50, 17)/12.
+/// let p: MassProperties = mass_properties(&shapes::book().build(), 2.0).unwrap();
+/// let expected = Matrix3::from_diagonal(&Vector3::new(65.0, 50.0, 17.0)) * (56.0 / 12.0);
+/// assert!((p.inertia_com - expected).amax() < 1e-12);
+/// assert!((p.principal.moments.x - 56.0 * 17.0 / 12.0).abs() < 1e-12); // ascending
+///
+/// // About a corner (the parallel-axis theorem): off-diagonals −m·dx·dy.
+/// let corner = Point3::new(0.5, 2.0, 3.5);
+/// assert!((p.inertia_about(&corner)[(0, 1)] - -56.0 * 0.5 * 2.0).abs() < 1e-12);
+///
+/// // Twice the size at the same density: m·8, I·32.
+/// let big = p.scaled_at_fixed_density(2.0).unwrap();
+/// assert!((big.mass - 448.0).abs() < 1e-12);
+/// assert!((big.inertia_com - expected * 32.0).amax() < 1e-9);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MassProperties {
     /// Mass (kg when lengths are metres and density is kg/m³).

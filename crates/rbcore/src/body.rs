@@ -47,6 +47,27 @@ fn sorted_principal(moments: Vector3<f64>, axes: Matrix3<f64>) -> (Vector3<f64>,
 }
 
 /// A rigid body: constant mass properties plus the dynamic state (pose and momenta).
+///
+/// ```
+/// use nalgebra::{Matrix3, Point3, Vector3};
+/// use rbcore::Body;
+///
+/// // A tensor (body axes, about the centre of mass) with its moments out of order: they come
+/// // back ascending, so principal axis 3 is the body's x.
+/// let inertia = Matrix3::from_diagonal(&Vector3::new(3.0, 1.0, 2.0));
+/// let mut body = Body::from_inertia_tensor(2.0, &inertia).unwrap();
+/// assert!((body.moments() - Vector3::new(1.0, 2.0, 3.0)).norm() < 1e-12);
+///
+/// // The principal frame starts aligned with world. Spin at 2 rad/s about axis 3: L = I₃ω.
+/// body.set_omega_principal(Vector3::new(0.0, 0.0, 2.0)).unwrap();
+/// assert!((body.angular_momentum() - Vector3::new(0.0, 0.0, 6.0)).norm() < 1e-12);
+/// assert!((body.omega_world() - Vector3::new(0.0, 0.0, 2.0)).norm() < 1e-12);
+///
+/// // x_w = R·x_b + r: the body's x axis (principal axis 3) lies along world z.
+/// body.set_position(Point3::new(1.0, 0.0, 0.0)).unwrap();
+/// let tip = body.point_to_world(&Point3::new(0.5, 0.0, 0.0));
+/// assert!((tip - Point3::new(1.0, 0.0, 0.5)).norm() < 1e-12);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Body {
     pub(crate) mass: f64,

@@ -17,6 +17,11 @@
 //! - Engine comparisons reproducing Jolt/PhysX/Rapier (explicit gyroscopic step, |L| rescaled)
 //!   and Bullet (backward Euler), and the textbook model without the gyroscopic term.
 
+/// The README's example, compiled and run as a doctest.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
 mod body;
 mod diagnostics;
 mod error;

@@ -66,6 +66,28 @@ pub fn stability(moments: &Vector3<f64>, i: usize) -> Stability {
 
 /// The polhode of body angular momentum `l` (principal frame) for principal `moments`
 /// (ascending).
+///
+/// ```
+/// use nalgebra::Vector3;
+/// use rbcore::{Polhode, Stability, polhode, stability};
+///
+/// let i = Vector3::new(1.0, 2.0, 3.0);
+/// assert_eq!(stability(&i, 1), Stability::Unstable); // the intermediate axis flips
+/// assert_eq!(polhode(&i, &Vector3::new(0.0, 0.0, 6.0)), Polhode::Steady { axis: 2 });
+/// // Mostly about axis 2 with |L|² > 2E·I₂: L circles axis 3 and ω₂ reverses every T/2.
+/// let l = i.component_mul(&Vector3::new(0.001, 10.0, 0.001));
+/// assert!(matches!(polhode(&i, &l), Polhode::Circles { axis: 2, .. }));
+///
+/// // A symmetric top, I = (2, 2, 3), at ω = (1, 2, 3): ω turns about axis 3 at
+/// // Ω = (I₃ − I₁)/I₁ · ω₃ = 1.5 rad/s, so the period is 2π/Ω.
+/// let top = Vector3::new(2.0, 2.0, 3.0);
+/// let l = top.component_mul(&Vector3::new(1.0, 2.0, 3.0));
+/// let Polhode::Circles { axis, period, .. } = polhode(&top, &l) else {
+///     panic!("a precessing top");
+/// };
+/// assert_eq!(axis, 2);
+/// assert!((period - 2.0 * std::f64::consts::PI / 1.5).abs() < 1e-12);
+/// ```
 pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
     let l2 = l.norm_squared();
     if l2.is_nan() || l2 <= 0.0 {

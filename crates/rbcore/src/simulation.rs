@@ -84,6 +84,24 @@ pub struct Advance {
 }
 
 /// A body, its settings and the interaction forces, advanced deterministically in fixed steps.
+///
+/// ```
+/// use nalgebra::{Point3, Vector3};
+/// use rbcore::{Body, Settings, Simulation};
+///
+/// let body = Body::from_moments(2.0, Vector3::new(1.0, 2.0, 3.0)).unwrap();
+/// let mut sim = Simulation::new(body, Settings::default()).unwrap(); // 1/240 s steps
+/// // A poke J = (1, 0, 0) N·s at (0, 1, 0): Δp = J, ΔL = r × J = (0, 0, −1).
+/// sim.poke(&Point3::new(0.0, 1.0, 0.0), &Vector3::new(1.0, 0.0, 0.0)).unwrap();
+/// let run = sim.advance(1.0 / 60.0).unwrap(); // a frame of 1/60 s: four steps
+/// assert_eq!((run.steps, sim.steps()), (4, 4));
+/// assert!((sim.body().position().x - 0.5 / 60.0).abs() < 1e-15); // v = J/m
+/// let d = sim.diagnostics();
+/// assert!((d.angular_momentum - Vector3::new(0.0, 0.0, -1.0)).norm() < 1e-15);
+/// // T = |J|²/2m + |L|²/2I₃: a spin about the major axis stays as it is.
+/// assert!((d.kinetic - (0.25 + 1.0 / 6.0)).abs() < 1e-15);
+/// assert!((d.omega_principal - Vector3::new(0.0, 0.0, -1.0 / 3.0)).norm() < 1e-15);
+/// ```
 #[derive(Clone, Debug)]
 pub struct Simulation {
     settings: Settings,
