@@ -1038,3 +1038,27 @@ fn export_takes_a_body_file() {
     ]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// `--method shell` integrates the surface: on an open mesh (a unit cube without its top) the
+/// JSON has the five faces' mass and area and `"volume": null` (README: null when the mesh
+/// encloses none; no caps are added for a shell); on the closed cube, its volume.
+#[test]
+fn shell_method_on_an_open_mesh_has_a_null_volume() {
+    let open = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    let file = TempFile::new("open-shell.obj", open);
+    let j = props_json(&[file.path(), "--method", "shell"]);
+    assert_eq!(j["method"], "shell");
+    assert!(j["volume"].is_null(), "volume: {}", j["volume"]);
+    assert!(close(f(&j["mass"]), 5.0, 1e-15), "{}", j["mass"]);
+    assert!(close(f(&j["surface_area"]), 5.0, 1e-15));
+    let closed = format!("{}f 5 6 7 8\n", std::str::from_utf8(open).expect("text"));
+    let file = TempFile::new("closed-shell.obj", closed.as_bytes());
+    let j = props_json(&[file.path(), "--method", "shell"]);
+    assert!(
+        close(f(&j["volume"]), 1.0, 1e-15),
+        "volume: {}",
+        j["volume"]
+    );
+    assert!(close(f(&j["mass"]), 6.0, 1e-15));
+}

@@ -528,3 +528,154 @@ fn a_body_file_simulates_with_the_moments_props_reports() {
     let out = simulate(&["--mesh", &hammer, "--density", "3"]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// Where `polhode` finds no flip to predict, `--summary` says null: on the separatrix (L =
+/// (1, 4, √3) for I = 1, 2, 3: Σ (Iₖ − I₂)Lₖ²/Iₖ = 0, an infinite period), at rest and with three
+/// equal moments; the measured period is null too, as fewer than three reversals happen, and
+/// the drifts are those of a motion that keeps E and |L|.
+#[test]
+fn summary_nulls_on_the_separatrix_at_rest_and_for_equal_moments() {
+    let separatrix = summary(&["--omega", "1,2,0.5773502691896258", "--duration", "10"]);
+    let at_rest = summary(&["--omega", "0,0,0", "--duration", "2"]);
+    let sphere = summary(&["--inertia", "2,2,2", "--omega", "1,2,3", "--duration", "10"]);
+    for (what, s) in [
+        ("separatrix", &separatrix),
+        ("at rest", &at_rest),
+        ("equal moments", &sphere),
+    ] {
+        for key in [
+            "flip_period_predicted",
+            "flip_period_measured",
+            "polhode_circles_axis",
+        ] {
+            assert!(s[key].is_null(), "{what}: {key} in {s}");
+        }
+        // Not null: the counts and drifts are always numbers.
+        assert_eq!(s["flips"], 0, "{what}: {s}");
+        for key in [
+            "energy_drift_max_rel",
+            "L_drift_max_rel",
+            "L_norm_drift_max_rel",
+        ] {
+            let x = s[key]
+                .as_f64()
+                .unwrap_or_else(|| panic!("{what}: {key} in {s}"));
+            assert!(x <= 1e-12, "{what}: {key} = {x}");
+        }
+    }
+    // At rest nothing at all changes: every drift is exactly 0 (absolute, as |L₀| = E₀ = 0).
+    for key in [
+        "energy_drift_max_rel",
+        "L_drift_max_rel",
+        "L_norm_drift_max_rel",
+    ] {
+        assert_eq!(at_rest[key].as_f64(), Some(0.0), "{key} in {at_rest}");
+    }
+}
+
+/// `L_norm_drift_max_rel`: 0 to round-off for the default integrator, which keeps |L| (README),
+/// and for `implicit-euler` (backward Euler on body L, as Bullet) the figure of the same step
+/// solved here independently: x = L + h·x × I⁻¹x by fixed-point iteration (the binary uses
+/// Newton). Backward Euler loses |L|² by |ΔL|² every step, so |L| decays; its energy drift
+/// is README's 0.50 (checked to a factor of 10 in the compare test), here to the same step.
+#[test]
+fn summary_reports_the_drift_of_the_norm_of_l() {
+    let s = summary(&[]);
+    let norm = s["L_norm_drift_max_rel"].as_f64().expect("a number");
+    assert!(norm <= 2.0 * f64::EPSILON, "default: {norm}");
+
+    let implicit = summary(&["--integrator", "implicit-euler"]);
+    let (i, h): (Vector3<f64>, f64) = (Vector3::new(1.0, 2.0, 3.0), 1.0 / 240.0);
+    let mut l: Vector3<f64> = Vector3::new(0.001, 20.0, 0.003);
+    let (n0, e0) = (l.norm(), 0.5 * l.component_mul(&l).component_div(&i).sum());
+    let (mut worst_norm, mut worst_energy) = (0.0_f64, 0.0_f64);
+    for _ in 0..14_400 {
+        let mut x = l;
+        for _ in 0..200 {
+            let next = l + x.cross(&x.component_div(&i)) * h;
+            let done = (next - x).norm() <= 1e-16 * l.norm();
+            x = next;
+            if done {
+                break;
+            }
+        }
+        l = x;
+        worst_norm = worst_norm.max((l.norm() - n0).abs() / n0);
+        let e = 0.5 * l.component_mul(&l).component_div(&i).sum();
+        worst_energy = worst_energy.max((e - e0).abs() / e0);
+    }
+    let norm = implicit["L_norm_drift_max_rel"].as_f64().expect("a number");
+    assert!(
+        (norm - worst_norm).abs() <= 1e-6 * worst_norm,
+        "implicit-euler |L| drift {norm} vs the step solved here {worst_norm}"
+    );
+    let energy = implicit["energy_drift_max_rel"].as_f64().expect("a number");
+    assert!(
+        (energy - worst_energy).abs() <= 1e-6 * worst_energy,
+        "implicit-euler E drift {energy} vs {worst_energy}"
+    );
+    // Not the energy figure under another name.
+    assert!((norm - energy).abs() > 0.1 * energy, "{implicit}");
+}
+
+/// README's `--compare` table, every row held to about 10× on both sides: the flips counted
+/// exactly, each period error and energy drift within a factor of 10 of README's figure with
+/// its sign, so that a row that suddenly reports 0, or far better or worse, fails. The errors
+/// against the exact flow (saturated near 2|ω₂| = 20 for the rows out of phase) likewise.
+#[test]
+fn every_compare_row_is_readmes_within_a_factor_of_ten() {
+    let out = simulate_ok(&["--compare"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    let (rows, _) = compare_table(&text);
+    // integrator, flips, period error, max |ΔE|/E, max |Δω| (README, Dynamics).
+    let readme: [(&str, u32, f64, f64, f64); 8] = [
+        ("midpoint-cayley", 17, -3.4e-5, 7.8e-14, 0.11),
+        ("splitting", 17, 2.9e-5, 1.6e-4, 0.095),
+        ("rk4", 18, -6.1e-2, 2.9e-8, 20.0),
+        ("euler", 102, -0.84, 0.25, 19.7),
+        ("midpoint", 35, -0.53, 6.5e-4, 20.0),
+        ("exact", 17, 7.2e-9, 9.9e-14, 0.0),
+        ("engine-style", 14, 0.19, 5.0e-9, 20.0),
+        ("implicit-euler", 17, -7.9e-4, 0.50, 4.6),
+    ];
+    assert_eq!(rows.len(), readme.len(), "{text}");
+    let within_10x = |got: f64, want: f64| {
+        got.signum() == want.signum()
+            && got.abs() >= want.abs() / 10.0
+            && got.abs() <= want.abs() * 10.0
+    };
+    for (name, flips, period, energy, omega) in readme {
+        let r = &rows
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap_or_else(|| panic!("no {name} row in\n{text}"))
+            .1;
+        assert_eq!(r.flips, flips, "{name}: flips, {r:?}");
+        let p = r
+            .period_error
+            .unwrap_or_else(|| panic!("{name}: no period"));
+        assert!(
+            within_10x(p, period),
+            "{name}: period error {p:e}, README {period:e}"
+        );
+        assert!(
+            within_10x(r.energy_error, energy),
+            "{name}: energy drift {:e}, README {energy:e}",
+            r.energy_error
+        );
+        if omega == 0.0 {
+            assert_eq!(r.omega_error, 0.0, "{name}: the reference itself");
+        } else if omega >= 19.0 {
+            // Out of phase: bounded by 2|ω|max ≈ 20 (the flow keeps |ω₂| ≤ 10 + a little).
+            assert!(
+                r.omega_error > 10.0 && r.omega_error < 25.0,
+                "{name}: {r:?}"
+            );
+        } else {
+            assert!(
+                within_10x(r.omega_error, omega),
+                "{name}: |Δω| {r:?}, README {omega}"
+            );
+        }
+    }
+}

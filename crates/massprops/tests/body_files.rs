@@ -190,3 +190,140 @@ fn every_mistake_names_the_file_the_line_and_the_key() {
     assert!(e.to_string().contains("remove more than there is"), "{e}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A folder holding `brick.obj`: a 1 × 2 × 3 m box centred at `centre` (mesh coordinates).
+fn brick_folder(tag: &str, centre: Point3<f64>) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("massprops-brick-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let brick = shapes::cuboid(Vector3::new(1.0, 2.0, 3.0), centre);
+    std::fs::write(dir.join("brick.obj"), shapes::to_obj("brick", "", &brick)).expect("write");
+    dir
+}
+
+/// The body file's composite for one part `brick.obj` with the given `rotation` (a TOML inline
+/// table) and translation [1, 2, 3].
+fn turned_brick(dir: &Path, rotation: &str) -> massprops::Composite {
+    let path = dir.join("turned.toml");
+    let text = format!(
+        "[[part]]\nname = \"brick\"\nmesh = \"brick.obj\"\ndensity = 2\n\
+         rotation = {rotation}\ntranslation = [1, 2, 3]\n"
+    );
+    std::fs::write(&path, text).expect("write");
+    let body = BodyFile::read(&path).expect("valid");
+    composite(&body.load().expect("mesh"), &Repairs::default()).expect("one part")
+}
+
+/// A 1 × 2 × 3 box turned 30° about [1, 1, 0]: its tensor about the centre of mass is R·I·Rᵀ
+/// with R from nalgebra (not the crate's placement), and its centre R·c + t. The box is not a
+/// cube and the axis is no edge, so reading degrees as radians, dropping the rotation or
+/// turning the other way all change the tensor.
+#[test]
+fn a_rotated_box_has_the_rotated_tensor_about_its_centre() {
+    let centre = Point3::new(0.2, -0.1, 0.4);
+    let dir = brick_folder("rotated", centre);
+    let m = 2.0 * 6.0;
+    let local = box_tensor(m, 1.0, 2.0, 3.0);
+    let turn = |axis: Vector3<f64>, degrees: f64| {
+        nalgebra::Rotation3::from_axis_angle(
+            &nalgebra::Unit::new_normalize(axis),
+            degrees.to_radians(),
+        )
+        .into_inner()
+    };
+    let t = Vector3::new(1.0, 2.0, 3.0);
+    let cases = [
+        (
+            "{ axis = [1, 1, 0], degrees = 30 }",
+            Vector3::new(1.0, 1.0, 0.0),
+        ),
+        // The norm of [1e200, 0, 0] overflows; it must still mean the x axis.
+        ("{ axis = [1e200, 0, 0], degrees = 30 }", Vector3::x()),
+        ("{ axis = [1, 0, 0], degrees = 30 }", Vector3::x()),
+    ];
+    for (rotation, axis) in cases {
+        let c = turned_brick(&dir, rotation);
+        let r = turn(axis, 30.0);
+        let want = r * local * r.transpose();
+        assert_rel(c.properties.mass, m, 1e-14, rotation);
+        assert_mat(&c.properties.inertia_com, &want, 1e-13, rotation);
+        common::assert_point(
+            &c.properties.center_of_mass,
+            &Point3::from(r * centre.coords + t),
+            1.0,
+            1e-14,
+            rotation,
+        );
+        // Not the unturned box: the case can tell a lost rotation.
+        assert!(common::mat_rel(&c.properties.inertia_com, &local) > 0.05);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `to_toml` and `parse` keep every setting of every part: units, each way of giving the
+/// material (density, preset, mass), the object, a void, a thin wall, the rotation and the
+/// translation, checked key by key.
+#[test]
+fn to_toml_keeps_every_setting_of_every_part() {
+    use massprops::{MaterialEntry, PartEntry};
+    let entry = |name: &str, material: MaterialEntry| PartEntry {
+        name: name.to_owned(),
+        mesh: PathBuf::from("meshes/head.obj"),
+        object: None,
+        material,
+        rotation: None,
+        translation: [0.0; 3],
+        void: false,
+        thin_wall: None,
+        line: 0,
+    };
+    let body = BodyFile {
+        path: PathBuf::from("/nowhere/body.toml"),
+        units: "cm".to_owned(),
+        parts: vec![
+            PartEntry {
+                object: Some("head".to_owned()),
+                rotation: Some(([1e200, 0.0, -0.5], 12.25)),
+                translation: [0.1, -2.0, 3e-7],
+                ..entry("dense", MaterialEntry::Density(7850.5))
+            },
+            PartEntry {
+                void: true,
+                ..entry("cavity", MaterialEntry::Preset("steel".to_owned()))
+            },
+            entry("weighed", MaterialEntry::Mass(0.125)),
+            PartEntry {
+                thin_wall: Some(1.5),
+                mesh: PathBuf::from("shade \"1\".stl"),
+                ..entry("wall", MaterialEntry::Preset("aluminium".to_owned()))
+            },
+        ],
+    };
+    let text = body.to_toml();
+    let again = BodyFile::parse(&text, &body.path).expect("reads back");
+    assert_eq!(again.units, "cm", "units\n{text}");
+    assert_eq!(again.parts.len(), 4, "{text}");
+    for (a, b) in again.parts.iter().zip(&body.parts) {
+        let what = format!("part {:?} in\n{text}", b.name);
+        assert_eq!(a.name, b.name, "name: {what}");
+        assert_eq!(a.mesh, b.mesh, "mesh: {what}");
+        assert_eq!(a.object, b.object, "object: {what}");
+        assert_eq!(a.material, b.material, "material: {what}");
+        assert_eq!(a.void, b.void, "void: {what}");
+        assert_eq!(a.thin_wall, b.thin_wall, "thin_wall: {what}");
+        assert_eq!(a.rotation, b.rotation, "rotation: {what}");
+        assert_eq!(a.translation, b.translation, "translation: {what}");
+    }
+    // The values themselves, so that a writer and reader that both lose a key still fail.
+    assert_eq!(again.parts[0].object.as_deref(), Some("head"));
+    assert_eq!(again.parts[0].material, MaterialEntry::Density(7850.5));
+    assert!(again.parts[1].void);
+    assert_eq!(
+        again.parts[1].material,
+        MaterialEntry::Preset("steel".to_owned())
+    );
+    assert_eq!(again.parts[2].material, MaterialEntry::Mass(0.125));
+    assert_eq!(again.parts[3].thin_wall, Some(1.5));
+    assert_eq!(again.unit(), 0.01);
+    // And written again, the same text.
+    assert_eq!(again.to_toml(), text);
+}

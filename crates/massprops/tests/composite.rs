@@ -262,3 +262,68 @@ fn a_bad_part_is_named() {
     .expect_err("negative thickness");
     assert!(e.to_string().contains("thickness"), "{e}");
 }
+
+/// Each part's `share` against its closed form: the part's tensor moved to the composite's
+/// centre of mass (parallel axes), projected on the whole's principal axes (nalgebra's own
+/// eigensolver on the closed-form tensor) and divided by that principal moment. Two boxes of
+/// different densities, one turned, so that the whole's axes are none of the mesh axes and
+/// neither share is a mass fraction or a diagonal ratio.
+#[test]
+fn each_parts_share_is_its_tensor_on_the_wholes_principal_axes() {
+    let (sa, ca, rho_a) = ([0.1, 0.03, 0.05], Vector3::new(0.02, 0.3, -0.01), 7850.0);
+    let (sb, cb, rho_b) = ([0.03, 0.3, 0.04], Vector3::new(-0.01, 0.12, 0.02), 600.0);
+    let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.35)
+        * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 0.2);
+    let move_b = Vector3::new(0.03, 0.0, -0.02);
+    let c = composite(
+        &[
+            part(
+                "head",
+                cuboid(sa, [ca.x, ca.y, ca.z]),
+                Fill::Solid { density: rho_a },
+            ),
+            Part {
+                placement: Isometry3::from_parts(Translation3::from(move_b), turn),
+                ..part(
+                    "handle",
+                    cuboid(sb, [cb.x, cb.y, cb.z]),
+                    Fill::Solid { density: rho_b },
+                )
+            },
+        ],
+        &Repairs::default(),
+    )
+    .expect("two solids");
+
+    let (ma, mb) = (rho_a * sa[0] * sa[1] * sa[2], rho_b * sb[0] * sb[1] * sb[2]);
+    let r = *turn.to_rotation_matrix().matrix();
+    let (com_a, com_b) = (ca, r * cb + move_b);
+    let com = (com_a * ma + com_b * mb) / (ma + mb);
+    let about = [
+        box_tensor(ma, sa[0], sa[1], sa[2]) + steiner(ma, com_a - com),
+        r * box_tensor(mb, sb[0], sb[1], sb[2]) * r.transpose() + steiner(mb, com_b - com),
+    ];
+    let whole = about[0] + about[1];
+    assert_mat(&c.properties.inertia_com, &whole, 1e-12, "the whole");
+    let eigen = whole.symmetric_eigen();
+    let mut order = [0, 1, 2];
+    order.sort_by(|&i, &j| eigen.eigenvalues[i].total_cmp(&eigen.eigenvalues[j]));
+    for (k, &e) in order.iter().enumerate() {
+        let (moment, axis) = (eigen.eigenvalues[e], eigen.eigenvectors.column(e));
+        assert_rel(c.properties.principal.moments[k], moment, 1e-12, "moment");
+        let mut sum = 0.0;
+        for (p, tensor) in c.parts.iter().zip(&about) {
+            let want = (axis.transpose() * tensor * axis)[(0, 0)] / moment;
+            assert_rel(
+                p.share[k],
+                want,
+                1e-10,
+                &format!("{} share of I{}", p.name, k + 1),
+            );
+            sum += want;
+        }
+        assert_rel(sum, 1.0, 1e-13, "closed-form shares add up");
+    }
+    // The case tells a projection from a mass fraction.
+    assert!((c.parts[0].share - Vector3::repeat(ma / (ma + mb))).amax() > 0.01);
+}

@@ -422,3 +422,60 @@ fn an_inverted_mesh_keeps_the_signs_of_its_repairs_and_ignores_stray_faces() {
     ));
     assert_eq!(flipped.effect_on_mass, Some(0.0));
 }
+
+/// A crack of known size: the top face of a unit cube refers to copies of its corners moved by
+/// h along z (lifted or sunk), a parallel seam well inside the weld tolerance (1e-6 × √3). The
+/// mesh taken literally has the top face at 0.5 ± h, and since the open band's area vectors
+/// cancel, its divergence volume is 1 ± h/3 about any reference point; the welded mesh (the
+/// copies merge into the original corners, the lower indices) is the unit cube. So the
+/// effect is +h/3 for a lifted top and −h/3 for a sunk one, relative to a mass of 1.
+#[test]
+fn a_cracks_effect_on_mass_has_its_closed_form_value_and_sign() {
+    let h = 1e-6;
+    for (sign, what) in [(1.0, "lifted"), (-1.0, "sunk")] {
+        let mut b = cuboid(1.0, [0.0; 3]);
+        let top = b.faces[1].clone();
+        let mut moved = Vec::new();
+        for &i in &top {
+            b.positions
+                .push(b.positions[i] + Vector3::new(0.0, 0.0, sign * h));
+            moved.push(b.positions.len() - 1);
+        }
+        b.faces[1] = moved;
+        let a = volume(&b.build());
+        assert_eq!(codes(&a), ["cracks_closed"], "{what}");
+        let w = &a.warnings[0];
+        assert_eq!(w.count, 8, "{what}: boundary edges closed");
+        let Defect::CracksClosed { largest_gap } = w.defect else {
+            panic!("{w:?}")
+        };
+        assert_rel(largest_gap, h, 1e-9, what);
+        assert_rel(a.properties.mass, 1.0, 1e-14, what);
+        let effect = w.effect_on_mass.expect("known");
+        // Measured to agree to about 1e-10; the bound is far below the effect's own size.
+        assert_rel(effect, sign * h / 3.0, 1e-6, what);
+        assert_eq!(effect.signum(), sign, "{what}: the sign");
+    }
+}
+
+/// The shell method integrates the surface, so an open mesh (a box without its top) has a
+/// mass and an area but encloses no volume: `Analysis::volume` is `None` (JSON null), while a
+/// closed mesh under the same method reports its volume.
+#[test]
+fn an_open_mesh_under_the_shell_method_has_no_volume() {
+    let mut b = cuboid(1.0, [0.0; 3]);
+    b.faces.remove(1);
+    let open = b.build();
+    let a = analyze(&open, Method::Shell, MassSpec::Density(1.0)).expect("a sheet");
+    assert_eq!(a.volume, None, "{a:?}");
+    // Five unit faces of surface density 1.
+    assert_rel(a.properties.mass, 5.0, 1e-14, "five faces");
+    let closed = analyze(
+        &cuboid(1.0, [0.0; 3]).build(),
+        Method::Shell,
+        MassSpec::Density(1.0),
+    )
+    .expect("a box");
+    assert_rel(closed.volume.expect("closed"), 1.0, 1e-14, "closed box");
+    assert_rel(closed.properties.mass, 6.0, 1e-14, "six faces");
+}

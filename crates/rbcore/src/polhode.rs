@@ -153,7 +153,26 @@ mod tests {
         };
         assert_eq!(axis, 2);
         assert!((separation - 2e-6 / l.norm_squared()).abs() < 1e-12 * separation);
-        assert_eq!(Some(period), torque_free_period(&I, &l));
+        // 4K(k)/λ written out (Landau & Lifshitz §37, |L|² > 2E·I₂), K by an AGM of its own:
+        // λ² = (I₃ − I₂)(|L|² − 2E·I₁)/(I₁I₂I₃), k′² = (I₃ − I₁)(|L|² − 2E·I₂)/((I₃ − I₂)(|L|² − 2E·I₁)).
+        let beyond = |j: usize| {
+            (0..3)
+                .map(|k| (I[k] - I[j]) * l[k] * l[k] / I[k])
+                .sum::<f64>()
+        };
+        let lambda = ((I.z - I.y) * beyond(0) / (I.x * I.y * I.z)).sqrt();
+        let kp = ((I.z - I.x) * beyond(1) / ((I.z - I.y) * beyond(0))).sqrt();
+        let (mut a, mut b) = (1.0_f64, kp);
+        for _ in 0..40 {
+            (a, b) = (0.5 * (a + b), (a * b).sqrt());
+        }
+        let want = 4.0 * std::f64::consts::PI / (2.0 * a) / lambda;
+        assert!(
+            (period - want).abs() < 1e-13 * want,
+            "{period} vs 4K/λ = {want}"
+        );
+        // README's canonical figure.
+        assert!((period - 7.101450608).abs() < 1e-9, "{period}");
         let minor = I.component_mul(&Vector3::new(0.01, 10.0, 0.001));
         assert!(matches!(
             polhode(&I, &minor),

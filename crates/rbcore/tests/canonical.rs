@@ -120,27 +120,31 @@ fn structure_preserving_integrators_get_the_flip() {
 
 #[test]
 fn stable_spins_about_major_and_minor_axes_keep_energy() {
+    // Measured worst |ΔE|/E over 120 s (major / minor axis spin): midpoint-Cayley 1.9e-16 /
+    // 2.8e-16, splitting 5.6e-10 / 2.0e-9, exact 1.9e-16 / 4.3e-16; bounds about 10× those.
     for omega in [[0.01, 0.01, 10.0], [10.0, 0.01, 0.01]] {
         let axis = if omega[2] > 1.0 { 2 } else { 0 };
-        for integrator in [
-            Integrator::MidpointCayley,
-            Integrator::Splitting,
-            Integrator::Exact,
+        for (integrator, energy_tol) in [
+            (Integrator::MidpointCayley, 3e-15),
+            (Integrator::Splitting, 2e-8),
+            (Integrator::Exact, 5e-15),
         ] {
             let mut sim = simulation(MOMENTS, omega, integrator, RotationModel::Full, DT);
             let d = run(&mut sim, 120.0);
             let e0 = d[0].energy;
+            let mut worst: f64 = 0.0;
             for s in &d {
-                assert!(
-                    ((s.energy - e0) / e0).abs() < 1e-6,
-                    "{integrator} {omega:?}"
-                );
+                worst = worst.max(((s.energy - e0) / e0).abs());
                 // Stays near the axis: the spin component never drops below 99.9 %.
                 assert!(
                     s.omega_principal[axis] > 0.999 * omega[axis],
                     "{integrator} {omega:?}"
                 );
             }
+            assert!(
+                worst < energy_tol,
+                "{integrator} {omega:?}: max |ΔE|/E = {worst:e}"
+            );
         }
     }
 }
