@@ -278,7 +278,7 @@ fn to_toml_keeps_every_setting_of_every_part() {
     };
     let body = BodyFile {
         path: PathBuf::from("/nowhere/body.toml"),
-        units: "cm".to_owned(),
+        units: massprops::LengthUnit::Cm,
         parts: vec![
             PartEntry {
                 object: Some("head".to_owned()),
@@ -300,7 +300,7 @@ fn to_toml_keeps_every_setting_of_every_part() {
     };
     let text = body.to_toml();
     let again = BodyFile::parse(&text, &body.path).expect("reads back");
-    assert_eq!(again.units, "cm", "units\n{text}");
+    assert_eq!(again.units, massprops::LengthUnit::Cm, "units\n{text}");
     assert_eq!(again.parts.len(), 4, "{text}");
     for (a, b) in again.parts.iter().zip(&body.parts) {
         let what = format!("part {:?} in\n{text}", b.name);
