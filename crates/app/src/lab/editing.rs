@@ -1,0 +1,100 @@
+//! The lab's edits of a body made of parts, one method per command: split a mesh into its
+//! parts, add a part, edit one (a material, void or thin wall re-sums the masses; a placement
+//! moves one part; see [`LoadedBody::edit_part`]), remove one, save the body file. Each leaves
+//! every specimen running with p and L kept, or changes nothing and says why.
+
+use std::path::Path;
+use std::sync::Arc;
+
+use massprops::PartEntry;
+
+use super::body::{EditEffect, LoadedBody};
+use super::error::LabError;
+use super::parts::{self, PartModel};
+use super::Lab;
+
+impl Lab {
+    /// [`Command::SplitIntoParts`](super::Command::SplitIntoParts).
+    pub(super) fn split_into_parts(&mut self) -> Result<(), LabError> {
+        let parts = self.current_parts(false)?;
+        let n = parts.len();
+        self.rebody(parts)?;
+        self.info(format!("{n} parts"));
+        Ok(())
+    }
+
+    /// [`Command::AddPart`](super::Command::AddPart).
+    pub(super) fn add_part(&mut self, path: &Path) -> Result<(), LabError> {
+        let mut parts = self.current_parts(true)?;
+        parts.extend(parts::from_mesh_file(path)?);
+        self.rebody(parts)?;
+        self.info(format!("added {}", path.display()));
+        Ok(())
+    }
+
+    /// [`Command::EditPart`](super::Command::EditPart).
+    pub(super) fn edit_part(
+        &mut self,
+        index: usize,
+        entry: PartEntry,
+        visible: bool,
+    ) -> Result<(), LabError> {
+        let body = self.primary().body();
+        if body.composition.is_none() {
+            // A single mesh becomes a body of one part: a change of topology.
+            let mut parts = self.current_parts(true)?;
+            let part = parts.get_mut(index).ok_or(LabError::NoPart(index))?;
+            part.entry = entry;
+            part.visible = visible;
+            if !parts.iter().any(|p| p.visible) {
+                return Err(LabError::LastShown);
+            }
+            return self.rebody(parts);
+        }
+        let (edited, effect) = body.edit_part(index, entry, visible)?;
+        self.set_body(Arc::new(edited), effect == EditEffect::Drawing)
+    }
+
+    /// [`Command::RemovePart`](super::Command::RemovePart).
+    pub(super) fn remove_part(&mut self, index: usize) -> Result<(), LabError> {
+        let mut parts = self.current_parts(true)?;
+        if index >= parts.len() {
+            return Err(LabError::NoPart(index));
+        }
+        if parts.len() == 1 {
+            return Err(LabError::LastPart);
+        }
+        parts.remove(index);
+        self.rebody(parts)
+    }
+
+    /// [`Command::SaveBody`](super::Command::SaveBody).
+    pub(super) fn save_body(&mut self, path: &Path) -> Result<(), LabError> {
+        let parts = self.current_parts(true)?;
+        let written = parts::save(&parts, path)?;
+        self.info(format!("saved {} ({written})", path.display()));
+        Ok(())
+    }
+
+    /// The body's parts: its own, or for a single mesh at the current density, the whole mesh
+    /// as one part (`whole`) or its file's parts.
+    fn current_parts(&self, whole: bool) -> Result<Vec<PartModel>, LabError> {
+        let body = self.primary().body();
+        if let Some(c) = &body.composition {
+            return Ok(c.parts.clone());
+        }
+        let Some((path, file)) = &body.file else {
+            return Err(LabError::AlreadyParts(body.name.clone()));
+        };
+        parts::from_single(&body.name, path, file, self.primary().density(), whole)
+    }
+
+    /// Every specimen goes on with the body `parts` make, p and L kept (a change of topology:
+    /// the body is assembled again). Nothing changes if the parts make no body or one specimen
+    /// cannot take it.
+    fn rebody(&mut self, parts: Vec<PartModel>) -> Result<(), LabError> {
+        let name = self.primary().body().name.clone();
+        let body = Arc::new(LoadedBody::from_parts(&name, parts)?);
+        self.set_body(body, true)
+    }
+}
