@@ -170,9 +170,37 @@ fn reset_settings_spin_presets_and_reset_from_the_panel() {
 /// warning is shown in the app's words.
 #[test]
 fn a_long_named_open_mesh_keeps_the_layout() {
+    long_named_open_mesh_keeps_the_layout(harness(), "1280x800");
+}
+
+/// README: "The window fits at 1280×800, 1366×768 and 1920×1080 (1.5 pixels per point)". The
+/// same open mesh with the long name at 1366×768.
+#[test]
+fn the_layout_fits_at_1366x768() {
+    long_named_open_mesh_keeps_the_layout(harness_of_size([1366.0, 768.0]), "1366x768");
+}
+
+/// 1920×1080 pixels at 1.5 pixels per point: a 1280×720-point screen.
+#[test]
+fn the_layout_fits_at_1920x1080_with_1_5_pixels_per_point() {
+    let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
+    let h = Harness::builder()
+        .with_size([1920.0 / 1.5, 1080.0 / 1.5])
+        .with_pixels_per_point(1.5)
+        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
+    assert_eq!(h.ctx.pixels_per_point(), 1.5);
+    long_named_open_mesh_keeps_the_layout(h, "1920x1080 at 1.5 px/pt");
+}
+
+/// Loads an open mesh under a long path into `h` and checks the layout while it loads and after:
+/// the side panel keeps its default width (the one it has at 1280×800), the 3D toolbar stays one
+/// row, and no control of the toolbar, the plot bar or the side panel's Body section is cut off
+/// by the window's edges or by the side panel's.
+fn long_named_open_mesh_keeps_the_layout(mut h: Harness<'static, LabApp>, size: &str) {
     let dir = std::env::temp_dir().join(format!(
-        "inertia-lab-ui-{}-a-folder-whose-name-is-much-longer-than-the-side-panel-is-wide",
-        std::process::id()
+        "inertia-lab-ui-{}-{}-a-folder-whose-name-is-much-longer-than-the-side-panel-is-wide",
+        std::process::id(),
+        size.replace([' ', '/'], "-")
     ));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let torus = std::fs::read_to_string(
@@ -193,10 +221,23 @@ fn a_long_named_open_mesh_keeps_the_layout() {
     let path = dir.join("scanned_turbine_blade_with_holes_export_v2_final.obj");
     std::fs::write(&path, open).expect("write");
 
-    let mut h = harness();
+    // The side panel's width at 1280×800, where the default was chosen.
+    let default_edge = {
+        let mut reference = harness();
+        frames(&mut reference, 2);
+        reference.get_by_label("Frame").rect().min.x
+    };
     frames(&mut h, 2);
     let frame_button = |h: &Harness<'static, LabApp>| h.get_by_label("Frame").rect();
     let before = frame_button(&h);
+    // Panel edges are rounded to whole pixels: within one pixel of it at 1.5 pixels per point.
+    let pixel = 1.0 / h.ctx.pixels_per_point();
+    assert!(
+        (before.min.x - default_edge).abs() <= pixel,
+        "{size}: the side panel opens at its default width ({} vs {default_edge})",
+        before.min.x
+    );
+    assert_fits(&h, size);
     h.get_by_label("Path").focus();
     h.get_by_label("Path")
         .type_text(&path.display().to_string());
@@ -204,6 +245,11 @@ fn a_long_named_open_mesh_keeps_the_layout() {
     h.get_by_label("Load").click();
     for _ in 0..500 {
         h.step();
+        assert_eq!(
+            frame_button(&h).min.x,
+            before.min.x,
+            "{size}: the side panel kept its width while loading"
+        );
         if h.state().lab().loading().is_none() {
             break;
         }
@@ -218,13 +264,52 @@ fn a_long_named_open_mesh_keeps_the_layout() {
     assert!(!lab.primary().body().analysis.warnings.is_empty());
     assert!(h.query_by_label_contains("The mesh has holes").is_some());
     let after = frame_button(&h);
-    assert_eq!(after.min.x, before.min.x, "the side panel kept its width");
+    assert_eq!(
+        after.min.x, before.min.x,
+        "{size}: the side panel kept its width"
+    );
     let axes = h.get_by_label("Principal axes").rect();
     assert!(
         (axes.center().y - after.center().y).abs() < 2.0,
-        "the toolbar is one row"
+        "{size}: the toolbar is one row"
     );
+    assert_fits(&h, size);
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// No control is cut off: the 3D toolbar's first and last controls, the plot bar's last ones and
+/// the side panel's Path row lie wholly inside the window, the toolbar's right of the side panel
+/// and the side panel's left of the toolbar.
+fn assert_fits(h: &Harness<'static, LabApp>, size: &str) {
+    let screen = h.ctx.content_rect();
+    let side_edge = h.get_by_label("Frame").rect().min.x;
+    let rect_of = |label: &str| {
+        h.query_all_by_label(label)
+            .map(|n| n.rect())
+            .reduce(|a, b| a.union(b))
+            .unwrap_or_else(|| panic!("{size}: no widget labelled {label:?}"))
+    };
+    for label in ["Frame", "Principal axes", "Sphere", "Equivalent"] {
+        let r = rect_of(label);
+        assert!(
+            screen.contains_rect(r) && r.min.x >= side_edge,
+            "{size}: toolbar's {label:?} at {r:?} is cut off (window {screen:?})"
+        );
+    }
+    for label in ["Export CSV", "Record"] {
+        let r = rect_of(label);
+        assert!(
+            screen.contains_rect(r),
+            "{size}: plot bar's {label:?} at {r:?} is cut off (window {screen:?})"
+        );
+    }
+    for label in ["Path", "Load", "Open mesh…"] {
+        let r = rect_of(label);
+        assert!(
+            screen.contains_rect(r) && r.max.x <= side_edge,
+            "{size}: side panel's {label:?} at {r:?} is cut off (panel edge {side_edge})"
+        );
+    }
 }
 
 /// A mesh with a face listed twice: the diagnostics say so with the effect on the mass, and

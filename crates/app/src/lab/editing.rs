@@ -8,10 +8,10 @@ use std::sync::Arc;
 
 use massprops::PartEntry;
 
+use super::Lab;
 use super::body::{EditEffect, LoadedBody};
 use super::error::LabError;
 use super::parts::{self, PartModel};
-use super::Lab;
 
 impl Lab {
     /// [`Command::SplitIntoParts`](super::Command::SplitIntoParts).
@@ -78,7 +78,7 @@ impl Lab {
 
     /// The body's parts: its own, or for a single mesh at the current density, the whole mesh
     /// as one part (`whole`) or its file's parts.
-    fn current_parts(&self, whole: bool) -> Result<Vec<PartModel>, LabError> {
+    pub(super) fn current_parts(&self, whole: bool) -> Result<Vec<PartModel>, LabError> {
         let body = self.primary().body();
         if let Some(c) = &body.composition {
             return Ok(c.parts.clone());

@@ -11,6 +11,7 @@
 pub mod body;
 pub mod clock;
 mod command;
+mod editing;
 mod error;
 pub mod geometry;
 pub mod history;
@@ -27,7 +28,7 @@ mod tests;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use body::{EditEffect, LoadedBody};
+use body::LoadedBody;
 use clock::FrameClock;
 pub use command::{Command, Message};
 pub use error::LabError;
@@ -216,78 +217,17 @@ impl Lab {
             }
             Command::Notify(message) => self.message = Some(message),
             Command::DismissMessage => self.message = None,
-            Command::SplitIntoParts => {
-                let parts = self.current_parts(false)?;
-                let n = parts.len();
-                self.rebody(parts)?;
-                self.info(format!("{n} parts"));
-            }
-            Command::AddPart(path) => {
-                let mut parts = self.current_parts(true)?;
-                parts.extend(parts::from_mesh_file(&path)?);
-                self.rebody(parts)?;
-                self.info(format!("added {}", path.display()));
-            }
+            Command::SplitIntoParts => self.split_into_parts()?,
+            Command::AddPart(path) => self.add_part(&path)?,
             Command::EditPart {
                 index,
                 entry,
                 visible,
-            } => {
-                let body = self.primary().body();
-                if body.composition.is_none() {
-                    // A single mesh becomes a body of one part: a change of topology.
-                    let mut parts = self.current_parts(true)?;
-                    let part = parts.get_mut(index).ok_or(LabError::NoPart(index))?;
-                    part.entry = *entry;
-                    part.visible = visible;
-                    if !parts.iter().any(|p| p.visible) {
-                        return Err(LabError::LastShown);
-                    }
-                    return self.rebody(parts);
-                }
-                let (edited, effect) = body.edit_part(index, *entry, visible)?;
-                self.set_body(Arc::new(edited), effect == EditEffect::Drawing)?;
-            }
-            Command::RemovePart(index) => {
-                let mut parts = self.current_parts(true)?;
-                if index >= parts.len() {
-                    return Err(LabError::NoPart(index));
-                }
-                if parts.len() == 1 {
-                    return Err(LabError::LastPart);
-                }
-                parts.remove(index);
-                self.rebody(parts)?;
-            }
-            Command::SaveBody(path) => {
-                let parts = self.current_parts(true)?;
-                let written = parts::save(&parts, &path)?;
-                self.info(format!("saved {} ({written})", path.display()));
-            }
+            } => self.edit_part(index, *entry, visible)?,
+            Command::RemovePart(index) => self.remove_part(index)?,
+            Command::SaveBody(path) => self.save_body(&path)?,
         }
         Ok(())
-    }
-
-    /// The body's parts: its own, or for a single mesh at the current density, the whole mesh
-    /// as one part (`whole`) or its file's parts.
-    fn current_parts(&self, whole: bool) -> Result<Vec<parts::PartModel>, LabError> {
-        let body = self.primary().body();
-        if let Some(c) = &body.composition {
-            return Ok(c.parts.clone());
-        }
-        let Some((path, file)) = &body.file else {
-            return Err(LabError::AlreadyParts(body.name.clone()));
-        };
-        parts::from_single(&body.name, path, file, self.primary().density(), whole)
-    }
-
-    /// Every specimen goes on with the body `parts` make, p and L kept (a change of topology:
-    /// the body is assembled again). Nothing changes if the parts make no body or one specimen
-    /// cannot take it.
-    fn rebody(&mut self, parts: Vec<parts::PartModel>) -> Result<(), LabError> {
-        let name = self.primary().body().name.clone();
-        let body = Arc::new(LoadedBody::from_parts(&name, parts)?);
-        self.set_body(body, true)
     }
 
     /// Every specimen goes on with `body`, p and L kept; `redraw`: what is drawn changed.
