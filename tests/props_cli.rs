@@ -189,6 +189,38 @@ fn human_table_has_ten_digits_and_json_every_digit() {
     assert!(rows[0].contains(" 0 "), "{}", rows[0]);
 }
 
+/// A centre-of-mass coordinate that is round-off (below 1e-12 of the body's size) prints as 0 in
+/// the table, for a mesh and for a body of parts; the JSON keeps the number as computed.
+#[test]
+fn round_off_in_the_centre_of_mass_prints_as_zero_in_the_table() {
+    let com_line = |args: &[&str]| {
+        let out = run(args);
+        assert!(out.status.success(), "{args:?}");
+        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        let line = text
+            .lines()
+            .find(|l| l.trim_start().starts_with("centre of mass"))
+            .map(str::to_owned);
+        line.unwrap_or_else(|| panic!("no centre of mass in {text}"))
+    };
+    let fields = |line: &str| -> Vec<String> {
+        line.split_whitespace().skip(3).map(str::to_owned).collect()
+    };
+    // The T-handle is symmetric in z: its z is -5.3e-19 as integrated.
+    let j = props_json(&["assets/t_handle.obj"]);
+    let z = f(&j["center_of_mass"][2]);
+    assert!(z != 0.0 && z.abs() < 1e-17, "{z}");
+    let line = com_line(&["props", "assets/t_handle.obj"]);
+    assert_eq!(fields(&line), ["0", "-0.005923076923", "0"], "{line}");
+    // A real coordinate of the same size relative to the body is kept: the handle moved by 1e-9.
+    let line = com_line(&["props", "assets/t_handle.obj", "--scale", "1e-9"]);
+    assert_eq!(fields(&line)[1], "-5.923076923e-12", "{line}");
+    // The hammer's body file: z is 3.7e-18 as summed.
+    let line = com_line(&["props", "assets/hammer.toml"]);
+    assert_eq!(fields(&line)[2], "0", "{line}");
+    assert_ne!(fields(&line)[1], "0", "{line}");
+}
+
 /// A given mass is reported as given, in the table and the JSON (ρ·V with ρ = m/V would not be).
 #[test]
 fn given_mass_is_reported_exactly() {
