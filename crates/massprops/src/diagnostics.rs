@@ -1,6 +1,6 @@
 //! Mesh diagnostics, always computed beside the numbers: what a user must know to trust them.
 //!
-//! Edges come from [`EdgeTable`](crate::edges::EdgeTable): an edge used once is open (a hole),
+//! Edges come from `EdgeTable`: an edge used once is open (a hole),
 //! more than twice non-manifold, and twice in the same direction means the two faces wind
 //! inconsistently (one is flipped).
 

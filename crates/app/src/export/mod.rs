@@ -1,8 +1,8 @@
 //! Export of mass properties to the engines and robot formats people paste them into.
 //!
 //! [`export`] is pure: mass properties (mesh units, kg) and [`ExportOptions`] in, text and
-//! warnings out. All frame, handedness, unit and sign work happens in [`frames`]; each format
-//! module only writes the numbers [`frames::convert`] gives it, in its target's field order.
+//! warnings out. All frame, handedness, unit and sign work happens in `frames`; each format
+//! module only writes the numbers `frames::convert` gives it, in its target's field order.
 //!
 //! | format | frame read by the target | units | rotation written as | source |
 //! |---|---|---|---|---|

@@ -63,7 +63,7 @@ pub enum Command {
         /// The specimen held.
         specimen: SpecimenId,
     },
-    /// Run the primary and up to [`MAX_COPIES`] copies of it from the same start, each copy
+    /// Run the primary and up to [`MAX_COPIES`](super::MAX_COPIES) copies of it from the same start, each copy
     /// changed by its [`Variant`]; an empty list ends the comparison (the primary goes on).
     Compare(Vec<Variant>),
     /// Show a line (outcomes the GUI learns itself: a cancelled dialog, a finished recording).

@@ -1,15 +1,15 @@
 //! What real meshes get wrong, found, located, repaired where the intent is clear, and measured
 //! where it is not: the step between reading a file and integrating it.
 //!
-//! In order ([`clean`]):
-//! 1. **Cracks** ([`cracks`]): boundary vertices closer than a float32-sized gap are merged, so
+//! In order (`clean`):
+//! 1. **Cracks** (`cracks`): boundary vertices closer than a float32-sized gap are merged, so
 //!    an exporter's rounding does not open the mesh.
-//! 2. **Duplicate faces** ([`duplicates`]): a vertex cycle listed twice with the same winding is
+//! 2. **Duplicate faces** (`duplicates`): a vertex cycle listed twice with the same winding is
 //!    counted once; a face with its reverse (an internal wall) adds nothing and both go.
-//! 3. **Shells** ([`shells`]): faces joined by manifold edges form shells, each closed or open.
-//! 4. **Holes** ([`holes`]): each boundary loop of an open shell is capped by a fan from its
+//! 3. **Shells** (`shells`): faces joined by manifold edges form shells, each closed or open.
+//! 4. **Holes** (`holes`): each boundary loop of an open shell is capped by a fan from its
 //!    centroid, so the result is that of the capped solid.
-//! 5. **Nesting and overlap** ([`overlap`]): closed shells are compared pairwise by vertical
+//! 5. **Nesting and overlap** (`overlap`): closed shells are compared pairwise by vertical
 //!    rays through a jittered grid (exact along each ray, stratified sampling across rays),
 //!    which finds which shell lies inside which and estimates doubly counted volume.
 //! 6. **Orientation**: a shell that is not inside another, or the shells inside it, wound inward
@@ -17,7 +17,7 @@
 //!    (solid) and inward (cavity) with depth, and one that does not is reported.
 //!
 //! Each finding becomes a [`Warning`] with its effect on the volume; the caller divides by the
-//! volume it integrates. Non-planar polygons get an uncertainty from [`nonplanar`].
+//! volume it integrates. Non-planar polygons get an uncertainty from `nonplanar`.
 
 mod cracks;
 mod duplicates;

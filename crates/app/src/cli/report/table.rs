@@ -1,5 +1,5 @@
 //! The human `props` table: one mesh ([`single`]) or a body of parts ([`composite`]), numbers to
-//! [`TABLE_DIGITS`] significant digits.
+//! `TABLE_DIGITS` significant digits.
 
 use std::fmt::Write as _;
 

@@ -18,7 +18,7 @@ pub struct OrbitCamera {
     pub target: Point3<f64>,
     /// Angle about world y (rad); 0 looks along −z.
     pub yaw: f64,
-    /// Elevation (rad), within ±[`PITCH_LIMIT`].
+    /// Elevation (rad), within ±`PITCH_LIMIT`.
     pub pitch: f64,
     /// Eye-to-target distance.
     pub distance: f64,

@@ -107,7 +107,7 @@ impl Overlay {
         });
     }
 
-    /// The overlay for the lab's current state: every layer of [`LAYERS`] in order, over the
+    /// The overlay for the lab's current state: every layer of `LAYERS` in order, over the
     /// primary specimen, with what the panels have selected outlined.
     pub fn build(lab: &Lab, now: Instant, selection: Selection) -> Self {
         let specimen = lab.primary();
