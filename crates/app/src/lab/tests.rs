@@ -592,6 +592,20 @@ fn reset_and_presets_start_the_documented_spin() {
     assert_eq!(lab.settings(), &AppSettings::default());
 }
 
+/// Edits part `index` and checks the lab took it.
+fn edit_ok(lab: &mut Lab, index: usize, entry: massprops::PartEntry, visible: bool) {
+    lab.apply(Command::EditPart {
+        index,
+        entry: Box::new(entry),
+        visible,
+    });
+    assert!(
+        lab.message().is_none_or(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+}
+
 /// The hammer sample's body and the parts it is made of.
 fn hammer() -> (Lab, Vec<parts::PartModel>) {
     let mut lab = lab();
@@ -614,16 +628,7 @@ fn a_material_edit_re_sums_the_masses_without_assembling_the_body_again() {
     let mut head = parts[0].entry.clone();
     head.material = massprops::MaterialEntry::Preset("brass".to_owned());
     head.thin_wall = Some(0.004);
-    lab.apply(Command::EditPart {
-        index: 0,
-        entry: Box::new(head.clone()),
-        visible: true,
-    });
-    assert!(
-        lab.message().is_none_or(|m| !m.error),
-        "{:?}",
-        lab.message()
-    );
+    edit_ok(&mut lab, 0, head.clone(), true);
     let after = lab.primary().body();
     // The same drawing and picking index (shared, not copied), nothing to upload again.
     assert!(Arc::ptr_eq(&before.mesh, &after.mesh));
@@ -667,16 +672,7 @@ fn a_placement_edit_moves_one_part_and_picks_as_a_fresh_index_would() {
     let mut handle = parts[1].entry.clone();
     handle.translation = [0.05, -0.02, 0.01];
     handle.rotation = Some(([0.0, 0.0, 1.0], 20.0));
-    lab.apply(Command::EditPart {
-        index: 1,
-        entry: Box::new(handle.clone()),
-        visible: true,
-    });
-    assert!(
-        lab.message().is_none_or(|m| !m.error),
-        "{:?}",
-        lab.message()
-    );
+    edit_ok(&mut lab, 1, handle.clone(), true);
     assert_eq!(lab.generation(), generation + 1, "moved: drawn again");
     let after = lab.primary().body();
     let mut edited = parts.clone();
@@ -719,16 +715,7 @@ fn a_placement_edit_moves_one_part_and_picks_as_a_fresh_index_would() {
 fn hiding_a_part_is_drawn_again_and_the_last_shown_part_stays() {
     let (mut lab, parts) = hammer();
     let generation = lab.generation();
-    lab.apply(Command::EditPart {
-        index: 0,
-        entry: Box::new(parts[0].entry.clone()),
-        visible: false,
-    });
-    assert!(
-        lab.message().is_none_or(|m| !m.error),
-        "{:?}",
-        lab.message()
-    );
+    edit_ok(&mut lab, 0, parts[0].entry.clone(), false);
     assert_eq!(lab.generation(), generation + 1);
     lab.apply(Command::EditPart {
         index: 1,
