@@ -136,7 +136,8 @@ pub enum Defect {
         volume: f64,
         /// One standard error of `volume`.
         uncertainty: f64,
-        /// Pairs compared within the time budget, of `candidates` whose boxes meet: fewer means
+        /// Pairs compared within the work budget ([`Repairs::overlap_budget`]), of `candidates`
+        /// whose boxes meet: fewer means
         /// the comparison was cut short and some overlaps may be missing.
         compared: usize,
         /// Pairs of closed shells whose bounding boxes meet.

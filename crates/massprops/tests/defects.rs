@@ -215,7 +215,7 @@ fn a_zero_budget_says_the_comparison_was_cut_short() {
     let mut b = cuboid(2.0, [1.0, 1.0, 1.0]);
     b.append(&cuboid(2.0, [2.0, 1.0, 1.0]));
     let repairs = Repairs {
-        overlap_budget: std::time::Duration::ZERO,
+        overlap_budget: 0,
         ..Default::default()
     };
     let a =
@@ -230,6 +230,108 @@ fn a_zero_budget_says_the_comparison_was_cut_short() {
         }
     ));
     assert!(a.shells.iter().all(|s| s.depth.is_none()));
+}
+
+/// A city block: `n × n` unit boxes of varying heights on a grid 0.8 apart, each overlapping
+/// its neighbours (the kind of scene a game level is: thousands of closed shells through one
+/// another), with the exact volume the pairs of boxes share.
+fn city_block(n: usize) -> (PolyMesh, f64) {
+    let mut b = MeshBuilder::default();
+    let mut boxes = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let height = 1.0 + ((i * 7 + j * 3) % 5) as f64 * 0.5;
+            let (x, y) = (i as f64 * 0.8, j as f64 * 0.8);
+            let lo = [x, y, 0.0];
+            let hi = [x + 1.0, y + 1.0, height];
+            let center = Point3::new(x + 0.5, y + 0.5, height / 2.0);
+            b.append(&shapes::cuboid(Vector3::new(1.0, 1.0, height), center));
+            boxes.push((lo, hi));
+        }
+    }
+    let mut shared = 0.0;
+    for (k, (alo, ahi)) in boxes.iter().enumerate() {
+        for (blo, bhi) in &boxes[k + 1..] {
+            let overlap: f64 = (0..3)
+                .map(|d| (ahi[d].min(bhi[d]) - alo[d].max(blo[d])).max(0.0))
+                .product();
+            shared += overlap;
+        }
+    }
+    (b.build(), shared)
+}
+
+/// The overlap warning's (volume, uncertainty, compared, candidates).
+fn overlap_of(a: &Analysis) -> (f64, f64, usize, usize) {
+    match warning(a, "overlapping_shells").defect {
+        Defect::OverlappingShells {
+            volume,
+            uncertainty,
+            compared,
+            candidates,
+            ..
+        } => (volume, uncertainty, compared, candidates),
+        _ => unreachable!("an overlap warning"),
+    }
+}
+
+#[test]
+fn a_city_block_of_overlapping_shells_is_compared_in_full_and_its_overlap_is_exact() {
+    let (mesh, shared) = city_block(12);
+    let a = analyze_with(
+        &mesh,
+        Method::Volume,
+        MassSpec::Density(1.0),
+        &Repairs::default(),
+    )
+    .expect("volume");
+    let (volume, uncertainty, compared, candidates) = overlap_of(&a);
+    // Each box meets its 8 neighbours (4 by a side band, 4 by a corner): 2·11·12 + 2·11·11.
+    assert_eq!(candidates, 2 * 11 * 12 + 2 * 11 * 11);
+    assert_eq!(
+        compared, candidates,
+        "the default budget finishes the block"
+    );
+    assert!(
+        (volume - shared).abs() <= 5.0 * uncertainty + 1e-9 * shared,
+        "{volume} ± {uncertainty} vs {shared}"
+    );
+    assert!(uncertainty < 0.05 * shared, "{uncertainty}");
+}
+
+#[test]
+fn a_work_budget_cuts_the_comparison_at_the_same_place_whatever_the_load() {
+    let (mesh, _) = city_block(8);
+    let repairs = Repairs {
+        // Enough for about a third of the pairs (each costs 24 triangles and 4 096 lines).
+        overlap_budget: 60 * 4120,
+        ..Repairs::default()
+    };
+    let run = || analyze_with(&mesh, Method::Volume, MassSpec::Density(1.0), &repairs);
+    let idle = run().expect("volume");
+    let (_, _, compared, candidates) = overlap_of(&idle);
+    assert_eq!(compared, 60);
+    assert!(candidates > compared);
+    // Busy cores (as when other programs run) change nothing: the budget counts work, not time.
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let burners: Vec<_> = (0..3)
+        .map(|_| {
+            let stop = stop.clone();
+            std::thread::spawn(move || {
+                let mut x = 0u64;
+                while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    x = x.wrapping_mul(6364136223846793005).wrapping_add(1);
+                }
+                x
+            })
+        })
+        .collect();
+    let loaded = run().expect("volume");
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    for b in burners {
+        let _ = b.join();
+    }
+    assert_eq!(loaded, idle);
 }
 
 #[test]
@@ -381,7 +483,7 @@ fn a_cavity_stays_a_cavity_when_the_comparison_runs_out_of_time() {
     inner.faces.iter_mut().for_each(|f| f.reverse());
     b.append(&inner);
     let no_time = Repairs {
-        overlap_budget: std::time::Duration::ZERO,
+        overlap_budget: 0,
         ..Default::default()
     };
     let a =

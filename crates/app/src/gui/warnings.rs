@@ -93,8 +93,8 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             );
             if compared < candidates {
                 text.push_str(&format!(
-                    " Only {compared} of {candidates} pairs of parts could be compared in the \
-                     time allowed; others may overlap too."
+                    " Only {compared} of {candidates} pairs of parts could be compared within the \
+                     work allowed; others may overlap too."
                 ));
             }
             text

@@ -27,7 +27,6 @@ mod overlap;
 mod shells;
 
 use std::borrow::Cow;
-use std::time::Duration;
 
 use nalgebra::{Point3, Vector3};
 
@@ -39,6 +38,11 @@ use crate::{MeshError, PolyMesh};
 
 pub use shells::{Orientation, Shell};
 
+/// The default [`Repairs::overlap_budget`]: 250 million work units, about 60 000 pairs of small
+/// shells. Measured (release, 2 cores): a city block of 3 600 overlapping boxes, 14 042 pairs,
+/// is compared in full in 4.1 s (8.1 s of CPU); the budget, spent in full, is about 35 s of CPU.
+pub const OVERLAP_BUDGET: u64 = 250_000_000;
+
 /// How the defects of a mesh are handled: a plain struct with documented defaults, like the
 /// options of a solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,10 +51,12 @@ pub struct Repairs {
     pub weld: Weld,
     /// What happens to holes that remain. Default [`Holes::Cap`].
     pub holes: Holes,
-    /// The most time spent comparing closed shells for nesting and overlap; pairs not compared
-    /// in time leave the shells' depth unknown and the output says it was cut short.
-    /// Default 2 s.
-    pub overlap_budget: Duration,
+    /// The most work spent comparing closed shells for nesting and overlap, in work units (each
+    /// pair of shells whose boxes meet costs the triangles of both and the 4 096 lines it casts). Pairs beyond it are
+    /// not compared: their shells' depth is unknown and the output says the comparison was cut
+    /// short. A count of work, not a time, so that the same file gives the same result on any
+    /// machine at any load. Default [`OVERLAP_BUDGET`].
+    pub overlap_budget: u64,
 }
 
 impl Default for Repairs {
@@ -58,7 +64,7 @@ impl Default for Repairs {
         Self {
             weld: Weld::Auto,
             holes: Holes::Cap,
-            overlap_budget: Duration::from_secs(2),
+            overlap_budget: OVERLAP_BUDGET,
         }
     }
 }
@@ -193,7 +199,7 @@ fn orient(
     solids: &[bool],
     relations: &overlap::Relations,
 ) -> Result<(), MeshError> {
-    // Where the nesting is not known (the comparison ran out of time), a shell is turned only
+    // Where the nesting is not known (the comparison's work budget ran out), a shell is turned only
     // with the whole mesh: when all the solids together enclose a negative volume.
     let total: f64 = (0..parts.len())
         .filter(|&s| solids[s])

@@ -9,8 +9,6 @@
 //! the uncertainty (one standard error). A shell is inside another when its bounding box is, and
 //! no line finds a stretch of it outside the other.
 
-use std::time::{Duration, Instant};
-
 use nalgebra::Point3;
 
 use super::shells::Part;
@@ -40,7 +38,7 @@ pub(crate) struct Relations {
     /// For each shell, the closed shells it lies inside (`None`: not known).
     containers: Vec<Option<Vec<usize>>>,
     overlaps: Vec<Overlap>,
-    /// Pairs whose boxes meet, and how many of them were compared within the budget.
+    /// Pairs whose boxes meet, and how many of them were compared within the work budget.
     candidates: usize,
     compared: usize,
 }
@@ -126,14 +124,12 @@ struct Solid {
     hi: Point3<f64>,
 }
 
-/// Compares every pair of closed shells whose bounding boxes meet, until `budget` runs out.
-pub(crate) fn compare(
-    mesh: &PolyMesh,
-    parts: &[Part],
-    solids: &[bool],
-    budget: Duration,
-) -> Relations {
-    let started = Instant::now();
+/// Compares the pairs of closed shells whose bounding boxes meet, in order, as long as the work
+/// fits in `budget` (work units: a pair costs the triangles of both shells and the lines of its
+/// grid). What is
+/// compared, and so the result, depends on the mesh and the budget alone, never on the machine
+/// or its load; the pairs are probed in parallel (each on its own, so the order changes nothing).
+pub(crate) fn compare(mesh: &PolyMesh, parts: &[Part], solids: &[bool], budget: u64) -> Relations {
     let (lo, hi) = mesh.bounding_box();
     let tolerance = LENGTH_TOLERANCE * (hi - lo).norm();
     let closed: Vec<usize> = (0..parts.len()).filter(|&s| solids[s]).collect();
@@ -165,24 +161,47 @@ pub(crate) fn compare(
     }
     pairs.sort_unstable();
     relations.candidates = pairs.len();
-    let mut solids: Vec<Option<Solid>> = (0..closed.len()).map(|_| None).collect();
+    // Which pairs the budget allows, decided before any is probed: a pair costs the triangles of
+    // both shells and the grid's lines.
+    let triangle_count = |k: usize| -> u64 {
+        parts[closed[k]]
+            .faces
+            .iter()
+            .map(|&f| mesh.face(f as usize).len().saturating_sub(2) as u64)
+            .sum()
+    };
+    let costs: Vec<u64> = (0..closed.len()).map(triangle_count).collect();
     let mut unknown = vec![false; parts.len()];
+    let mut spent = 0u64;
+    let mut chosen = Vec::with_capacity(pairs.len());
     for &(i, j) in &pairs {
-        if started.elapsed() > budget {
+        let cost = costs[i] + costs[j] + (REPLICATES * CELLS * CELLS) as u64;
+        if spent.saturating_add(cost) > budget {
             unknown[closed[i]] = true;
             unknown[closed[j]] = true;
             continue;
         }
-        for k in [i, j] {
-            if solids[k].is_none() {
-                solids[k] = Some(triangles(mesh, &parts[closed[k]].faces, boxes[k]));
-            }
-        }
-        let (Some(a), Some(b)) = (&solids[i], &solids[j]) else {
-            continue;
+        spent += cost;
+        chosen.push((i, j));
+    }
+    let mut needed = vec![false; closed.len()];
+    for &(i, j) in &chosen {
+        needed[i] = true;
+        needed[j] = true;
+    }
+    let built: Vec<Option<Solid>> = each(needed.len(), &|k| {
+        needed[k].then(|| triangles(mesh, &parts[closed[k]].faces, boxes[k]))
+    });
+    let found: Vec<Option<Probe>> = each(chosen.len(), &|n| {
+        let (i, j) = chosen[n];
+        let (Some(a), Some(b)) = (&built[i], &built[j]) else {
+            return None;
         };
         let seed = ((closed[i] as u64) << 32) ^ closed[j] as u64;
-        let found = probe(a, b, tolerance, seed);
+        Some(probe(a, b, tolerance, seed))
+    });
+    for (&(i, j), found) in chosen.iter().zip(found) {
+        let Some(found) = found else { continue };
         relations.compared += 1;
         let (sa, sb) = (closed[i], closed[j]);
         match (found.a_inside_b, found.b_inside_a) {
@@ -203,6 +222,19 @@ pub(crate) fn compare(
         }
     }
     relations
+}
+
+/// `f(0..n)`, on the rayon pool with the `parallel` feature; in index order either way.
+fn each<T: Send>(n: usize, f: &(dyn Fn(usize) -> T + Sync)) -> Vec<T> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        (0..n).into_par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        (0..n).map(f).collect()
+    }
 }
 
 fn push(list: &mut Option<Vec<usize>>, s: usize) {

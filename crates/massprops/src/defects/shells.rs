@@ -41,7 +41,7 @@ pub struct Shell {
     /// The sign of `volume`.
     pub orientation: Orientation,
     /// How many closed shells enclose this one (0: an outer surface; 1: a cavity's wall or a
-    /// part inside one); `None` when not known (the comparison's time budget ran out, or the
+    /// part inside one); `None` when not known (the comparison's work budget ran out, or the
     /// numbers do not use the volume).
     pub depth: Option<usize>,
 }

@@ -40,8 +40,9 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
                     .unwrap_or_default();
                 format!(
                     "{count} pair(s) of closed shells overlap (shells {}; {faces}): their common \
-                     volume, {} ± {} (one standard error, mesh units cubed), is counted twice, \
-                     adding {effect} ± {u} to the mass; the numbers are the sum of the shells",
+                     volume, {} ± {} (mesh units cubed; ± one standard error of the sampling by \
+                     lines, not of the lines' spacing), is counted twice, adding {effect} ± {u} \
+                     to the mass; the numbers are the sum of the shells",
                     shell_pairs(pairs),
                     significant(*volume, 3),
                     significant(*uncertainty, 2),
@@ -51,7 +52,7 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
                 let _ = write!(
                     text,
                     " (only {compared} of the {candidates} pairs of shells whose boxes meet were \
-                     compared within the time budget)"
+                     compared within the work budget; the others may overlap too)"
                 );
             }
             text
