@@ -318,7 +318,7 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
     assert_eq!(w["face_lines"], serde_json::json!([10, 11, 12, 13]));
     let message = w["message"].as_str().expect("text");
     assert!(
-        message.contains("1 (line 10)") && message.contains("+17 %"),
+        message.contains("1 (line 10)") && message.contains("differ by -17 %"),
         "{message}"
     );
     assert_eq!(j["shells"][0]["closed"], false);
@@ -1093,4 +1093,27 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
         j["volume"]
     );
     assert!(close(f(&j["mass"]), 6.0, 1e-15));
+}
+
+/// A warning's words state its effect with the sign of `effect_on_mass`: a unit cube without its
+/// top is capped, and without the cap (the open file taken literally, minus the capped solid)
+/// its mass would be less, so both the number and the words are negative (they were "caps add
+/// +17 %" beside −0.167).
+#[test]
+fn the_holes_message_has_the_sign_of_its_effect() {
+    let open = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    let file = TempFile::new("open-capped.obj", open);
+    let j = props_json(&[file.path()]);
+    let holes = j["warnings"]
+        .as_array()
+        .expect("warnings")
+        .iter()
+        .find(|w| w["code"] == "holes_capped")
+        .expect("holes_capped");
+    let effect = f(&holes["effect_on_mass"]);
+    assert!(effect < -0.1, "{effect}");
+    let message = holes["message"].as_str().expect("message");
+    assert!(message.contains("the mass would differ by -"), "{message}");
+    assert!(!message.contains('+'), "{message}");
 }

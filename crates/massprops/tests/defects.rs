@@ -91,6 +91,27 @@ fn faces_listed_twice_count_once() {
     assert!(!a.flipped);
 }
 
+/// Zero-area faces repeated on the same vertices (as scanner exports write them) are degenerate,
+/// not duplicates: only the real copy is a duplicate face (racecar/hokuyo.obj had 166
+/// "duplicates", 165 of them degenerate).
+#[test]
+fn degenerate_faces_are_not_counted_again_as_duplicates() {
+    let mut b = cuboid(1.0, [0.0; 3]);
+    let first = b.faces[0].clone();
+    // A sliver on three corners of one edge (two of them the same point), three times over.
+    for _ in 0..3 {
+        b.faces.push(vec![first[0], first[1], first[1]]);
+    }
+    // And one real copy of a face.
+    b.faces.push(first);
+    let a = volume(&b.build());
+    assert_rel(a.properties.mass, 1.0, 1e-15, "counted once");
+    let duplicates = warning(&a, "duplicate_faces");
+    assert_eq!(duplicates.count, 1, "{:?}", a.warnings);
+    assert_eq!(duplicates.faces, [9]);
+    assert_eq!(warning(&a, "degenerate_faces").count, 3);
+}
+
 #[test]
 fn an_internal_wall_between_two_boxes_goes_and_joins_them() {
     // Two unit boxes sharing the face x = 1, each listing it (opposite windings).

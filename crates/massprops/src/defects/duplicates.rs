@@ -11,6 +11,7 @@ use nalgebra::{Point3, Vector3};
 use super::shells::Part;
 use super::{Builder, Cleaned, face_volume, input_faces};
 use crate::analysis::{Defect, Warning};
+use crate::diagnostics::face_shape;
 use crate::integrals::mirtich::newell_normal;
 
 /// Removes duplicates; returns whether any face was removed.
@@ -38,6 +39,10 @@ pub(super) fn remove(
     }
     candidates.sort_unstable();
     candidates.dedup();
+    // A face of no area is degenerate (reported as such, adding nothing): several of them on
+    // the same vertices are not copies of a face.
+    let mut corners = Vec::new();
+    candidates.retain(|&f| !face_shape(mesh, f as usize, &mut corners).1);
     let mut keyed: Vec<(Vec<u32>, bool, u32)> = candidates
         .iter()
         .map(|&f| {

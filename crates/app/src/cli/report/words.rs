@@ -73,10 +73,10 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             cap_area_fraction,
         } => format!(
             "{count} hole(s) ({boundary_edges} open edges; {faces}) capped by fans from their \
-             centres: the caps are {} of the surface and add {} to the mass (how much the result \
-             depends on how the holes are closed)",
-            percent(*cap_area_fraction),
-            w.effect_on_mass.map(|e| percent(-e)).unwrap_or_default()
+             centres, which are {} of the surface: without the caps the mass would differ by {} \
+             (how much the result depends on how the holes are closed)",
+            percent(*cap_area_fraction).replace('+', ""),
+            w.effect_on_mass.map(percent).unwrap_or_default()
         ),
         Defect::NonplanarFaces { uncertainty } => format!(
             "{count} non-planar polygon(s) ({faces}), each integrated projected onto its best-fit \
