@@ -94,8 +94,8 @@ pub struct Analysis {
 pub struct Warning {
     /// What kind of defect, with its own data.
     pub defect: Defect,
-    /// How many: faces for the face defects (faces removed, for duplicates), edges for the edge
-    /// defects and cracks, shells for `flipped` and `nested_shell`, shell pairs for overlaps,
+    /// How many: faces for the face defects (faces removed, for duplicates; faces turned for
+    /// `inconsistent_winding` when they could be), edges for the edge defects and cracks, shells for `flipped` and `nested_shell`, shell pairs for overlaps,
     /// holes for `holes_capped`, records for `two_corner_faces`.
     pub count: usize,
     /// Some of the faces concerned, as zero-based indices into the mesh given to [`analyze`],
@@ -173,7 +173,10 @@ pub enum Defect {
         lines: Vec<usize>,
     },
     /// Edges whose two faces traverse them in the same direction: some faces are wound the other
-    /// way, and the volume method counts them as negative volume.
+    /// way. For the volume, each shell's faces are turned to agree with their neighbours (the
+    /// count is then the faces turned, the effect what they took away as wound); a shell whose
+    /// faces cannot agree (one-sided) is counted as wound (the count is then its edges, the
+    /// effect unknown).
     InconsistentWinding {
         /// Some neighbouring face pairs (zero-based) that wind in the same sense along their
         /// shared edge: one face of each is flipped.
@@ -307,6 +310,8 @@ fn analyze_diagnosed(
     let enclosed = uses_volume || diagnostics.is_closed();
     let volume = solid.as_ref().ok().filter(|_| enclosed).map(|s| s.volume);
     let solid_flipped = enclosed && solid.as_ref().is_ok_and(|s| s.flipped);
+    // The solid, when the numbers come from it: checked against the laws of real bodies below.
+    let mut checked_solid = None;
     let (properties, density, scale) = match (method, spec) {
         (Method::Shell, _) => {
             let (unit, area) = shell_properties(body, 1.0)?;
@@ -340,6 +345,7 @@ fn analyze_diagnosed(
                 // Kept exactly: ρ·V with ρ = m/V would round it (0.2 → 0.20000000000000004).
                 exact = exact.with_mass(m)?;
             }
+            checked_solid = Some(exact);
             let p = match method {
                 Method::Volume => exact,
                 _ => approximation(mesh, method, exact.mass)?,
@@ -360,6 +366,9 @@ fn analyze_diagnosed(
         solid_flipped,
         scale,
     );
+    if let Some(solid) = &checked_solid {
+        crate::laws::check(solid, mesh, &warnings)?;
+    }
     Ok(Analysis {
         method,
         density,
@@ -514,7 +523,10 @@ fn warnings(
             effect_on_mass: Some(0.0),
         });
     }
-    if inconsistent > 0 {
+    // Faces turned to agree with their neighbours are reported by the repair; what remains is
+    // a shell whose faces cannot agree.
+    let repaired_winding = w.iter().any(|w| w.code() == "inconsistent_winding");
+    if inconsistent > 0 && !repaired_winding {
         let pairs: Vec<(usize, usize)> = inconsistent_examples
             .iter()
             .map(|&(a, b)| (to_input(a), to_input(b)))

@@ -126,6 +126,16 @@ pub enum MeshError {
         /// The principal moments found, when the mass was positive.
         moments: Option<[f64; 3]>,
     },
+    /// The solid's mass properties break a law every real body satisfies (a positive mass,
+    /// positive moments with I1 + I2 ≥ I3, the centre of mass inside the hull): the defects of
+    /// the mesh, counted as they are, make them impossible, so they are not reported.
+    #[error("no real body has these mass properties: {law}; {cause}")]
+    Impossible {
+        /// Which law is broken, with the numbers.
+        law: String,
+        /// The defects found that can cause it, and what to do.
+        cause: String,
+    },
     /// The shell method found no surface area.
     #[error("the mesh has zero surface area")]
     ZeroArea,

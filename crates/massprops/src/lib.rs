@@ -44,6 +44,7 @@ mod error;
 pub mod integrals;
 #[cfg(feature = "io")]
 pub mod io;
+mod laws;
 pub mod materials;
 pub mod mesh;
 pub mod principal;

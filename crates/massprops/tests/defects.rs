@@ -355,6 +355,82 @@ fn a_work_budget_cuts_the_comparison_at_the_same_place_whatever_the_load() {
     assert_eq!(loaded, idle);
 }
 
+/// A height field (a terrain), open along its border: capped by a fan from the border's centre,
+/// the "solid" between the sheet and the cap is made of pieces of both signs, and its moments
+/// are no body's (pybullet's terrain.obj had I1 + I2 < I3 and its centre of mass outside its own
+/// box). It is refused, naming the law and the caps; the shell method measures it.
+#[test]
+fn a_capped_terrain_is_refused_with_the_law_it_breaks_and_the_caps_named() {
+    let n = 20;
+    let mut b = MeshBuilder::default();
+    for j in 0..=n {
+        for i in 0..=n {
+            let (x, y) = (i as f64 / n as f64 * 10.0, j as f64 / n as f64 * 10.0);
+            let z = 1.5 * (0.9 * x).sin() * (0.7 * y).cos() + 0.3 * x;
+            b.positions.push(Point3::new(x, y, z));
+        }
+    }
+    let at = |i: usize, j: usize| j * (n + 1) + i;
+    for j in 0..n {
+        for i in 0..n {
+            b.faces
+                .push(vec![at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+    let mesh = b.build();
+    let e = analyze(&mesh, Method::Volume, MassSpec::Density(1.0)).expect_err("no body");
+    assert!(
+        matches!(e, massprops::MeshError::Impossible { .. }),
+        "{e:?}"
+    );
+    let text = e.to_string();
+    assert!(
+        text.contains("not all positive") || text.contains("I1 + I2"),
+        "{text}"
+    );
+    assert!(
+        text.contains("holes capped") && text.contains("shell method"),
+        "{text}"
+    );
+    let sheet = analyze(&mesh, Method::Shell, MassSpec::Density(1.0)).expect("a sheet");
+    assert!(sheet.properties.mass > 100.0, "{}", sheet.properties.mass);
+}
+
+/// A closed mesh with 5 % of its faces flipped (an exporter's slip, a bad merge) integrates as
+/// the surface it is: the faces are turned to agree with their neighbours, the volume is the
+/// unflipped mesh's to round-off, and the warning counts the faces turned and their effect.
+#[test]
+fn a_mesh_with_five_percent_of_its_faces_flipped_has_its_own_volume() {
+    let good = shapes::torus(1.0, 0.35, 64, 32).triangulated();
+    let mut bad = good.clone();
+    let flipped: Vec<usize> = (0..bad.faces.len()).filter(|f| f % 20 == 7).collect();
+    for &f in &flipped {
+        bad.faces[f].reverse();
+    }
+    let reference = volume(&good.build());
+    let a = volume(&bad.build());
+    assert_rel(
+        a.volume.expect("v"),
+        reference.volume.expect("v"),
+        1e-12,
+        "volume",
+    );
+    assert_mat(
+        &a.properties.inertia_com,
+        &reference.properties.inertia_com,
+        1e-12,
+        "tensor",
+    );
+    let w = warning(&a, "inconsistent_winding");
+    assert_eq!(w.count, flipped.len());
+    assert_eq!(w.faces, flipped[..5]);
+    // Taken literally, each flipped face takes its cone away twice: the effect is negative and
+    // about twice their share (5 %) of the volume.
+    let effect = w.effect_on_mass.expect("known");
+    assert!((-0.12..-0.08).contains(&effect), "{effect}");
+    assert_eq!(codes(&a), ["inconsistent_winding"]);
+}
+
 #[test]
 fn float32_cracks_are_closed_not_called_holes() {
     // The top face of a unit cube refers to copies of its corners moved by up to 1e-8.

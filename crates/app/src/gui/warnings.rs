@@ -133,10 +133,20 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
                 .iter()
                 .map(|&(a, b)| format!("{} and {}", face(a, lines), face(b, lines)))
                 .collect();
+            if w.effect_on_mass.is_some() {
+                return format!(
+                    "Some faces pointed the wrong way (between {}): they were turned to agree \
+                     with their neighbours, and the numbers are those of the mesh made \
+                     consistent. Recalculate the normals in your modelling program to fix the \
+                     file itself.",
+                    pairs.join(", ")
+                );
+            }
             format!(
                 "Some faces point the wrong way (between faces {}: one of each pair is \
-                 flipped); they count as negative volume, so the numbers are wrong. Recalculate \
-                 the normals (make them consistent) in your modelling program.",
+                 flipped) and cannot all be made to agree (a one-sided surface); they count as \
+                 negative volume, so the numbers are wrong. Recalculate the normals (make them \
+                 consistent) in your modelling program.",
                 pairs.join(", ")
             )
         }

@@ -25,6 +25,7 @@ mod holes;
 pub(crate) mod nonplanar;
 mod overlap;
 mod shells;
+mod winding;
 
 use std::borrow::Cow;
 
@@ -143,6 +144,9 @@ pub(crate) fn clean<'a>(
     }
     let mut parts = shells::split(&work.mesh, &work.table);
     if duplicates::remove(&mut work, &parts, reference, uses_volume) {
+        parts = shells::split(&work.mesh, &work.table);
+    }
+    if uses_volume && winding::reorient(&mut work, &parts, reference) {
         parts = shells::split(&work.mesh, &work.table);
     }
     if uses_volume && parts.iter().any(|s| !s.closed) {

@@ -88,11 +88,21 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
              no volume",
             join(lines)
         ),
-        Defect::InconsistentWinding { face_pairs } => format!(
-            "{count} edge(s) where neighbouring faces wind in opposite senses (faces {}; one of \
-             each pair is flipped): the volume method counts flipped faces as negative volume",
-            face_pairs_text(face_pairs, lines)
-        ),
+        Defect::InconsistentWinding { face_pairs } => match w.effect_on_mass {
+            Some(_) => format!(
+                "{count} face(s) wound against their neighbours ({faces}; e.g. the pairs {}) \
+                 were turned to agree with them: counted as wound they would have changed the \
+                 mass by {effect}",
+                face_pairs_text(face_pairs, lines)
+            ),
+            None => format!(
+                "{count} edge(s) where neighbouring faces wind in opposite senses (faces {}; one \
+                 of each pair is flipped) on a surface whose faces cannot all agree (one-sided, \
+                 like a Möbius band): the volume method counts the flipped faces as negative \
+                 volume",
+                face_pairs_text(face_pairs, lines)
+            ),
+        },
         Defect::Flipped { whole: true, .. } => "the faces wind clockwise seen from outside \
              (negative signed volume): the results are those of the outward-wound mesh"
             .to_owned(),
