@@ -661,7 +661,7 @@ fn godot_warns_when_it_must_drop_products_of_inertia() {
 }
 
 #[test]
-fn output_file_frames_and_unphysical_bodies() {
+fn output_file_frames_and_repaired_bodies() {
     let b = &bodies()[0];
     let out_file = TempFile::new("out.xml", b"");
     let out = run(&[
@@ -715,8 +715,9 @@ fn output_file_frames_and_unphysical_bodies() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(stdout.contains("mass=\"1.125\""), "{stdout}");
 
-    // A 1 × 0.2 × 0.2 bar whose two end faces are wound the wrong way within the one shell:
-    // a negative principal moment. Refused with exit code 3 and an explanation.
+    // A 1 × 0.2 × 0.2 bar whose two end faces are wound the wrong way within the one shell
+    // (taken literally, a negative principal moment; this was refused): the faces are turned to
+    // agree with their neighbours and the bar is exported, with the warning on stderr.
     let mut bar = shapes::cuboid(Vector3::new(1.0, 0.2, 0.2), Point3::origin());
     for f in &mut bar.faces {
         let x: Vec<f64> = f.iter().map(|&i| bar.positions[i].x).collect();
@@ -726,13 +727,15 @@ fn output_file_frames_and_unphysical_bodies() {
     }
     let bad = TempFile::new("bad.obj", shapes::to_obj("bad", "bad", &bar).as_bytes());
     let out = run(&["export", bad.path(), "--format", "mjcf"]);
-    assert_eq!(out.status.code(), Some(3));
+    assert_eq!(out.status.code(), Some(0));
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
-        stderr.contains("not positive definite") && stderr.contains("flipped faces"),
+        stderr.contains("2 face(s) wound against their neighbours"),
         "{stderr}"
     );
-    assert!(out.stdout.is_empty());
+    // 0.04 m³ of water.
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("mass=\"40\""), "{stdout}");
 
     // The hammer (modelled in metres) read as millimetres at PLA density is far below
     // MuJoCo's mjMINVAL: exported, with a warning.

@@ -343,8 +343,9 @@ f 1 2 3 4\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\nf 5 8 7 6\n";
     assert!(close(f(&j["volume"]), 1.0, 1e-15));
     assert!(close(f(&j["inertia_com"][0][0]), 1.0 / 6.0, 1e-14));
 
-    // The outward cube with face 1 (y = 0) wound the other way: its four edges are named by
-    // the face pairs that meet there, each pair holding face 1.
+    // The outward cube with face 1 (y = 0) wound the other way: the face is turned to agree
+    // with its four neighbours (the unit cube), and the warning counts the one face turned and
+    // names the four pairs that met wrongly, each holding face 1.
     let one_flipped = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
 f 1 4 3 2\nf 5 6 2 1\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\n";
     let file = TempFile::new("one-flipped.obj", one_flipped);
@@ -355,7 +356,9 @@ f 1 4 3 2\nf 5 6 2 1\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\n";
         .iter()
         .find(|w| w["code"] == "inconsistent_winding")
         .expect("the winding warning");
-    assert_eq!(w["count"], 4);
+    assert_eq!(w["count"], 1);
+    assert_eq!(w["faces"], serde_json::json!([1]));
+    assert!(close(f(&j["volume"]), 1.0, 1e-15), "{}", j["volume"]);
     let pairs = w["face_pairs"].as_array().expect("face pairs");
     assert_eq!(pairs.len(), 4);
     for p in pairs {

@@ -172,6 +172,14 @@ pub enum Defect {
         /// Some of their one-based file lines.
         lines: Vec<usize>,
     },
+    /// A binary STL whose header counts fewer triangles than the whole 50-byte records that
+    /// follow it (some exporters leave the count 0): every record was read.
+    StlTriangleCount {
+        /// The count the header gives.
+        header: u64,
+        /// The records the file holds, all read.
+        records: u64,
+    },
     /// Edges whose two faces traverse them in the same direction: some faces are wound the other
     /// way. For the volume, each shell's faces are turned to agree with their neighbours (the
     /// count is then the faces turned, the effect what they took away as wound); a shell whose
@@ -203,7 +211,8 @@ pub enum Defect {
 impl Defect {
     /// A stable snake_case identifier, for machine-readable output: `duplicate_faces`,
     /// `opposite_duplicate_faces`, `overlapping_shells`, `nested_shell`, `cracks_closed`,
-    /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `inconsistent_winding`,
+    /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `stl_triangle_count`,
+    /// `inconsistent_winding`,
     /// `flipped`, `degenerate_faces`, `nonmanifold_edges`.
     pub fn code(&self) -> &'static str {
         match self {
@@ -215,6 +224,7 @@ impl Defect {
             Defect::HolesCapped { .. } => "holes_capped",
             Defect::NonplanarFaces { .. } => "nonplanar_faces",
             Defect::TwoCornerFaces { .. } => "two_corner_faces",
+            Defect::StlTriangleCount { .. } => "stl_triangle_count",
             Defect::InconsistentWinding { .. } => "inconsistent_winding",
             Defect::Flipped { .. } => "flipped",
             Defect::DegenerateFaces => "degenerate_faces",
@@ -586,7 +596,7 @@ fn rank(code: &str) -> Option<usize> {
 }
 
 /// The order warnings are listed in.
-const ORDER: [&str; 12] = [
+const ORDER: [&str; 13] = [
     "duplicate_faces",
     "opposite_duplicate_faces",
     "overlapping_shells",
@@ -595,6 +605,7 @@ const ORDER: [&str; 12] = [
     "holes_capped",
     "nonplanar_faces",
     "two_corner_faces",
+    "stl_triangle_count",
     "inconsistent_winding",
     "flipped",
     "degenerate_faces",

@@ -641,6 +641,25 @@ fn stl_binary_and_ascii_give_the_obj_result() {
         );
         assert_mat(&p.inertia_com, &want.inertia_com, 1e-14, what);
     }
+    // A header that counts 0 triangles (or too few) before whole records: read by the file's
+    // size, and said so (it was "empty: it has no faces").
+    for announced in [0u32, 5] {
+        let mut zero = binary_stl(&b, b"binary");
+        zero[80..84].copy_from_slice(&announced.to_le_bytes());
+        let file = parse_mesh(&zero, Path::new("zero.stl")).expect("read by its size");
+        assert_eq!(file.mesh.face_count(), 12, "{announced}");
+        let p = mass_properties(&file.mesh, 3.0).expect("closed");
+        assert_rel(p.mass, want.mass, 1e-15, "by size");
+        let codes: Vec<&str> = file.warnings.iter().map(|w| w.code()).collect();
+        assert_eq!(codes, ["stl_triangle_count"]);
+        assert_eq!(
+            file.warnings[0].defect,
+            Defect::StlTriangleCount {
+                header: u64::from(announced),
+                records: 12
+            }
+        );
+    }
     // A truncated binary file is malformed, not a panic.
     let mut short = binary_stl(&b, b"binary");
     short.truncate(84 + 50 * 5 + 7);

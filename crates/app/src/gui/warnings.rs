@@ -15,6 +15,7 @@ pub fn title(w: &Warning) -> String {
         Defect::HolesCapped { .. } => "Holes capped",
         Defect::NonplanarFaces { .. } => "Non-flat polygons",
         Defect::TwoCornerFaces { .. } => "Faces with two corners",
+        Defect::StlTriangleCount { .. } => "Wrong triangle count in the file",
         Defect::InconsistentWinding { .. } => "Faces pointing the wrong way",
         Defect::Flipped { whole: true, .. } => "Inside-out mesh",
         Defect::Flipped { .. } => "Inside-out parts",
@@ -127,6 +128,11 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             "The file has faces with fewer than three corners (line {}), which are lines, not \
              faces: they were skipped.",
             list(lines)
+        ),
+        Defect::StlTriangleCount { header, records } => format!(
+            "The file's header says it holds {header} triangles, but {records} follow it: all \
+             {records} were read. The program that wrote it left the count wrong; nothing needs \
+             fixing here."
         ),
         Defect::InconsistentWinding { face_pairs } => {
             let pairs: Vec<String> = face_pairs

@@ -23,9 +23,20 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         Some(rest) if ascii => rest,
         _ => bytes,
     };
-    if !ascii {
-        check_binary_length(bytes).map_err(malformed)?;
-    }
+    let mut warnings = Vec::new();
+    let recounted;
+    let bytes = if ascii {
+        bytes
+    } else {
+        match check_binary_length(bytes).map_err(malformed)? {
+            Some(records) => {
+                warnings.push(count_warning(bytes, records));
+                recounted = with_count(bytes, records);
+                &recounted
+            }
+            None => bytes,
+        }
+    };
     let mut corners = Vec::new();
     let mut part_names = Vec::new();
     let mut face_parts = Vec::new();
@@ -72,7 +83,7 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     Ok(MeshFile {
         mesh,
         face_lines,
-        warnings: Vec::new(),
+        warnings,
         part_names,
         face_parts,
     })
@@ -164,7 +175,9 @@ fn facet_lines(bytes: &[u8]) -> Vec<u32> {
 /// A binary STL is an 84-byte header, whose last four bytes
 /// count the triangles, then 50 bytes a triangle. A file cut short (an interrupted download or
 /// copy) is named as such, with how much is missing, rather than as an I/O error mid-triangle.
-fn check_binary_length(bytes: &[u8]) -> Result<(), String> {
+/// A header that counts fewer triangles than the whole records that follow (an exporter that
+/// leaves the count 0) gives `Some(records)`: the file is read by its size.
+fn check_binary_length(bytes: &[u8]) -> Result<Option<u64>, String> {
     let Some(count) = bytes.get(80..84) else {
         return Err(format!(
             "the file is cut short: {} bytes, less than a binary STL's 84-byte header (and it is \
@@ -184,7 +197,41 @@ fn check_binary_length(bytes: &[u8]) -> Result<(), String> {
             announced - 1
         ));
     }
-    Ok(())
+    let body = len - 84;
+    if body.is_multiple_of(50) && body / 50 > announced {
+        return Ok(Some(body / 50));
+    }
+    Ok(None)
+}
+
+/// The header's count, as read.
+fn header_count(bytes: &[u8]) -> u64 {
+    bytes.get(80..84).map_or(0, |c| {
+        u64::from(u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+    })
+}
+
+/// The warning for a header that counts fewer triangles than the file holds.
+fn count_warning(bytes: &[u8], records: u64) -> crate::Warning {
+    crate::Warning {
+        defect: crate::Defect::StlTriangleCount {
+            header: header_count(bytes),
+            records,
+        },
+        count: 1,
+        faces: Vec::new(),
+        effect_on_mass: None,
+    }
+}
+
+/// A copy of a binary STL with its header's count set to `records` (so the reader reads them
+/// all); a count beyond `u32` cannot be written and leaves the file as it is.
+fn with_count(bytes: &[u8], records: u64) -> Vec<u8> {
+    let mut copy = bytes.to_vec();
+    if let Ok(n) = u32::try_from(records) {
+        copy[80..84].copy_from_slice(&n.to_le_bytes());
+    }
+    copy
 }
 
 /// A binary STL whose free-form 80-byte header starts with `"solid "` (many CAD exporters write

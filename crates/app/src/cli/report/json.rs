@@ -179,6 +179,9 @@ fn warning_json(w: &Warning, lines: &[u32]) -> Value {
         }),
         Defect::NonplanarFaces { uncertainty } => json!({ "uncertainty": uncertainty }),
         Defect::TwoCornerFaces { lines } => json!({ "lines": lines }),
+        Defect::StlTriangleCount { header, records } => {
+            json!({ "header_count": header, "records": records })
+        }
         Defect::InconsistentWinding { face_pairs } => json!({
             "face_pairs": face_pairs.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
         }),

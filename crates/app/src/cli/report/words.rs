@@ -88,6 +88,11 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
              no volume",
             join(lines)
         ),
+        Defect::StlTriangleCount { header, records } => format!(
+            "the binary STL header counts {header} triangle(s) but {records} whole 50-byte \
+             records follow it: all {records} were read (the header's count is wrong; some \
+             exporters leave it 0)"
+        ),
         Defect::InconsistentWinding { face_pairs } => match w.effect_on_mass {
             Some(_) => format!(
                 "{count} face(s) wound against their neighbours ({faces}; e.g. the pairs {}) \
