@@ -735,7 +735,13 @@ fn output_file_frames_and_repaired_bodies() {
     );
     // 0.04 m³ of water.
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(stdout.contains("mass=\"40\""), "{stdout}");
+    let mass: f64 = stdout
+        .split("mass=\"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .and_then(|m| m.parse().ok())
+        .expect("a mass");
+    assert!((mass - 40.0).abs() < 1e-12, "{stdout}");
 
     // The hammer (modelled in metres) read as millimetres at PLA density is far below
     // MuJoCo's mjMINVAL: exported, with a warning.

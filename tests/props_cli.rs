@@ -367,7 +367,7 @@ f 1 4 3 2\nf 5 6 2 1\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\n";
     }
     let message = w["message"].as_str().expect("text");
     assert!(
-        message.contains("faces 0 (line 9) and 1 (line 10)"),
+        message.contains("met wrongly: 0 (line 9) and 1 (line 10)"),
         "{message}"
     );
 }

@@ -95,9 +95,9 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
         ),
         Defect::InconsistentWinding { face_pairs } => match w.effect_on_mass {
             Some(_) => format!(
-                "{count} face(s) wound against their neighbours ({faces}; e.g. the pairs {}) \
-                 were turned to agree with them: counted as wound they would have changed the \
-                 mass by {effect}",
+                "{count} face(s) wound against their neighbours ({faces}; pairs that met \
+                 wrongly: {}) were turned to agree with them: counted as wound they would have \
+                 changed the mass by {effect}",
                 face_pairs_text(face_pairs, lines)
             ),
             None => format!(
