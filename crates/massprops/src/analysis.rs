@@ -143,6 +143,17 @@ pub enum Defect {
         /// Pairs of closed shells whose bounding boxes meet.
         candidates: usize,
     },
+    /// Closed shells that pass through themselves (consistently wound, yet with a winding number
+    /// of ±2 or more inside): that volume is counted twice (the result is as counted; the effect
+    /// is the estimate, which adds to `overlapping_shells`' for the total counted twice).
+    SelfOverlappingShell {
+        /// Some of these shells (indices into [`Analysis::shells`]).
+        shells: Vec<usize>,
+        /// Estimated volume counted more than once, in the mesh's units cubed.
+        volume: f64,
+        /// One standard error of `volume` (of the sampling by lines).
+        uncertainty: f64,
+    },
     /// A closed shell whose winding disagrees with its depth: wound outward inside a solid (a
     /// cavity's wall wound the wrong way, or a part inside another), so its volume counts twice.
     NestedShell {
@@ -210,7 +221,7 @@ pub enum Defect {
 
 impl Defect {
     /// A stable snake_case identifier, for machine-readable output: `duplicate_faces`,
-    /// `opposite_duplicate_faces`, `overlapping_shells`, `nested_shell`, `cracks_closed`,
+    /// `opposite_duplicate_faces`, `overlapping_shells`, `self_overlapping_shell`, `nested_shell`, `cracks_closed`,
     /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `stl_triangle_count`,
     /// `inconsistent_winding`,
     /// `flipped`, `degenerate_faces`, `nonmanifold_edges`.
@@ -219,6 +230,7 @@ impl Defect {
             Defect::DuplicateFaces => "duplicate_faces",
             Defect::OppositeDuplicateFaces => "opposite_duplicate_faces",
             Defect::OverlappingShells { .. } => "overlapping_shells",
+            Defect::SelfOverlappingShell { .. } => "self_overlapping_shell",
             Defect::NestedShell { .. } => "nested_shell",
             Defect::CracksClosed { .. } => "cracks_closed",
             Defect::HolesCapped { .. } => "holes_capped",
@@ -596,10 +608,11 @@ fn rank(code: &str) -> Option<usize> {
 }
 
 /// The order warnings are listed in.
-const ORDER: [&str; 13] = [
+const ORDER: [&str; 14] = [
     "duplicate_faces",
     "opposite_duplicate_faces",
     "overlapping_shells",
+    "self_overlapping_shell",
     "nested_shell",
     "cracks_closed",
     "holes_capped",

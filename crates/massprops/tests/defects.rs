@@ -431,6 +431,58 @@ fn a_mesh_with_five_percent_of_its_faces_flipped_has_its_own_volume() {
     assert_eq!(codes(&a), ["inconsistent_winding"]);
 }
 
+/// A prism on a pentagram {5/2} is one closed, consistently wound shell that passes through
+/// itself: its outline winds twice around the central pentagon, so the volume method counts that
+/// pentagonal prism twice (the integral is the winding number's). It is named, with the volume
+/// counted twice: the height times the inner pentagon's area, (5/2) ρ² sin 72° with
+/// ρ = cos 72° / cos 36° of the star's radius.
+#[test]
+fn a_shell_that_passes_through_itself_is_named_with_the_volume_counted_twice() {
+    let height = 0.7;
+    let star: Vec<Point2<f64>> = (0..5)
+        .map(|k| {
+            let angle = std::f64::consts::FRAC_PI_2 + (2 * k % 5) as f64 * 72f64.to_radians();
+            Point2::new(angle.cos(), angle.sin())
+        })
+        .collect();
+    let mesh = shapes::prism(&star, 0.0, height).build();
+    let a = volume(&mesh);
+    let w = warning(&a, "self_overlapping_shell");
+    let Defect::SelfOverlappingShell {
+        ref shells,
+        volume: doubled,
+        uncertainty,
+    } = w.defect
+    else {
+        unreachable!("its code")
+    };
+    assert_eq!((w.count, shells.as_slice()), (1, [0].as_slice()));
+    let inner = 72f64.to_radians().cos() / 36f64.to_radians().cos();
+    let pentagon = 2.5 * inner * inner * 72f64.to_radians().sin();
+    let expected = height * pentagon;
+    assert!(
+        (doubled - expected).abs() <= 5.0 * uncertainty + 0.02 * expected,
+        "{doubled} ± {uncertainty} vs {expected}"
+    );
+    // Counted as it is (the star's own area once, the pentagon again): the effect is the
+    // pentagon's share of that.
+    let counted = a.volume.expect("v");
+    let effect = w.effect_on_mass.expect("known");
+    assert!(
+        (effect - expected / counted).abs() < 0.03 * expected / counted,
+        "{effect}"
+    );
+    // A prism on a pentagon does not pass through itself.
+    let pentagon: Vec<Point2<f64>> = (0..5)
+        .map(|k| {
+            let angle = std::f64::consts::FRAC_PI_2 + k as f64 * 72f64.to_radians();
+            Point2::new(angle.cos(), angle.sin())
+        })
+        .collect();
+    let plain = volume(&shapes::prism(&pentagon, 0.0, height).build());
+    assert!(plain.warnings.is_empty(), "{:?}", plain.warnings);
+}
+
 #[test]
 fn float32_cracks_are_closed_not_called_holes() {
     // The top face of a unit cube refers to copies of its corners moved by up to 1e-8.

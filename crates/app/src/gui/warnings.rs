@@ -11,6 +11,7 @@ pub fn title(w: &Warning) -> String {
         Defect::OppositeDuplicateFaces => "Internal walls",
         Defect::OverlappingShells { .. } => "Overlapping parts",
         Defect::NestedShell { .. } => "Part inside a part",
+        Defect::SelfOverlappingShell { .. } => "Part passing through itself",
         Defect::CracksClosed { .. } => "Cracks closed",
         Defect::HolesCapped { .. } => "Holes capped",
         Defect::NonplanarFaces { .. } => "Non-flat polygons",
@@ -100,6 +101,16 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             }
             text
         }
+        Defect::SelfOverlappingShell {
+            volume,
+            uncertainty,
+            ..
+        } => format!(
+            "A closed part passes through itself ({faces}): the volume where it does, about \
+             {volume:.3e} ± {uncertainty:.1e} (mesh units cubed), is counted twice, so the mass \
+             shown is too high by that much. Remove the self-intersection (a boolean union of \
+             the part with itself) in your modelling program."
+        ),
         Defect::NestedShell { .. } => format!(
             "A closed part lies inside another and points outward ({faces}), so its volume counts \
              a second time. If it is meant as a hollow, reverse its faces in your modelling \

@@ -292,7 +292,12 @@ fn orient(
             effect_on_mass: Some(added),
         });
     }
-    if let Some(w) = relations.overlap_warning(parts, &|s| sign(s) * volumes[s].signum()) {
+    let counted = |s: usize| sign(s) * volumes[s].signum();
+    if let Some(mut w) = relations.self_overlap_warning(parts, &counted) {
+        w.faces = input_faces(work.origin.as_deref(), w.faces.iter().map(|&f| f as u32));
+        work.warnings.push(w);
+    }
+    if let Some(w) = relations.overlap_warning(parts, &counted) {
         let mut w = w;
         w.faces = input_faces(work.origin.as_deref(), w.faces.iter().map(|&f| f as u32));
         work.warnings.push(w);

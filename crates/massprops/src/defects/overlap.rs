@@ -33,11 +33,23 @@ struct Overlap {
     uncertainty: f64,
 }
 
+/// A closed shell that passes through itself: where its winding number is ±2 or more, its
+/// volume counts more than once.
+#[derive(Debug, Clone, Copy)]
+struct SelfOverlap {
+    shell: usize,
+    /// The volume counted more than once (each extra time counted again).
+    volume: f64,
+    uncertainty: f64,
+}
+
 /// What the comparison of the closed shells found.
 pub(crate) struct Relations {
     /// For each shell, the closed shells it lies inside (`None`: not known).
     containers: Vec<Option<Vec<usize>>>,
     overlaps: Vec<Overlap>,
+    /// Shells that pass through themselves.
+    selves: Vec<SelfOverlap>,
     /// Pairs whose boxes meet, and how many of them were compared within the work budget.
     candidates: usize,
     compared: usize,
@@ -49,6 +61,7 @@ impl Relations {
         Self {
             containers: vec![None; shells],
             overlaps: Vec::new(),
+            selves: Vec::new(),
             candidates: 0,
             compared: 0,
         }
@@ -73,6 +86,35 @@ impl Relations {
                 .find(|&o| self.depth(o) == Some(0))
                 .unwrap_or(s),
         )
+    }
+
+    /// The `self_overlapping_shell` warning, when a closed shell passes through itself.
+    /// `sign(s)` is ±1 as shell `s` counts.
+    pub fn self_overlap_warning(
+        &self,
+        parts: &[Part],
+        sign: &dyn Fn(usize) -> f64,
+    ) -> Option<Warning> {
+        if self.selves.is_empty() {
+            return None;
+        }
+        let volume: f64 = self.selves.iter().map(|o| o.volume).sum();
+        let variance: f64 = self.selves.iter().map(|o| o.uncertainty.powi(2)).sum();
+        let effect: f64 = self.selves.iter().map(|o| o.volume * sign(o.shell)).sum();
+        Some(Warning {
+            defect: Defect::SelfOverlappingShell {
+                shells: self.selves.iter().take(EXAMPLES).map(|o| o.shell).collect(),
+                volume,
+                uncertainty: variance.sqrt(),
+            },
+            count: self.selves.len(),
+            faces: self
+                .selves
+                .iter()
+                .filter_map(|o| parts[o.shell].faces.first().map(|&f| f as usize))
+                .collect(),
+            effect_on_mass: Some(effect),
+        })
     }
 
     /// The `overlapping_shells` warning, when shells overlap or the budget cut the comparison
@@ -137,7 +179,7 @@ pub(crate) fn compare(mesh: &PolyMesh, parts: &[Part], solids: &[bool], budget: 
     for &s in &closed {
         relations.containers[s] = Some(Vec::new());
     }
-    if closed.len() < 2 {
+    if closed.is_empty() {
         return relations;
     }
     let boxes: Vec<(Point3<f64>, Point3<f64>)> = closed
@@ -184,10 +226,23 @@ pub(crate) fn compare(mesh: &PolyMesh, parts: &[Part], solids: &[bool], budget: 
         spent += cost;
         chosen.push((i, j));
     }
+    // Then each closed shell against itself, as far as the budget still goes.
+    let mut own = Vec::with_capacity(closed.len());
+    for (k, &cost) in costs.iter().enumerate() {
+        let cost = cost + (REPLICATES * CELLS * CELLS) as u64;
+        if spent.saturating_add(cost) > budget {
+            continue;
+        }
+        spent += cost;
+        own.push(k);
+    }
     let mut needed = vec![false; closed.len()];
     for &(i, j) in &chosen {
         needed[i] = true;
         needed[j] = true;
+    }
+    for &k in &own {
+        needed[k] = true;
     }
     let built: Vec<Option<Solid>> = each(needed.len(), &|k| {
         needed[k].then(|| triangles(mesh, &parts[closed[k]].faces, boxes[k]))
@@ -200,6 +255,20 @@ pub(crate) fn compare(mesh: &PolyMesh, parts: &[Part], solids: &[bool], budget: 
         let seed = ((closed[i] as u64) << 32) ^ closed[j] as u64;
         Some(probe(a, b, tolerance, seed))
     });
+    let selves: Vec<Option<(f64, f64)>> = each(own.len(), &|n| {
+        let k = own[n];
+        let solid = built[k].as_ref()?;
+        probe_self(solid, tolerance, closed[k] as u64)
+    });
+    for (&k, found) in own.iter().zip(selves) {
+        if let Some((volume, uncertainty)) = found {
+            relations.selves.push(SelfOverlap {
+                shell: closed[k],
+                volume,
+                uncertainty,
+            });
+        }
+    }
     for (&(i, j), found) in chosen.iter().zip(found) {
         let Some(found) = found else { continue };
         relations.compared += 1;
@@ -336,6 +405,53 @@ fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
         volume,
         uncertainty,
     }
+}
+
+/// The volume a shell counts more than once (where it passes through itself: winding number ±2
+/// or more along a line), with one standard error; `None` when no line finds any.
+fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<(f64, f64)> {
+    let (lo, hi) = (a.lo, a.hi);
+    let (dx, dy) = ((hi.x - lo.x) / CELLS as f64, (hi.y - lo.y) / CELLS as f64);
+    if dx <= 0.0 || dy <= 0.0 {
+        return None;
+    }
+    let mut rng = SplitMix(seed ^ 0x5E1F_0000_0000_0000);
+    let lines: Vec<(f64, f64)> = (0..REPLICATES * CELLS * CELLS)
+        .map(|n| {
+            let cell = n % (CELLS * CELLS);
+            let (i, j) = (cell % CELLS, cell / CELLS);
+            (
+                lo.x + (i as f64 + rng.unit()) * dx,
+                lo.y + (j as f64 + rng.unit()) * dy,
+            )
+        })
+        .collect();
+    let crossings = crossings(a, &lines, lo, dx, dy);
+    let mut extra = [0.0; REPLICATES];
+    let mut seen = false;
+    for line in crossings.chunk_by(|p, q| p.0 == q.0) {
+        // Down the line from the top: the winding number below a crossing is that above it plus
+        // the crossing's sign; |w| − 1 more counts of each stretch where |w| > 1.
+        let (mut w, mut z_prev) = (0i32, f64::INFINITY);
+        let mut length = 0.0;
+        for &(_, z, sign) in line.iter().rev() {
+            if w.abs() > 1 && z_prev.is_finite() {
+                length += f64::from(w.abs() - 1) * (z_prev - z);
+            }
+            w += i32::from(sign);
+            z_prev = z;
+        }
+        seen |= length > tolerance;
+        extra[line[0].0 as usize / (CELLS * CELLS)] += length;
+    }
+    if !seen {
+        return None;
+    }
+    let estimates = extra.map(|l| l * dx * dy);
+    let volume = estimates.iter().sum::<f64>() / REPLICATES as f64;
+    let spread = estimates.iter().map(|e| (e - volume).powi(2)).sum::<f64>();
+    let uncertainty = (spread / (REPLICATES * (REPLICATES - 1)) as f64).sqrt();
+    Some((volume, uncertainty))
 }
 
 /// Every crossing of the shell's faces with the vertical lines, ordered by line then height.

@@ -169,6 +169,15 @@ fn warning_json(w: &Warning, lines: &[u32]) -> Value {
             "candidates": candidates,
         }),
         Defect::NestedShell { shells } => json!({ "shells": shells }),
+        Defect::SelfOverlappingShell {
+            shells,
+            volume,
+            uncertainty,
+        } => json!({
+            "shells": shells,
+            "overlap_volume": volume,
+            "uncertainty": uncertainty,
+        }),
         Defect::CracksClosed { largest_gap } => json!({ "largest_gap": largest_gap }),
         Defect::HolesCapped {
             boundary_edges,

@@ -57,6 +57,18 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             }
             text
         }
+        Defect::SelfOverlappingShell {
+            shells,
+            volume,
+            uncertainty,
+        } => format!(
+            "{count} closed shell(s) pass through themselves (shell {}; {faces}): {} ± {} (mesh \
+             units cubed; ± one standard error of the sampling by lines) of their volume is \
+             counted twice, adding {effect} to the mass, on top of any overlap between shells",
+            join(shells),
+            significant(*volume, 3),
+            significant(*uncertainty, 2),
+        ),
         Defect::NestedShell { shells } => format!(
             "{count} closed shell(s) wound outward inside another solid (shell {}; {faces}): each \
              is counted as solid again, adding {effect} to the mass; if it is meant as a cavity, \
