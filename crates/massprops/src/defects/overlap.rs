@@ -24,6 +24,9 @@ const CELLS: usize = 32;
 /// touching another's wall from inside).
 const LENGTH_TOLERANCE: f64 = 1e-9;
 
+/// A shell's volume counted twice below this fraction of its bounding box's is round-off.
+const SELF_VOLUME_TOLERANCE: f64 = 1e-9;
+
 /// Two closed shells that overlap without one holding the other.
 #[derive(Debug, Clone, Copy)]
 struct Overlap {
@@ -451,7 +454,10 @@ fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<(f64, f64)> {
     let volume = estimates.iter().sum::<f64>() / REPLICATES as f64;
     let spread = estimates.iter().map(|e| (e - volume).powi(2)).sum::<f64>();
     let uncertainty = (spread / (REPLICATES * (REPLICATES - 1)) as f64).sqrt();
-    Some((volume, uncertainty))
+    // Round-off where the shell's own faces meet at a fold is no volume.
+    let extent = hi - lo;
+    let boxed = extent.x * extent.y * extent.z.max(f64::MIN_POSITIVE);
+    (volume > SELF_VOLUME_TOLERANCE * boxed).then_some((volume, uncertainty))
 }
 
 /// Every crossing of the shell's faces with the vertical lines, ordered by line then height.
