@@ -358,17 +358,7 @@ fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
     let lo = a.lo.sup(&b.lo);
     let hi = a.hi.inf(&b.hi);
     let (dx, dy) = ((hi.x - lo.x) / CELLS as f64, (hi.y - lo.y) / CELLS as f64);
-    let mut rng = SplitMix(seed);
-    let lines: Vec<(f64, f64)> = (0..REPLICATES * CELLS * CELLS)
-        .map(|n| {
-            let cell = n % (CELLS * CELLS);
-            let (i, j) = (cell % CELLS, cell / CELLS);
-            (
-                lo.x + (i as f64 + rng.unit()) * dx,
-                lo.y + (j as f64 + rng.unit()) * dy,
-            )
-        })
-        .collect();
+    let lines = grid_lines(lo, dx, dy, seed);
     let crossings_a = crossings(a, &lines, lo, dx, dy);
     let crossings_b = crossings(b, &lines, lo, dx, dy);
     let mut both = [0.0; REPLICATES];
@@ -410,16 +400,11 @@ fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
     }
 }
 
-/// The volume a shell counts more than once (where it passes through itself: winding number ±2
-/// or more along a line), with one standard error; `None` when no line finds any.
-fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<(f64, f64)> {
-    let (lo, hi) = (a.lo, a.hi);
-    let (dx, dy) = ((hi.x - lo.x) / CELLS as f64, (hi.y - lo.y) / CELLS as f64);
-    if dx <= 0.0 || dy <= 0.0 {
-        return None;
-    }
-    let mut rng = SplitMix(seed ^ 0x5E1F_0000_0000_0000);
-    let lines: Vec<(f64, f64)> = (0..REPLICATES * CELLS * CELLS)
+/// The vertical lines of [`REPLICATES`] jittered `CELLS × CELLS` grids over the cells of size
+/// `dx × dy` from `lo`, replicate by replicate (one point drawn in each cell).
+fn grid_lines(lo: Point3<f64>, dx: f64, dy: f64, seed: u64) -> Vec<(f64, f64)> {
+    let mut rng = SplitMix(seed);
+    (0..REPLICATES * CELLS * CELLS)
         .map(|n| {
             let cell = n % (CELLS * CELLS);
             let (i, j) = (cell % CELLS, cell / CELLS);
@@ -428,7 +413,18 @@ fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<(f64, f64)> {
                 lo.y + (j as f64 + rng.unit()) * dy,
             )
         })
-        .collect();
+        .collect()
+}
+
+/// The volume a shell counts more than once (where it passes through itself: winding number ±2
+/// or more along a line), with one standard error; `None` when no line finds any.
+fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<(f64, f64)> {
+    let (lo, hi) = (a.lo, a.hi);
+    let (dx, dy) = ((hi.x - lo.x) / CELLS as f64, (hi.y - lo.y) / CELLS as f64);
+    if dx <= 0.0 || dy <= 0.0 {
+        return None;
+    }
+    let lines = grid_lines(lo, dx, dy, seed ^ 0x5E1F_0000_0000_0000);
     let crossings = crossings(a, &lines, lo, dx, dy);
     let mut extra = [0.0; REPLICATES];
     let mut seen = false;
