@@ -86,32 +86,47 @@ fn green_line(r: u8, g: u8, b: u8) -> bool {
     g > 150 && r < 150 && b < 150
 }
 
-/// Starts Xvfb at 1280 × 800 on a display of its own (`offset` tells this file's tests apart)
-/// and waits for its socket.
+/// Starts Xvfb on a display of this test's own (`offset` apart for each test of the process) and
+/// waits until it serves. A display another server holds, or whose lock a killed server left
+/// behind, makes this Xvfb exit at once: the next display is tried (a stale socket alone would
+/// otherwise look like a running server, and the app would fail to connect).
 fn start_xvfb(offset: u32) -> (Guard, String) {
-    let display = format!(":{}", 90 + offset + 2 * (std::process::id() % 500));
-    let mut xvfb = Command::new("Xvfb");
-    xvfb.args([
-        display.as_str(),
-        "-screen",
-        "0",
-        "1280x800x24",
-        "-nolisten",
-        "tcp",
-    ])
-    .stdout(Stdio::null())
-    .stderr(Stdio::null());
-    let guard = Guard(xvfb.spawn().expect("start Xvfb"));
-    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{}", &display[1..]));
-    let start = Instant::now();
-    while !socket.exists() {
-        assert!(
-            start.elapsed() < Duration::from_secs(20),
-            "Xvfb did not start"
-        );
-        std::thread::sleep(Duration::from_millis(50));
+    let first = 90 + offset + 10 * (std::process::id() % 300);
+    for number in (first..).step_by(5).take(40) {
+        let display = format!(":{number}");
+        let mut xvfb = Command::new("Xvfb");
+        xvfb.args([
+            display.as_str(),
+            "-screen",
+            "0",
+            "1280x800x24",
+            "-nolisten",
+            "tcp",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null());
+        let mut guard = Guard(xvfb.spawn().expect("start Xvfb"));
+        let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
+        let start = Instant::now();
+        let serving = loop {
+            if guard.0.try_wait().ok().flatten().is_some() {
+                break false;
+            }
+            // Up, and still up a moment later: this server owns the socket.
+            if socket.exists() && start.elapsed() > Duration::from_millis(300) {
+                break true;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(20),
+                "Xvfb did not start"
+            );
+            std::thread::sleep(Duration::from_millis(50));
+        };
+        if serving {
+            return (guard, display);
+        }
     }
-    (guard, display)
+    panic!("no free X display for Xvfb");
 }
 
 /// `--screenshot OUT.png --after S` writes the app's own pixels (the 3D view included) after S

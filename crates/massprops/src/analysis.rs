@@ -142,6 +142,10 @@ pub enum Defect {
         compared: usize,
         /// Pairs of closed shells whose bounding boxes meet.
         candidates: usize,
+        /// The most volume the pairs not compared can share (each pair at most the smaller
+        /// shell's volume): the result may count up to this much more twice. 0 when all were
+        /// compared.
+        uncompared_bound: f64,
     },
     /// Closed shells that pass through themselves (consistently wound, yet with a winding number
     /// of ±2 or more inside): that volume is counted twice (the result is as counted; the effect

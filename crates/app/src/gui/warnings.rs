@@ -229,6 +229,7 @@ mod tests {
                     uncertainty: 0.01,
                     compared: 1,
                     candidates: 3,
+                    uncompared_bound: 0.5,
                 },
                 vec![0, 6],
                 Some(0.17),

@@ -161,7 +161,13 @@ pub(crate) fn clean<'a>(
     let volumes = shells::volumes(&work.mesh, &parts, reference);
     let solids = shells::solids(&work.mesh, &parts, &volumes);
     let relations = if uses_volume {
-        overlap::compare(&work.mesh, &parts, &solids, repairs.overlap_budget)
+        overlap::compare(
+            &work.mesh,
+            &parts,
+            &solids,
+            &volumes,
+            repairs.overlap_budget,
+        )
     } else {
         overlap::Relations::none(parts.len())
     };

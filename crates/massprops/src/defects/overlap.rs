@@ -53,6 +53,9 @@ pub(crate) struct Relations {
     overlaps: Vec<Overlap>,
     /// Shells that pass through themselves.
     selves: Vec<SelfOverlap>,
+    /// The most volume the pairs not compared can share: the sum of the smaller shell's volume
+    /// of each.
+    uncompared_bound: f64,
     /// Pairs whose boxes meet, and how many of them were compared within the work budget.
     candidates: usize,
     compared: usize,
@@ -65,6 +68,7 @@ impl Relations {
             containers: vec![None; shells],
             overlaps: Vec::new(),
             selves: Vec::new(),
+            uncompared_bound: 0.0,
             candidates: 0,
             compared: 0,
         }
@@ -154,6 +158,7 @@ impl Relations {
                 uncertainty: variance.sqrt(),
                 compared: self.compared,
                 candidates: self.candidates,
+                uncompared_bound: self.uncompared_bound,
             },
             count: self.overlaps.len(),
             faces,
@@ -174,7 +179,13 @@ struct Solid {
 /// grid). What is
 /// compared, and so the result, depends on the mesh and the budget alone, never on the machine
 /// or its load; the pairs are probed in parallel (each on its own, so the order changes nothing).
-pub(crate) fn compare(mesh: &PolyMesh, parts: &[Part], solids: &[bool], budget: u64) -> Relations {
+pub(crate) fn compare(
+    mesh: &PolyMesh,
+    parts: &[Part],
+    solids: &[bool],
+    volumes: &[f64],
+    budget: u64,
+) -> Relations {
     let (lo, hi) = mesh.bounding_box();
     let tolerance = LENGTH_TOLERANCE * (hi - lo).norm();
     let closed: Vec<usize> = (0..parts.len()).filter(|&s| solids[s]).collect();
@@ -224,6 +235,8 @@ pub(crate) fn compare(mesh: &PolyMesh, parts: &[Part], solids: &[bool], budget: 
         if spent.saturating_add(cost) > budget {
             unknown[closed[i]] = true;
             unknown[closed[j]] = true;
+            // Two shells can share at most the smaller one's volume.
+            relations.uncompared_bound += volumes[closed[i]].abs().min(volumes[closed[j]].abs());
             continue;
         }
         spent += cost;

@@ -161,12 +161,14 @@ fn warning_json(w: &Warning, lines: &[u32]) -> Value {
             uncertainty,
             compared,
             candidates,
+            uncompared_bound,
         } => json!({
             "pairs": pairs.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
             "overlap_volume": volume,
             "uncertainty": uncertainty,
             "compared": compared,
             "candidates": candidates,
+            "uncompared_bound": uncompared_bound,
         }),
         Defect::NestedShell { shells } => json!({ "shells": shells }),
         Defect::SelfOverlappingShell {

@@ -29,6 +29,7 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             uncertainty,
             compared,
             candidates,
+            uncompared_bound,
         } => {
             let mut text = if pairs.is_empty() {
                 String::from("no overlapping closed shells were found")
@@ -52,7 +53,9 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
                 let _ = write!(
                     text,
                     " (only {compared} of the {candidates} pairs of shells whose boxes meet were \
-                     compared within the work budget; the others may overlap too)"
+                     compared within the work budget; the others may overlap too, by at most {} \
+                     mesh units cubed, each pair at most its smaller shell)",
+                    significant(*uncompared_bound, 3)
                 );
             }
             text
