@@ -51,7 +51,7 @@ fn t_handle_json_has_the_schema_and_the_parallel_axis_values() {
     ] {
         assert!(j.get(key).is_some(), "missing {key}");
     }
-    assert_eq!(j["schema_version"], 3);
+    assert_eq!(j["schema_version"], 4);
     assert_eq!(j["method"], "volume");
     // Two boxes: crossbar 0.08 × 0.012 × 0.012 centred at y = 0.006, stem 0.012 × 0.05 × 0.012
     // centred at y = −0.025.

@@ -244,17 +244,8 @@ fn mesh_file_parts(path: &Path, file: &MeshFile, request: &Request) -> Result<Pa
             },
         })?;
         let fill = material.fill(false, None);
-        let entry = PartEntry {
-            name: name.clone(),
-            mesh: path.to_path_buf(),
-            object: named.then(|| name.clone()),
-            material,
-            rotation: None,
-            translation: [0.0; 3],
-            void: false,
-            thin_wall: None,
-            line: 0,
-        };
+        let object = named.then_some(name.as_str());
+        let entry = PartEntry::unplaced(name, path, object, material);
         parts.push((entry, mesh, fill, Isometry3::identity()));
     }
     integrate(parts, &request.repairs).map_err(|source| InputError::Mesh {

@@ -196,17 +196,7 @@ fn relative(path: &Path, folder: &Path) -> PathBuf {
 
 /// A part made from a mesh file (all of it, or one object), of water's density at the origin.
 pub fn entry_for(name: &str, mesh: &Path, object: Option<&str>) -> PartEntry {
-    PartEntry {
-        name: name.to_owned(),
-        mesh: mesh.to_path_buf(),
-        object: object.map(str::to_owned),
-        material: MaterialEntry::Density(1000.0),
-        rotation: None,
-        translation: [0.0; 3],
-        void: false,
-        thin_wall: None,
-        line: 0,
-    }
+    PartEntry::unplaced(name, mesh, object, MaterialEntry::Density(1000.0))
 }
 
 /// A mesh file as one new part (all of it), named after the file, of water's density.

@@ -106,6 +106,27 @@ pub fn is_body_file(path: &Path) -> bool {
 }
 
 impl PartEntry {
+    /// A solid part of `material` made of a mesh file (all of it, or one `object`), unturned at
+    /// the origin: what a mesh file's parts are before anyone places them.
+    pub fn unplaced(
+        name: &str,
+        mesh: &Path,
+        object: Option<&str>,
+        material: MaterialEntry,
+    ) -> Self {
+        Self {
+            name: name.to_owned(),
+            mesh: mesh.to_path_buf(),
+            object: object.map(str::to_owned),
+            material,
+            rotation: None,
+            translation: [0.0; 3],
+            void: false,
+            thin_wall: None,
+            line: 0,
+        }
+    }
+
     /// Its fill for a file in `unit` metres (the thin wall converted to metres), by the one rule
     /// [`MaterialEntry::fill`].
     pub fn fill(&self, unit: f64) -> Fill {

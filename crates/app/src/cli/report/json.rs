@@ -15,7 +15,10 @@ use crate::export::TENSOR_CONVENTION;
 /// 3: each warning has `count`, `faces` (and `face_lines`) and `effect_on_mass`; the codes are
 /// those of real-mesh defects (`open_mesh` became `holes_capped`; `non_manifold_edges` and
 /// `non_planar_faces` lost their inner underscore); `shells` lists the connected shells.
-pub const SCHEMA_VERSION: u32 = 3;
+/// 4: `inconsistent_winding` repaired: its `count` is the faces turned (the edges only when they cannot
+/// agree) and it has an `effect_on_mass`; new codes `self_overlapping_shell` and
+/// `stl_triangle_count`; `overlapping_shells` has `uncompared_bound`.
+pub const SCHEMA_VERSION: u32 = 4;
 
 fn rows(m: &Matrix3<f64>) -> Value {
     json!([
