@@ -13,6 +13,7 @@
 
 pub mod cli;
 pub mod export;
+pub mod findings;
 #[cfg(feature = "gui")]
 pub mod gui;
 pub mod input;

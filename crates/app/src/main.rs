@@ -37,6 +37,10 @@ enum Command {
     /// unreal, rapier, gltf), with the mesh's units and up axis, and each target's frame,
     /// handedness, units and sign conventions handled.
     Export(cli::export::ExportArgs),
+    /// Audit a robot description (URDF or MJCF): every link's stated inertia against the one
+    /// its geometry gives, with findings (impossible, placeholder, implausible…), and --fix -o
+    /// FIXED to write it back with the inertials replaced.
+    Audit(cli::audit::AuditArgs),
 }
 
 fn main() -> ExitCode {
@@ -45,6 +49,7 @@ fn main() -> ExitCode {
         Some(Command::Props(args)) => cli::props::run(args),
         Some(Command::Simulate(args)) => cli::simulate::run(args),
         Some(Command::Export(args)) => cli::export::run(args),
+        Some(Command::Audit(args)) => cli::audit::run(args),
         None => app(&cli),
     };
     match result {

@@ -1,7 +1,9 @@
 //! The command-line entry points: `props` (mass properties of a mesh and the report as a table or
 //! JSON), `simulate` (headless simulation as CSV in the [`crate::timeseries`] schema) and
-//! `export` (engine and robot formats), with their exit codes ([`error`]).
+//! `export` (engine and robot formats), `audit` (a robot description's links against their
+//! geometry), with their exit codes ([`error`]).
 
+pub mod audit;
 pub mod error;
 pub mod export;
 pub mod parts;

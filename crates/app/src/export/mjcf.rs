@@ -31,9 +31,25 @@ pub fn render(body: &Converted, frame: Frame, warnings: &mut Vec<String>) -> Str
             body.mass, body.moments[0]
         ));
     }
+    let (note, element) = note_and_element(body, frame);
+    format!(
+        "<!-- {} MJCF: lengths m, mass kg, inertia kg*m^2 about the centre of mass (pos, body \
+         frame); {note}. If your geom uses the mesh file as is, give it the same up-axis \
+         rotation. -->\n{element}\n",
+        super::provenance(body)
+    )
+}
+
+/// The `<inertial>` element alone, ending with a newline.
+pub fn element(body: &Converted, frame: Frame) -> String {
+    format!("{}\n", note_and_element(body, frame).1)
+}
+
+/// What the comment says of the frame, and the element.
+fn note_and_element(body: &Converted, frame: Frame) -> (&'static str, String) {
     let c = &body.center_of_mass;
     let pos = format!("{} {} {}", num(c.x), num(c.y), num(c.z));
-    let (note, element) = match frame {
+    match frame {
         Frame::Origin => {
             let i = &body.inertia;
             (
@@ -71,11 +87,5 @@ pub fn render(body: &Converted, frame: Frame, warnings: &mut Vec<String>) -> Str
                 ),
             )
         }
-    };
-    format!(
-        "<!-- {} MJCF: lengths m, mass kg, inertia kg*m^2 about the centre of mass (pos, body \
-         frame); {note}. If your geom uses the mesh file as is, give it the same up-axis \
-         rotation. -->\n{element}\n",
-        super::provenance(body)
-    )
+    }
 }

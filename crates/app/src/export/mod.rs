@@ -234,6 +234,26 @@ pub fn export(
     Ok(ExportOutput { text, warnings })
 }
 
+/// A robot description's `<inertial>` element alone, for a body already in the description's
+/// frame and units (metres, Z-up link axes): URDF in link axes (the full tensor, `rpy` zero),
+/// MJCF in principal axes (`quat` and `diaginertia`, which MuJoCo keeps as written). What the
+/// audit's `--fix` writes in place of a link's inertial.
+pub fn inertial_element(props: &MassProperties, format: Format) -> Result<String, ExportError> {
+    let body = frames::convert(
+        props,
+        Conversion {
+            source_unit: LengthUnit::M,
+            source_up: UpAxis::Z,
+            target: Axes::RightZUp,
+            target_unit: LengthUnit::M,
+        },
+    )?;
+    Ok(match format {
+        Format::Mjcf => mjcf::element(&body, Frame::ComPrincipal),
+        _ => urdf::element(&body, Frame::Origin),
+    })
+}
+
 /// The source line every output's comment starts with.
 fn provenance(body: &frames::Converted) -> String {
     let c = body.conversion;

@@ -1,0 +1,170 @@
+//! A robot audit's findings in words, shared by the command line's report and the app's Robot
+//! panel. The numbers come from `robot::Finding`; what is said around them is ours.
+
+use robot::{Finding, PlaceholderReason, Region, Unweighed};
+
+use crate::cli::report::words::warning_text;
+
+/// A number to four significant digits.
+pub fn num(v: f64) -> String {
+    crate::cli::report::significant(v, 4)
+}
+
+/// One finding as a sentence, naming its evidence; `geometry` is the kind audited
+/// ("collision").
+pub fn finding_text(f: &Finding, geometry: &str) -> String {
+    match f {
+        Finding::MissingInertial { moving: true } => "no <inertial>: a moving link without \
+             mass, so every dynamics call treats it as weightless (simulators substitute a \
+             default or refuse it)"
+            .to_owned(),
+        Finding::MissingInertial { moving: false } => {
+            "no <inertial> on a link with geometry: its mass is left out of the robot's".to_owned()
+        }
+        Finding::NonpositiveMass { mass } => {
+            format!(
+                "stated mass {} kg: a moving link needs a positive mass",
+                num(*mass)
+            )
+        }
+        Finding::NotPositiveDefinite { moments } => format!(
+            "stated principal moments {}, {}, {} kg*m^2: not all positive, which no body has",
+            num(moments[0]),
+            num(moments[1]),
+            num(moments[2])
+        ),
+        Finding::TriangleInequality { moments } => format!(
+            "stated principal moments {} + {} < {} kg*m^2 break I1 + I2 >= I3, which every body \
+             obeys",
+            num(moments[0]),
+            num(moments[1]),
+            num(moments[2])
+        ),
+        Finding::ImpossibleMoment { region, mass, axes } => {
+            let region = region_text(*region);
+            let each: Vec<String> = axes
+                .iter()
+                .map(|a| {
+                    format!(
+                        "I{} = {} > m*r^2 = {} ({}x, r = {} m)",
+                        a.rank + 1,
+                        num(a.moment),
+                        num(a.bound),
+                        num(a.moment / a.bound),
+                        num(a.radius)
+                    )
+                })
+                .collect();
+            format!(
+                "impossible: {} kg*m^2, with m = {} kg the stated mass and r the farthest any \
+                 point of the {region} lies from that principal axis through the stated centre \
+                 of mass. A proof, not an estimate: no distribution of that mass inside that \
+                 geometry has a larger moment",
+                each.join("; "),
+                num(*mass)
+            )
+        }
+        Finding::ComOutsideGeometry {
+            region,
+            center_of_mass: c,
+            distance,
+        } => format!(
+            "impossible: the stated centre of mass ({}, {}, {}) m lies at least {} m outside the \
+             convex hull of the {}; a centre of mass is a weighted mean of the \
+             mass's points, so mass inside the geometry cannot put it there",
+            num(c.x),
+            num(c.y),
+            num(c.z),
+            num(*distance),
+            region_text(*region)
+        ),
+        Finding::Placeholder { reasons } => {
+            let why: Vec<String> = reasons
+                .iter()
+                .map(|r| match r {
+                    PlaceholderReason::EqualMoments { moment } => format!(
+                        "all three moments are {} kg*m^2 with no products (only a round body \
+                         has that, and this link's geometry is not round)",
+                        num(*moment)
+                    ),
+                    PlaceholderReason::RoundNumbers { written } => format!(
+                        "every non-zero entry is a power of ten ({})",
+                        written.join(" ")
+                    ),
+                    PlaceholderReason::SharedTensor { links } => {
+                        let named = match links.len() {
+                            0..=3 => links.join(", "),
+                            n => format!("{} and {} more", links[..3].join(", "), n - 3),
+                        };
+                        format!("the same tensor as {named}, whose geometry differs")
+                    }
+                })
+                .collect();
+            format!("placeholder inertia: {}", why.join("; "))
+        }
+        Finding::ImplausibleDensity {
+            density,
+            volume,
+            mass,
+        } => format!(
+            "implausible density: the stated {} kg in {} m^3 of {geometry} geometry is {} kg/m^3 \
+             (plausible: {}-{})",
+            num(*mass),
+            num(*volume),
+            num(*density),
+            robot::PLAUSIBLE_DENSITY.0,
+            robot::PLAUSIBLE_DENSITY.1
+        ),
+        Finding::MomentsFar { error, threshold } => format!(
+            "the stated tensor differs from the uniform-density one by {:.1} % (threshold {:.1} \
+             %)",
+            error * 100.0,
+            threshold * 100.0
+        ),
+        Finding::ComFar {
+            fraction,
+            threshold,
+        } => format!(
+            "the stated centre of mass is {:.1} % of the link's size from the uniform-density \
+             one (threshold {:.1} %)",
+            fraction * 100.0,
+            threshold * 100.0
+        ),
+        Finding::MeshMissing { written, tried } => format!(
+            "mesh {written} not found; tried {}",
+            tried
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Finding::MeshUnreadable { file, error } => {
+            format!("mesh {} cannot be weighed: {error}", file.display())
+        }
+        Finding::GeometryUnsupported { what } => {
+            format!("{what} is not integrated, so the link is not weighed")
+        }
+        Finding::MeshDefect { geometry, warning } => {
+            format!("{geometry}: {}", warning_text(warning, &[]))
+        }
+        _ => f.code().replace('_', " "),
+    }
+}
+
+/// Why a link has no computed inertia, in words.
+pub fn unweighed_text(u: &Unweighed, geometry: &str) -> String {
+    match u {
+        Unweighed::NoGeometry => format!("no {geometry} geometry"),
+        Unweighed::Incomplete => format!("some {geometry} geometry cannot be weighed"),
+        Unweighed::Massless => "its geoms have no mass (density or mass 0)".to_owned(),
+        Unweighed::Sum(e) => e.to_string(),
+    }
+}
+
+/// The geometry a proof takes the mass to lie in, in words.
+fn region_text(region: Region) -> String {
+    match region {
+        Region::Both => "collision and visual geometry".to_owned(),
+        Region::Only(kind) => format!("{} geometry", kind.name()),
+    }
+}

@@ -1,0 +1,828 @@
+//! The audit: each link's mass properties from its geometry, beside what the file states, and
+//! the findings that compare them.
+//!
+//! The computed body is the link's geometries as parts of one body (massprops' sums: masses
+//! add, tensors move to the common centre by Steiner's theorem) at uniform density: at the
+//! stated mass when there is one (the density follows), else at the file's geom masses and
+//! densities (MJCF), else at a density given or assumed. Uniform density is only an estimate
+//! for a link full of motors, so distance from it is a finding only past thresholds the user
+//! sets.
+//!
+//! Two findings are proofs, not heuristics, given that the link's mass lies within its
+//! geometry: a principal moment I about an axis through the stated centre of mass is ∫d² dm
+//! with d each mass element's distance from the axis, so I ≤ m·r² where r is the largest
+//! distance of the geometry from that axis (`impossible_moment`); and the centre of mass is a
+//! weighted mean of the mass's points, so it lies in their convex hull, judged here by the
+//! 26-sided polytope of 13 directions that contains the hull (`com_outside_geometry`).
+
+use std::collections::HashMap;
+
+use nalgebra::{Matrix3, Point3, Vector3};
+use rayon::prelude::*;
+
+use massprops::composite::{PartMass, combine};
+use massprops::principal::Degeneracy;
+use massprops::{MassProperties, MeshError, Repairs, Warning};
+
+use crate::geometry::{self, Extent, Meshes, Problem, Ready};
+use crate::model::{Format, GeometryKind, GeometryMass, Link, Robot};
+
+/// Relative slack for round-off in the laws and the bounds.
+const SLACK: f64 = 1e-9;
+
+/// Moments within this ratio (largest / smallest) count as "nearly equal" for a body whose
+/// stated moments are all equal.
+const ISOTROPIC_RATIO: f64 = 1.1;
+
+/// Densities outside this range, kg/m³, are implausible for a link (aerogel foam is ~50,
+/// osmium ~22 600).
+pub const PLAUSIBLE_DENSITY: (f64, f64) = (50.0, 25_000.0);
+
+/// What the audit weighs and how strict it is.
+#[derive(Debug, Clone)]
+pub struct AuditOptions {
+    /// Which geometry stands for a link's shape.
+    pub geometry: GeometryKind,
+    /// A density for every link, kg/m³, instead of the stated masses.
+    pub density: Option<f64>,
+    /// The density of a link with neither a stated mass nor geom masses, kg/m³.
+    pub assumed_density: f64,
+    /// Flag a tensor whose relative (Frobenius) error against the computed one exceeds this.
+    pub max_moment_error: Option<f64>,
+    /// Flag a centre of mass farther than this fraction of the link's size from the computed one.
+    pub max_com_offset: Option<f64>,
+    /// How each mesh's defects are handled (as `props`).
+    pub repairs: Repairs,
+}
+
+impl Default for AuditOptions {
+    fn default() -> Self {
+        Self {
+            geometry: GeometryKind::Collision,
+            density: None,
+            assumed_density: 1000.0,
+            max_moment_error: None,
+            max_com_offset: None,
+            repairs: Repairs::default(),
+        }
+    }
+}
+
+/// Where a computed link's mass comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MassBasis {
+    /// The stated mass, spread uniformly over the geometry.
+    StatedMass,
+    /// The file's own geom masses and densities (MJCF).
+    FileMasses,
+    /// The density the user gave.
+    GivenDensity(f64),
+    /// No mass anywhere: this density was assumed.
+    AssumedDensity(f64),
+}
+
+/// A link's mass properties from its geometry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Computed {
+    /// Link frame, kg, m, kg·m², about the centre of mass in the link's axes.
+    pub properties: MassProperties,
+    /// The geometry's volume, m³.
+    pub volume: f64,
+    /// Mass / volume, kg/m³.
+    pub density: f64,
+    /// Where the mass comes from.
+    pub basis: MassBasis,
+}
+
+/// Why a link has no computed mass properties.
+#[derive(Debug, Clone)]
+pub enum Unweighed {
+    /// It has no geometry of the kind audited.
+    NoGeometry,
+    /// Some of its geometry cannot be weighed (its findings say which).
+    Incomplete,
+    /// Its geoms have no mass (MJCF `density="0"` or `mass="0"`).
+    Massless,
+    /// The parts sum to no body (voids larger than solids: not possible here, but named).
+    Sum(MeshError),
+}
+
+/// The stated inertial beside the computed one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Comparison {
+    /// Distance between the two centres of mass, m.
+    pub com_offset: f64,
+    /// That distance as a fraction of the link's size (its geometry's bounding-box diagonal).
+    pub com_offset_fraction: f64,
+    /// ‖I_stated − I_computed‖ / ‖I_computed‖ (Frobenius norms, about each one's centre of mass,
+    /// link axes).
+    pub tensor_error: f64,
+    /// The angle between each stated principal axis and the computed one of the same rank,
+    /// radians in [0, π/2]; `None` where equal moments leave an axis free.
+    pub axis_angles: [Option<f64>; 3],
+}
+
+/// Why a stated tensor looks like a placeholder.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlaceholderReason {
+    /// All three moments equal (and no products), on a link whose geometry is not round.
+    EqualMoments {
+        /// The moment.
+        moment: f64,
+    },
+    /// Every non-zero entry is a power of ten as written (1, 0.1, 1e-3…).
+    RoundNumbers {
+        /// The entries as written.
+        written: Vec<String>,
+    },
+    /// The same tensor on other links whose geometry differs.
+    SharedTensor {
+        /// Those links.
+        links: Vec<String>,
+    },
+}
+
+/// The geometry a proof takes the link's mass to lie in: the larger, the weaker its premise.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Region {
+    /// The collision and the visual geometry together (when both are known).
+    Both,
+    /// Only the kind audited (the other is missing or cannot be read).
+    Only(GeometryKind),
+}
+
+/// One stated principal moment above its bound m·r².
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImpossibleAxis {
+    /// Which moment (0, 1, 2: ascending).
+    pub rank: usize,
+    /// The stated moment.
+    pub moment: f64,
+    /// m·r².
+    pub bound: f64,
+    /// r: the geometry's farthest distance from that principal axis through the stated centre
+    /// of mass.
+    pub radius: f64,
+    /// The principal axis, link frame.
+    pub axis: Vector3<f64>,
+}
+
+/// Something wrong with a link's stated inertia or its geometry, with its evidence.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub enum Finding {
+    /// No `<inertial>` (URDF), on a link that has geometry or moves.
+    MissingInertial {
+        /// Whether the link has a degree of freedom.
+        moving: bool,
+    },
+    /// A negative mass, or zero on a moving link.
+    NonpositiveMass {
+        /// The stated mass.
+        mass: f64,
+    },
+    /// A principal moment ≤ 0.
+    NotPositiveDefinite {
+        /// The stated principal moments, ascending.
+        moments: [f64; 3],
+    },
+    /// I₁ + I₂ < I₃.
+    TriangleInequality {
+        /// The stated principal moments, ascending.
+        moments: [f64; 3],
+    },
+    /// Stated principal moments above m·r², which no distribution of the stated mass within
+    /// the geometry reaches.
+    ImpossibleMoment {
+        /// The geometry the mass is taken to lie in.
+        region: Region,
+        /// The stated mass.
+        mass: f64,
+        /// Each moment above its bound.
+        axes: Vec<ImpossibleAxis>,
+    },
+    /// The stated centre of mass outside the geometry's hull.
+    ComOutsideGeometry {
+        /// The geometry the mass is taken to lie in.
+        region: Region,
+        /// The stated centre, link frame.
+        center_of_mass: Point3<f64>,
+        /// How far outside the 26-sided polytope around the hull, at least, m.
+        distance: f64,
+    },
+    /// The stated tensor looks like a placeholder.
+    Placeholder {
+        /// Why.
+        reasons: Vec<PlaceholderReason>,
+    },
+    /// The stated mass over the geometry's volume is outside [`PLAUSIBLE_DENSITY`].
+    ImplausibleDensity {
+        /// kg/m³.
+        density: f64,
+        /// The geometry's volume, m³.
+        volume: f64,
+        /// The stated mass.
+        mass: f64,
+    },
+    /// The stated tensor is farther from the uniform-density one than the threshold.
+    MomentsFar {
+        /// The relative error.
+        error: f64,
+        /// The threshold given.
+        threshold: f64,
+    },
+    /// The stated centre of mass is farther from the uniform-density one than the threshold.
+    ComFar {
+        /// The offset as a fraction of the link's size.
+        fraction: f64,
+        /// The threshold given.
+        threshold: f64,
+    },
+    /// A mesh file that is not there.
+    MeshMissing {
+        /// As written.
+        written: String,
+        /// Every path tried.
+        tried: Vec<std::path::PathBuf>,
+    },
+    /// A mesh that cannot be read, or encloses no volume.
+    MeshUnreadable {
+        /// The file.
+        file: std::path::PathBuf,
+        /// Why.
+        error: MeshError,
+    },
+    /// A geometry the audit does not integrate.
+    GeometryUnsupported {
+        /// What it is.
+        what: String,
+    },
+    /// A defect of one of the link's meshes, as `props` reports it.
+    MeshDefect {
+        /// The geometry, as [`crate::Shape::label`] names it.
+        geometry: String,
+        /// The warning.
+        warning: Warning,
+    },
+}
+
+impl Finding {
+    /// Its stable code, as in JSON: the codes of this module, or the mesh warning's own.
+    pub fn code(&self) -> &'static str {
+        match self {
+            Finding::MissingInertial { .. } => "missing_inertial",
+            Finding::NonpositiveMass { .. } => "nonpositive_mass",
+            Finding::NotPositiveDefinite { .. } => "not_positive_definite",
+            Finding::TriangleInequality { .. } => "triangle_inequality",
+            Finding::ImpossibleMoment { .. } => "impossible_moment",
+            Finding::ComOutsideGeometry { .. } => "com_outside_geometry",
+            Finding::Placeholder { .. } => "placeholder",
+            Finding::ImplausibleDensity { .. } => "implausible_density",
+            Finding::MomentsFar { .. } => "moments_far",
+            Finding::ComFar { .. } => "com_far",
+            Finding::MeshMissing { .. } => "mesh_missing",
+            Finding::MeshUnreadable { .. } => "mesh_unreadable",
+            Finding::GeometryUnsupported { .. } => "geometry_unsupported",
+            Finding::MeshDefect { warning, .. } => warning.code(),
+        }
+    }
+
+    /// How bad it is: 0 (a proof that the stated inertia is impossible) to 8 (a mesh defect).
+    pub fn severity(&self) -> u8 {
+        match self {
+            Finding::ImpossibleMoment { .. } | Finding::ComOutsideGeometry { .. } => 0,
+            Finding::NotPositiveDefinite { .. } | Finding::TriangleInequality { .. } => 1,
+            Finding::NonpositiveMass { .. } => 2,
+            Finding::MissingInertial { .. } => 3,
+            Finding::Placeholder { .. } => 4,
+            Finding::ImplausibleDensity { .. } => 5,
+            Finding::MomentsFar { .. } | Finding::ComFar { .. } => 6,
+            Finding::MeshMissing { .. }
+            | Finding::MeshUnreadable { .. }
+            | Finding::GeometryUnsupported { .. } => 7,
+            Finding::MeshDefect { .. } => 8,
+        }
+    }
+
+    /// Whether it says the stated inertial is wrong (the links `--fix-links flagged` changes),
+    /// rather than something about the geometry.
+    pub fn flags_inertial(&self) -> bool {
+        self.severity() <= 6
+    }
+}
+
+/// One link's audit.
+#[derive(Debug, Clone)]
+pub struct LinkAudit {
+    /// The link's index in [`Robot::links`].
+    pub link: usize,
+    /// The stated inertial's mass properties (`None` without one).
+    pub stated: Option<MassProperties>,
+    /// From the geometry, or why not.
+    pub computed: Result<Computed, Unweighed>,
+    /// The geometry's bounding-box diagonal, m, when its extent is known.
+    pub size: Option<f64>,
+    /// Stated beside computed, when both are there.
+    pub comparison: Option<Comparison>,
+    /// What is wrong, worst first.
+    pub findings: Vec<Finding>,
+}
+
+impl LinkAudit {
+    /// The worst finding's severity (9 with none).
+    pub fn worst(&self) -> u8 {
+        self.findings
+            .iter()
+            .map(Finding::severity)
+            .min()
+            .unwrap_or(9)
+    }
+
+    /// Whether a finding says the stated inertial is wrong.
+    pub fn flagged(&self) -> bool {
+        self.findings.iter().any(Finding::flags_inertial)
+    }
+}
+
+/// The whole robot's audit.
+#[derive(Debug, Clone)]
+pub struct Audit {
+    /// Every link, in the robot's order.
+    pub links: Vec<LinkAudit>,
+    /// The options used.
+    pub options: AuditOptions,
+}
+
+impl Audit {
+    /// The links worst first (then by tensor error, largest first; then in file order).
+    pub fn worst_first(&self) -> Vec<&LinkAudit> {
+        let mut v: Vec<&LinkAudit> = self.links.iter().collect();
+        let error = |l: &LinkAudit| l.comparison.as_ref().map_or(-1.0, |c| c.tensor_error);
+        v.sort_by(|a, b| {
+            a.worst()
+                .cmp(&b.worst())
+                .then(error(b).total_cmp(&error(a)))
+                .then(a.link.cmp(&b.link))
+        });
+        v
+    }
+}
+
+/// Audits every link of `robot`.
+pub fn audit(robot: &Robot, options: &AuditOptions) -> Audit {
+    // Both kinds: the proofs take the mass to lie in all of a link's geometry.
+    let meshes = geometry::load_meshes(
+        robot,
+        &[GeometryKind::Collision, GeometryKind::Visual],
+        &options.repairs,
+    );
+    let mut links: Vec<LinkAudit> = robot
+        .links
+        .par_iter()
+        .enumerate()
+        .map(|(i, link)| audit_link(robot, i, link, &meshes, options))
+        .collect();
+    shared_tensors(robot, &mut links);
+    for l in &mut links {
+        l.findings.sort_by_key(Finding::severity);
+    }
+    Audit {
+        links,
+        options: options.clone(),
+    }
+}
+
+/// A link's computed mass properties from its geometry of `kind` (for the app, which weighs
+/// one link at a time).
+pub fn weigh(
+    link: &Link,
+    meshes: &Meshes,
+    format: Format,
+    options: &AuditOptions,
+) -> Result<Computed, Unweighed> {
+    let ready: Vec<Ready<'_>> = link
+        .geometry(options.geometry)
+        .iter()
+        .map(|g| geometry::ready(g, meshes))
+        .collect();
+    computed(link, &ready, format, options)
+}
+
+fn audit_link(
+    robot: &Robot,
+    i: usize,
+    link: &Link,
+    meshes: &Meshes,
+    options: &AuditOptions,
+) -> LinkAudit {
+    let ready: Vec<Ready<'_>> = link
+        .geometry(options.geometry)
+        .iter()
+        .map(|g| geometry::ready(g, meshes))
+        .collect();
+    let mut findings = Vec::new();
+    for r in &ready {
+        if let Err(problem) = &r.unit {
+            findings.push(match problem.clone() {
+                Problem::Missing { written, tried } => Finding::MeshMissing { written, tried },
+                Problem::Mesh { file, error } => Finding::MeshUnreadable { file, error },
+                Problem::Unsupported { what } => Finding::GeometryUnsupported { what },
+            });
+        }
+        for w in &r.warnings {
+            findings.push(Finding::MeshDefect {
+                geometry: r.geometry.shape.label(),
+                warning: w.clone(),
+            });
+        }
+    }
+    let extents: Option<Vec<&Extent<'_>>> = ready.iter().map(|r| r.extent.as_ref()).collect();
+    let extents = extents.filter(|e| !e.is_empty());
+    let size = extents.as_deref().map(box_diagonal);
+    let other_kind = match options.geometry {
+        GeometryKind::Collision => GeometryKind::Visual,
+        GeometryKind::Visual => GeometryKind::Collision,
+    };
+    let other: Vec<Ready<'_>> = link
+        .geometry(other_kind)
+        .iter()
+        .map(|g| geometry::ready(g, meshes))
+        .collect();
+    let other_extents: Option<Vec<&Extent<'_>>> = other.iter().map(|r| r.extent.as_ref()).collect();
+    let region = match (&extents, other_extents) {
+        (Some(e), Some(o)) if !o.is_empty() => {
+            Some((Region::Both, e.iter().copied().chain(o).collect::<Vec<_>>()))
+        }
+        (Some(e), _) => Some((Region::Only(options.geometry), e.clone())),
+        (None, _) => None,
+    };
+    let computed = computed(link, &ready, robot.format, options);
+    let stated = link
+        .stated
+        .as_ref()
+        .map(|s| MassProperties::new(s.mass, s.center_of_mass, s.inertia));
+
+    if link.stated.is_none() && robot.format == Format::Urdf && (link.moving || !ready.is_empty()) {
+        findings.push(Finding::MissingInertial {
+            moving: link.moving,
+        });
+    }
+    let mut comparison = None;
+    if let Some(s) = &stated {
+        stated_laws(s, link.moving, &mut findings);
+        if s.mass > 0.0 {
+            if let Some((region, extents)) = &region {
+                bounds(s, *region, extents, &mut findings);
+            }
+        }
+        if let (Ok(c), Some(size)) = (&computed, size) {
+            if s.mass > 0.0 {
+                let cmp = compare(s, &c.properties, size);
+                if let Some(t) = options.max_moment_error {
+                    if cmp.tensor_error > t {
+                        findings.push(Finding::MomentsFar {
+                            error: cmp.tensor_error,
+                            threshold: t,
+                        });
+                    }
+                }
+                if let Some(t) = options.max_com_offset {
+                    if cmp.com_offset_fraction > t {
+                        findings.push(Finding::ComFar {
+                            fraction: cmp.com_offset_fraction,
+                            threshold: t,
+                        });
+                    }
+                }
+                comparison = Some(cmp);
+            }
+            let density = s.mass / c.volume;
+            if s.mass > 0.0 && !(PLAUSIBLE_DENSITY.0..=PLAUSIBLE_DENSITY.1).contains(&density) {
+                findings.push(Finding::ImplausibleDensity {
+                    density,
+                    volume: c.volume,
+                    mass: s.mass,
+                });
+            }
+        }
+        let written = &link
+            .stated
+            .as_ref()
+            .map(|s| s.written.clone())
+            .unwrap_or_default();
+        let mut reasons = Vec::new();
+        let m = s.principal.moments;
+        let products = s.inertia_com[(0, 1)]
+            .abs()
+            .max(s.inertia_com[(0, 2)].abs())
+            .max(s.inertia_com[(1, 2)].abs());
+        let round_shape = computed.as_ref().is_ok_and(|c| {
+            let cm = c.properties.principal.moments;
+            cm.z <= ISOTROPIC_RATIO * cm.x
+        });
+        if m.z > 0.0 && m.z - m.x <= SLACK * m.z && products <= SLACK * m.z && !round_shape {
+            reasons.push(PlaceholderReason::EqualMoments { moment: m.z });
+        }
+        if round_numbers(written) {
+            reasons.push(PlaceholderReason::RoundNumbers {
+                written: written.clone(),
+            });
+        }
+        if !reasons.is_empty() {
+            findings.push(Finding::Placeholder { reasons });
+        }
+    }
+    LinkAudit {
+        link: i,
+        stated,
+        computed,
+        size,
+        comparison,
+        findings,
+    }
+}
+
+/// The laws every stated inertia must obey on its own.
+fn stated_laws(s: &MassProperties, moving: bool, findings: &mut Vec<Finding>) {
+    if s.mass < 0.0 || (s.mass == 0.0 && moving) || !s.mass.is_finite() {
+        findings.push(Finding::NonpositiveMass { mass: s.mass });
+    }
+    let m = s.principal.moments;
+    let moments = [m.x, m.y, m.z];
+    let massless = s.mass == 0.0 && m.amax() == 0.0;
+    if massless {
+        return;
+    }
+    if m.x <= 0.0 {
+        findings.push(Finding::NotPositiveDefinite { moments });
+    } else if m.x + m.y < m.z * (1.0 - SLACK) {
+        findings.push(Finding::TriangleInequality { moments });
+    }
+}
+
+/// The two proofs: each principal moment against m·r², and the centre against the hull.
+fn bounds(
+    s: &MassProperties,
+    region: Region,
+    extents: &[&Extent<'_>],
+    findings: &mut Vec<Finding>,
+) {
+    let rotation = s.principal.rotation.matrix();
+    let mut axes = Vec::new();
+    for rank in 0..3 {
+        let axis: Vector3<f64> = rotation.column(rank).into();
+        let radius = extents
+            .iter()
+            .map(|e| e.farthest_from_line(&s.center_of_mass, &axis))
+            .fold(0.0, f64::max);
+        let bound = s.mass * radius * radius;
+        let moment = s.principal.moments[rank];
+        if moment > bound * (1.0 + SLACK) {
+            axes.push(ImpossibleAxis {
+                rank,
+                moment,
+                bound,
+                radius,
+                axis,
+            });
+        }
+    }
+    if !axes.is_empty() {
+        findings.push(Finding::ImpossibleMoment {
+            region,
+            mass: s.mass,
+            axes,
+        });
+    }
+    let size = box_diagonal(extents);
+    let c = s.center_of_mass.coords;
+    let outside = directions()
+        .iter()
+        .map(|d| {
+            let hi = extents
+                .iter()
+                .map(|e| e.support(d))
+                .fold(f64::NEG_INFINITY, f64::max);
+            let lo = -extents
+                .iter()
+                .map(|e| e.support(&-d))
+                .fold(f64::NEG_INFINITY, f64::max);
+            let t = d.dot(&c);
+            (t - hi).max(lo - t)
+        })
+        .fold(f64::NEG_INFINITY, f64::max);
+    if outside > SLACK * size {
+        findings.push(Finding::ComOutsideGeometry {
+            region,
+            center_of_mass: s.center_of_mass,
+            distance: outside,
+        });
+    }
+}
+
+/// The 13 unit directions of a 26-sided discrete oriented polytope: the axes, the face
+/// diagonals and the body diagonals of a cube.
+fn directions() -> Vec<Vector3<f64>> {
+    let raw = [
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 1.0, 0.0],
+        [1.0, -1.0, 0.0],
+        [1.0, 0.0, 1.0],
+        [1.0, 0.0, -1.0],
+        [0.0, 1.0, 1.0],
+        [0.0, 1.0, -1.0],
+        [1.0, 1.0, 1.0],
+        [1.0, 1.0, -1.0],
+        [1.0, -1.0, 1.0],
+        [-1.0, 1.0, 1.0],
+    ];
+    raw.iter().map(|v| Vector3::from(*v).normalize()).collect()
+}
+
+/// The diagonal of the geometry's bounding box in the link's axes.
+fn box_diagonal(extents: &[&Extent<'_>]) -> f64 {
+    let side = |axis: Vector3<f64>| {
+        let hi = extents
+            .iter()
+            .map(|e| e.support(&axis))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let lo = -extents
+            .iter()
+            .map(|e| e.support(&-axis))
+            .fold(f64::NEG_INFINITY, f64::max);
+        hi - lo
+    };
+    Vector3::new(side(Vector3::x()), side(Vector3::y()), side(Vector3::z())).norm()
+}
+
+/// Whether every non-zero number written is a power of ten (1, 0.1, 1e-3…), and one is.
+fn round_numbers(written: &[String]) -> bool {
+    let values: Option<Vec<f64>> = written.iter().map(|w| w.parse().ok()).collect();
+    let Some(values) = values else {
+        return false;
+    };
+    let nonzero: Vec<f64> = values.into_iter().filter(|v| *v != 0.0).collect();
+    !nonzero.is_empty()
+        && nonzero.iter().all(|v| {
+            let k = v.abs().log10().round();
+            (-12.0..=3.0).contains(&k) && format!("1e{k}").parse::<f64>().ok() == Some(v.abs())
+        })
+}
+
+/// The link's geometry as one body, at the mass the options and the file give.
+fn computed(
+    link: &Link,
+    ready: &[Ready<'_>],
+    format: Format,
+    options: &AuditOptions,
+) -> Result<Computed, Unweighed> {
+    if ready.is_empty() {
+        return Err(Unweighed::NoGeometry);
+    }
+    let units: Option<Vec<&MassProperties>> = ready.iter().map(|r| r.unit.as_ref().ok()).collect();
+    let units = units.ok_or(Unweighed::Incomplete)?;
+    let volume: f64 = units.iter().map(|u| u.mass).sum();
+    let stated_mass = link.stated.as_ref().map(|s| s.mass).filter(|m| *m > 0.0);
+    let basis = match (options.density, stated_mass, format) {
+        (Some(d), ..) => MassBasis::GivenDensity(d),
+        (None, Some(_), _) => MassBasis::StatedMass,
+        (None, None, Format::Mjcf) => MassBasis::FileMasses,
+        (None, None, Format::Urdf) => MassBasis::AssumedDensity(options.assumed_density),
+    };
+    let masses: Vec<f64> = ready
+        .iter()
+        .zip(&units)
+        .map(|(r, u)| match basis {
+            MassBasis::StatedMass => stated_mass.unwrap_or(0.0) * u.mass / volume,
+            MassBasis::GivenDensity(d) | MassBasis::AssumedDensity(d) => d * u.mass,
+            MassBasis::FileMasses => match r.geometry.mass {
+                GeometryMass::Mass(m) => m,
+                GeometryMass::Density(d) => d * u.mass,
+                GeometryMass::Unstated => options.assumed_density * u.mass,
+            },
+        })
+        .collect();
+    let parts: Vec<PartMass> = units
+        .iter()
+        .zip(&masses)
+        .filter(|(_, m)| **m > 0.0)
+        .map(|(u, m)| PartMass {
+            mass: *m,
+            center_of_mass: u.center_of_mass,
+            inertia_com: u.inertia_com * (m / u.mass),
+        })
+        .collect();
+    if parts.is_empty() {
+        return Err(Unweighed::Massless);
+    }
+    let (mut properties, _) = combine(&parts).map_err(Unweighed::Sum)?;
+    if basis == MassBasis::StatedMass {
+        // Exactly the stated mass, not its sum of rounded parts.
+        properties = properties
+            .with_mass(stated_mass.unwrap_or(properties.mass))
+            .map_err(Unweighed::Sum)?;
+    }
+    Ok(Computed {
+        density: properties.mass / volume,
+        properties,
+        volume,
+        basis,
+    })
+}
+
+fn compare(s: &MassProperties, c: &MassProperties, size: f64) -> Comparison {
+    let com_offset = (s.center_of_mass - c.center_of_mass).norm();
+    let difference: Matrix3<f64> = s.inertia_com - c.inertia_com;
+    let unique = |d: Degeneracy| match d {
+        Degeneracy::Distinct => [true; 3],
+        Degeneracy::Moments12 => [false, false, true],
+        Degeneracy::Moments23 => [true, false, false],
+        Degeneracy::Spherical => [false; 3],
+    };
+    let (us, uc) = (
+        unique(s.principal.degeneracy),
+        unique(c.principal.degeneracy),
+    );
+    let (rs, rc) = (s.principal.rotation.matrix(), c.principal.rotation.matrix());
+    let axis_angles = std::array::from_fn(|k| {
+        (us[k] && uc[k]).then(|| rs.column(k).dot(&rc.column(k)).abs().min(1.0).acos())
+    });
+    Comparison {
+        com_offset,
+        com_offset_fraction: if size > 0.0 {
+            com_offset / size
+        } else {
+            f64::INFINITY
+        },
+        tensor_error: difference.norm() / c.inertia_com.norm(),
+        axis_angles,
+    }
+}
+
+/// Marks the links that share one stated tensor while their geometries differ.
+fn shared_tensors(robot: &Robot, links: &mut [LinkAudit]) {
+    let mut groups: HashMap<[u64; 6], Vec<usize>> = HashMap::new();
+    for (i, l) in links.iter().enumerate() {
+        if let Some(s) = &l.stated {
+            let t = &s.inertia_com;
+            if t.amax() > 0.0 {
+                let key = [
+                    t[(0, 0)],
+                    t[(1, 1)],
+                    t[(2, 2)],
+                    t[(0, 1)],
+                    t[(0, 2)],
+                    t[(1, 2)],
+                ]
+                .map(f64::to_bits);
+                groups.entry(key).or_default().push(i);
+            }
+        }
+    }
+    for members in groups.values().filter(|m| m.len() > 1) {
+        for &i in members {
+            let others: Vec<String> = members
+                .iter()
+                .filter(|&&j| j != i && differ(&links[i], &links[j], robot))
+                .map(|&j| robot.links[links[j].link].name.clone())
+                .collect();
+            if others.is_empty() {
+                continue;
+            }
+            let reason = PlaceholderReason::SharedTensor { links: others };
+            match links[i].findings.iter_mut().find_map(|f| match f {
+                Finding::Placeholder { reasons } => Some(reasons),
+                _ => None,
+            }) {
+                Some(reasons) => reasons.push(reason),
+                None => links[i].findings.push(Finding::Placeholder {
+                    reasons: vec![reason],
+                }),
+            }
+        }
+    }
+}
+
+/// Whether two links' geometries differ: by their computed principal moments per unit mass
+/// (more than 10 %), or, without them, by their shapes.
+fn differ(a: &LinkAudit, b: &LinkAudit, robot: &Robot) -> bool {
+    match (&a.computed, &b.computed) {
+        (Ok(x), Ok(y)) => {
+            let mx = x.properties.principal.moments / x.properties.mass;
+            let my = y.properties.principal.moments / y.properties.mass;
+            (0..3).any(|k| (mx[k] - my[k]).abs() > 0.1 * mx[k].max(my[k]))
+        }
+        _ => {
+            let shapes = |l: &LinkAudit| -> Vec<String> {
+                robot.links[l.link]
+                    .collision
+                    .iter()
+                    .map(|g| g.shape.label())
+                    .collect()
+            };
+            shapes(a) != shapes(b)
+        }
+    }
+}

@@ -1,0 +1,92 @@
+//! Why a robot description cannot be read, and where in which file.
+
+use std::fmt;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+/// A place in a description's files: the file, and the one-based line and column of an element.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Location {
+    /// The file, as it was reached (the description or a file it includes).
+    pub file: PathBuf,
+    /// One-based line.
+    pub line: u32,
+    /// One-based column.
+    pub column: u32,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}:{}", self.file.display(), self.line, self.column)
+    }
+}
+
+/// Why a description cannot be read. Each names the file and, inside it, the line and element.
+#[derive(Debug, Clone, thiserror::Error)]
+pub enum RobotError {
+    /// The file cannot be read.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// What the system said.
+        source: Arc<std::io::Error>,
+    },
+    /// The text is not well-formed XML.
+    #[error("{at}: not well-formed XML: {message}")]
+    Xml {
+        /// Where the parser stopped.
+        at: Location,
+        /// The parser's words.
+        message: String,
+    },
+    /// A xacro file: macros that only `xacro` expands.
+    #[error(
+        "{}: this is a xacro file (it uses xacro: elements, line {line}): run xacro first, \
+         `xacro {} > robot.urdf`, and audit the URDF it writes",
+        file.display(),
+        file.display()
+    )]
+    Xacro {
+        /// The file.
+        file: PathBuf,
+        /// The first line with a xacro element or `$(…)` substitution.
+        line: u32,
+    },
+    /// Neither `<robot>` (URDF) nor `<mujoco>` (MJCF) at the root.
+    #[error(
+        "{}: the root element is <{root}>; a robot description is a URDF (<robot>) or an MJCF \
+         (<mujoco>) file",
+        file.display()
+    )]
+    UnknownFormat {
+        /// The file.
+        file: PathBuf,
+        /// The root element's name.
+        root: String,
+    },
+    /// An attribute whose value cannot be used.
+    #[error("{at}: <{element} {attribute}=\"{value}\">: {problem}")]
+    Attribute {
+        /// The element's place.
+        at: Location,
+        /// The element's name.
+        element: String,
+        /// The attribute's name.
+        attribute: String,
+        /// Its value as written.
+        value: String,
+        /// What is wrong with it.
+        problem: String,
+    },
+    /// Something the format requires is not there, or the elements contradict each other.
+    #[error("{at}: <{element}>: {problem}")]
+    Element {
+        /// The element's place.
+        at: Location,
+        /// The element's name.
+        element: String,
+        /// What is wrong.
+        problem: String,
+    },
+}

@@ -1,0 +1,92 @@
+//! # robot — robot descriptions audited against their geometry
+//!
+//! Reads a URDF or an MJCF description into plain data ([`Robot`]: links with their stated
+//! `<inertial>` and their geometries, placed at the zero pose), weighs every link's geometry
+//! exactly (meshes by massprops' integrals and defect pass, primitives in closed form,
+//! [`primitives`]), compares the two and names what is wrong ([`audit()`]: findings with their
+//! evidence, two of them proofs of impossibility), and writes the description back with chosen
+//! `<inertial>`s replaced and every other byte kept ([`fix::splice`]).
+//!
+//! Conventions: SI units (m, kg, kg·m²), tensors about the centre of mass in the link's axes,
+//! off-diagonals −∑m·x·y (URDF's ixy and MJCF's fullinertia M12 are these entries).
+//!
+//! ```
+//! use robot::{AuditOptions, ReadOptions, audit, read_str};
+//! let urdf = r#"<robot name="r"><link name="finger">
+//!   <inertial><mass value="0.1"/>
+//!     <inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+//!   <collision><geometry><box size="0.02 0.02 0.05"/></geometry></collision>
+//! </link></robot>"#;
+//! let robot = read_str(urdf, "finger.urdf".as_ref(), &ReadOptions::default()).unwrap();
+//! let report = audit(&robot, &AuditOptions::default());
+//! let codes: Vec<&str> = report.links[0].findings.iter().map(|f| f.code()).collect();
+//! // 0.1 kg·m² on 0.1 kg needs mass 1 m from the axis; the box reaches 3 cm.
+//! assert!(codes.contains(&"impossible_moment"));
+//! assert!(codes.contains(&"placeholder"));
+//! ```
+
+mod audit;
+mod error;
+pub mod fix;
+pub mod geometry;
+mod mjcf;
+mod model;
+pub mod primitives;
+mod urdf;
+mod xml;
+
+use std::path::{Path, PathBuf};
+
+pub use audit::{
+    Audit, AuditOptions, Comparison, Computed, Finding, ImpossibleAxis, LinkAudit, MassBasis,
+    PLAUSIBLE_DENSITY, PlaceholderReason, Region, Unweighed, audit, weigh,
+};
+pub use error::{Location, RobotError};
+pub use model::{
+    Format, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span, Unsupported,
+};
+pub use xml::SourceFile;
+
+/// How to find what a description refers to.
+#[derive(Debug, Clone, Default)]
+pub struct ReadOptions {
+    /// URDF `package://NAME/…` → a folder, tried before searching upwards from the file.
+    pub packages: Vec<(String, PathBuf)>,
+}
+
+/// Reads the URDF or MJCF description at `path`.
+pub fn read(path: &Path, options: &ReadOptions) -> Result<Robot, RobotError> {
+    let text = xml::read_file(path)?;
+    read_str(&text, path, options)
+}
+
+/// Reads a description from its text, as if from `path` (relative files are found beside it).
+pub fn read_str(text: &str, path: &Path, options: &ReadOptions) -> Result<Robot, RobotError> {
+    let root = xml::parse(text, path, 0)?;
+    if let Some(line) = xacro_line(text) {
+        return Err(RobotError::Xacro {
+            file: path.to_owned(),
+            line,
+        });
+    }
+    let sources = vec![SourceFile {
+        path: path.to_owned(),
+        text: text.to_owned(),
+    }];
+    match root.name.as_str() {
+        "robot" => urdf::read(&root, sources, options),
+        "mujoco" => mjcf::read(&root, sources),
+        other => Err(RobotError::UnknownFormat {
+            file: path.to_owned(),
+            root: other.to_owned(),
+        }),
+    }
+}
+
+/// The first line that only xacro understands: a `xacro:` element or a `${…}` or `$(…)`
+/// substitution.
+fn xacro_line(text: &str) -> Option<u32> {
+    text.lines()
+        .position(|l| l.contains("<xacro:") || l.contains("${") || l.contains("$("))
+        .map(|i| i as u32 + 1)
+}

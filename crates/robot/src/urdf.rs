@@ -1,0 +1,316 @@
+//! The URDF reader: `<link>`s with `<inertial>`, `<visual>` and `<collision>` geometry, and the
+//! `<joint>`s only as far as the zero pose needs (parent, child, origin, type).
+//!
+//! ROS URDF specification (wiki.ros.org/urdf/XML): `<origin xyz rpy>` places a frame in its
+//! link's (rpy fixed-axis roll, pitch, yaw, R = Rz(yaw)·Ry(pitch)·Rx(roll)); the inertial's
+//! origin is the centre of mass and its axes are those of `<inertia ixx ixy ixz iyy iyz izz>`,
+//! the entries of the inertia matrix (ixy = −∑m·x·y); `<box size>` gives full sides,
+//! `<cylinder radius length>` lies along z, `<mesh filename scale>`; a joint's origin places
+//! the child link's frame in the parent's. `<capsule radius length>` is an extension that
+//! Bullet and Gazebo read. Mesh paths: `package://NAME/…` (a folder NAME given, or found by
+//! searching upwards from the URDF), `file://…`, or relative to the URDF.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
+
+use crate::ReadOptions;
+use crate::error::RobotError;
+use crate::model::{Format, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Span};
+use crate::xml::{Element, SourceFile};
+
+/// Builds the robot of a parsed `<robot>` element.
+pub fn read(
+    root: &Element,
+    sources: Vec<SourceFile>,
+    options: &ReadOptions,
+) -> Result<Robot, RobotError> {
+    let dir = sources[0]
+        .path
+        .parent()
+        .map(Path::to_owned)
+        .unwrap_or_default();
+    let mut names: HashMap<&str, usize> = HashMap::new();
+    let mut links = Vec::new();
+    for (i, e) in root.children_named("link").enumerate() {
+        let name = e
+            .get("name")
+            .ok_or_else(|| e.wrong("a link needs a name"))?;
+        if names.insert(name, i).is_some() {
+            return Err(e.wrong(format!("a second link named \"{name}\"")));
+        }
+        links.push(link(e, name, &dir, options)?);
+    }
+    if links.is_empty() {
+        return Err(root.wrong("the robot has no <link>"));
+    }
+    // Each child's joint: its parent, its origin, whether it moves.
+    let mut joint_of: Vec<Option<(usize, Isometry3<f64>, bool)>> = vec![None; links.len()];
+    for j in root.children_named("joint") {
+        let end = |which: &str| -> Result<usize, RobotError> {
+            let e = j
+                .child(which)
+                .ok_or_else(|| j.wrong(format!("a joint needs a <{which}> link")))?;
+            let name = e
+                .get("link")
+                .ok_or_else(|| e.wrong("the attribute link is missing"))?;
+            names
+                .get(name)
+                .copied()
+                .ok_or_else(|| e.bad("link", name, "no <link> has this name"))
+        };
+        let (parent, child) = (end("parent")?, end("child")?);
+        if joint_of[child].is_some() {
+            return Err(j.wrong(format!(
+                "link \"{}\" is the child of a second joint",
+                links[child].name
+            )));
+        }
+        let moving = j.get("type").is_some_and(|t| t != "fixed");
+        joint_of[child] = Some((parent, origin(j.child("origin"))?, moving));
+    }
+    for (i, joint) in joint_of.iter().enumerate() {
+        if let Some((parent, _, moving)) = joint {
+            links[i].parent = Some(*parent);
+            links[i].moving = *moving;
+        }
+    }
+    let links = in_tree_order(links, &joint_of, root)?;
+    Ok(Robot {
+        name: root
+            .get("name")
+            .map_or_else(|| file_stem(&sources[0].path), str::to_owned),
+        format: Format::Urdf,
+        sources,
+        links,
+        unsupported: Vec::new(),
+        inertia_from_geoms: false,
+    })
+}
+
+/// The links reordered parents first, with their zero poses; refuses a cycle.
+fn in_tree_order(
+    links: Vec<Link>,
+    joint_of: &[Option<(usize, Isometry3<f64>, bool)>],
+    root: &Element,
+) -> Result<Vec<Link>, RobotError> {
+    let n = links.len();
+    let mut order: Vec<usize> = (0..n).filter(|&i| joint_of[i].is_none()).collect();
+    let mut k = 0;
+    while k < order.len() {
+        let p = order[k];
+        order.extend((0..n).filter(|&c| joint_of[c].is_some_and(|(parent, ..)| parent == p)));
+        k += 1;
+    }
+    if order.len() < n {
+        let stuck = (0..n).find(|i| !order.contains(i)).unwrap_or(0);
+        return Err(root.wrong(format!(
+            "the joints make a loop through link \"{}\": a URDF is a tree",
+            links[stuck].name
+        )));
+    }
+    let mut new_index = vec![0; n];
+    for (new, &old) in order.iter().enumerate() {
+        new_index[old] = new;
+    }
+    let mut slots: Vec<Option<Link>> = links.into_iter().map(Some).collect();
+    let mut sorted: Vec<Link> = Vec::with_capacity(n);
+    for &old in &order {
+        let Some(mut link) = slots[old].take() else {
+            continue;
+        };
+        if let Some((parent, origin, _)) = joint_of[old] {
+            link.parent = Some(new_index[parent]);
+            link.pose = sorted[new_index[parent]].pose * origin;
+        }
+        sorted.push(link);
+    }
+    Ok(sorted)
+}
+
+fn link(e: &Element, name: &str, dir: &Path, options: &ReadOptions) -> Result<Link, RobotError> {
+    let stated = e.child("inertial").map(inertial).transpose()?;
+    let geometries = |kind: &str| -> Result<Vec<Geometry>, RobotError> {
+        e.children_named(kind)
+            .filter_map(|g| geometry(g, dir, options).transpose())
+            .collect()
+    };
+    Ok(Link {
+        name: name.to_owned(),
+        parent: None,
+        pose: Isometry3::identity(),
+        moving: false,
+        stated,
+        element: span(e),
+        collision: geometries("collision")?,
+        visual: geometries("visual")?,
+    })
+}
+
+/// The span of an element.
+pub fn span(e: &Element) -> Span {
+    Span {
+        file: e.file,
+        range: e.range.clone(),
+        at: e.at.clone(),
+    }
+}
+
+fn inertial(e: &Element) -> Result<Inertial, RobotError> {
+    let frame = origin(e.child("origin"))?;
+    let mass_element = e
+        .child("mass")
+        .ok_or_else(|| e.wrong("an inertial needs a <mass value>"))?;
+    let mass = mass_element.required_number("value")?;
+    let i = e
+        .child("inertia")
+        .ok_or_else(|| e.wrong("an inertial needs an <inertia ixx ixy ixz iyy iyz izz>"))?;
+    let names = ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"];
+    let mut v = [0.0; 6];
+    let mut written = Vec::with_capacity(6);
+    for (k, name) in names.iter().enumerate() {
+        v[k] = i.required_number(name)?;
+        written.push(i.get(name).unwrap_or_default().trim().to_owned());
+    }
+    let local = Matrix3::new(v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5]);
+    let r = frame.rotation.to_rotation_matrix();
+    Ok(Inertial {
+        mass,
+        center_of_mass: Point3::from(frame.translation.vector),
+        inertia: r.matrix() * local * r.matrix().transpose(),
+        written,
+        span: span(e),
+    })
+}
+
+/// `<origin xyz rpy>` as a rigid motion; the identity when absent.
+pub fn origin(e: Option<&Element>) -> Result<Isometry3<f64>, RobotError> {
+    let Some(e) = e else {
+        return Ok(Isometry3::identity());
+    };
+    let [x, y, z] = e.numbers::<3>("xyz")?.unwrap_or([0.0; 3]);
+    let [roll, pitch, yaw] = e.numbers::<3>("rpy")?.unwrap_or([0.0; 3]);
+    Ok(Isometry3::from_parts(
+        Translation3::new(x, y, z),
+        UnitQuaternion::from_euler_angles(roll, pitch, yaw),
+    ))
+}
+
+/// A `<visual>` or `<collision>`; `None` for one without `<geometry>` (urdfdom allows it).
+fn geometry(
+    e: &Element,
+    dir: &Path,
+    options: &ReadOptions,
+) -> Result<Option<Geometry>, RobotError> {
+    let Some(g) = e.child("geometry") else {
+        return Ok(None);
+    };
+    let Some(s) = g.children.first() else {
+        return Err(g.wrong("a <geometry> needs a box, cylinder, sphere or mesh"));
+    };
+    let positive = |name: &str| -> Result<f64, RobotError> {
+        let v = s.required_number(name)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(s.bad(name, s.get(name).unwrap_or_default(), "must be positive"))
+        }
+    };
+    let shape = match s.name.as_str() {
+        "box" => {
+            let size = s
+                .numbers::<3>("size")?
+                .ok_or_else(|| s.wrong("the attribute size is missing"))?;
+            if size.iter().any(|&x| x <= 0.0) {
+                return Err(s.bad(
+                    "size",
+                    s.get("size").unwrap_or_default(),
+                    "sides must be positive",
+                ));
+            }
+            Shape::Box {
+                half_extents: Vector3::from(size) / 2.0,
+            }
+        }
+        "sphere" => Shape::Sphere {
+            radius: positive("radius")?,
+        },
+        "cylinder" => Shape::Cylinder {
+            radius: positive("radius")?,
+            half_length: positive("length")? / 2.0,
+        },
+        "capsule" => Shape::Capsule {
+            radius: positive("radius")?,
+            half_length: positive("length")? / 2.0,
+        },
+        "mesh" => {
+            let written = s
+                .get("filename")
+                .ok_or_else(|| s.wrong("the attribute filename is missing"))?;
+            let scale = match s.number_list("scale")?.as_deref() {
+                None => Vector3::repeat(1.0),
+                Some([k]) => Vector3::repeat(*k),
+                Some([x, y, z]) => Vector3::new(*x, *y, *z),
+                Some(_) => {
+                    return Err(s.bad(
+                        "scale",
+                        s.get("scale").unwrap_or_default(),
+                        "expected 3 numbers",
+                    ));
+                }
+            };
+            match resolve_mesh(written, dir, options) {
+                Ok(file) => Shape::Mesh { file, scale },
+                Err(tried) => Shape::MissingMesh {
+                    written: written.to_owned(),
+                    tried,
+                },
+            }
+        }
+        other => Shape::Unsupported {
+            what: format!("<{other}> geometry"),
+        },
+    };
+    Ok(Some(Geometry {
+        shape,
+        pose: origin(e.child("origin"))?,
+        mass: GeometryMass::Unstated,
+        at: s.at.clone(),
+    }))
+}
+
+/// Where a URDF mesh file is: the first of the candidates that exists, or every path tried.
+fn resolve_mesh(written: &str, dir: &Path, options: &ReadOptions) -> Result<PathBuf, Vec<PathBuf>> {
+    let mut tried = Vec::new();
+    if let Some(rest) = written.strip_prefix("package://") {
+        let (package, inner) = rest.split_once('/').unwrap_or((rest, ""));
+        for (name, root) in &options.packages {
+            if name == package {
+                tried.push(root.join(inner));
+            }
+        }
+        for ancestor in dir.ancestors() {
+            if ancestor.file_name().is_some_and(|n| n == package) {
+                tried.push(ancestor.join(inner));
+            }
+            tried.push(ancestor.join(package).join(inner));
+        }
+        // Descriptions copied out of their package often keep the package-relative path.
+        tried.push(dir.join(inner));
+    } else if let Some(path) = written.strip_prefix("file://") {
+        tried.push(PathBuf::from(path));
+    } else {
+        tried.push(dir.join(written));
+    }
+    match tried.iter().find(|p| p.is_file()) {
+        Some(found) => Ok(found.clone()),
+        None => Err(tried),
+    }
+}
+
+/// A file's stem, for a model without a name.
+pub fn file_stem(path: &Path) -> String {
+    path.file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned())
+}
