@@ -1,0 +1,321 @@
+//! Synthetic robots whose inertials are derived by hand: boxes and cylinders under rotated
+//! origins, a scaled mesh found through a package path, MJCF defaults and a `fromto` capsule;
+//! the impossibility bound just above and just below m·r²; the hull test; placeholders.
+
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
+
+use nalgebra::{Matrix3, Vector3};
+use robot::{AuditOptions, Finding, ReadOptions, Region, audit, read, read_str};
+
+/// `a` equals `b` to `tol` relative to the larger entry of `b`.
+fn close(a: &Matrix3<f64>, b: &Matrix3<f64>, tol: f64) {
+    let scale = b.amax();
+    assert!((a - b).amax() <= tol * scale, "\n{a}\nvs\n{b}");
+}
+
+fn steiner(m: f64, d: Vector3<f64>) -> Matrix3<f64> {
+    (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * m
+}
+
+fn codes(f: &[Finding]) -> Vec<&'static str> {
+    f.iter().map(Finding::code).collect()
+}
+
+/// A fresh folder under the target directory's tmp.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_box_and_a_cylinder_under_rotated_origins_sum_to_their_hand_derived_tensor() {
+    let urdf = format!(
+        r#"<robot name="t">
+  <link name="arm">
+    <inertial><origin xyz="0 0 0"/><mass value="3"/>
+      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
+    <collision><origin xyz="0.1 0 0" rpy="0 0 {half_pi}"/>
+      <geometry><box size="0.2 0.4 0.6"/></geometry></collision>
+    <collision><origin xyz="0 0.2 0" rpy="{half_pi} 0 0"/>
+      <geometry><cylinder radius="0.05" length="0.3"/></geometry></collision>
+  </link>
+</robot>"#,
+        half_pi = PI / 2.0
+    );
+    let robot = read_str(&urdf, Path::new("t.urdf"), &ReadOptions::default()).unwrap();
+    let report = audit(&robot, &AuditOptions::default());
+    let c = report.links[0].computed.as_ref().unwrap();
+
+    // By hand: the stated 3 kg spread over both volumes.
+    let (vb, vc) = (0.2 * 0.4 * 0.6, PI * 0.05 * 0.05 * 0.3);
+    let rho = 3.0 / (vb + vc);
+    let (mb, mc) = (rho * vb, rho * vc);
+    // The box turned a quarter about z: its 0.4 side along x, 0.2 along y.
+    let ib = Matrix3::from_diagonal(&Vector3::new(
+        mb * (0.2f64.powi(2) + 0.6f64.powi(2)) / 12.0,
+        mb * (0.4f64.powi(2) + 0.6f64.powi(2)) / 12.0,
+        mb * (0.4f64.powi(2) + 0.2f64.powi(2)) / 12.0,
+    ));
+    // The cylinder turned a quarter about x: its axis along y.
+    let (r, l) = (0.05f64, 0.3f64);
+    let side = mc * (3.0 * r * r + l * l) / 12.0;
+    let ic = Matrix3::from_diagonal(&Vector3::new(side, mc * r * r / 2.0, side));
+    let (cb, cc) = (Vector3::new(0.1, 0.0, 0.0), Vector3::new(0.0, 0.2, 0.0));
+    let com = (cb * mb + cc * mc) / 3.0;
+    let expected = ib + steiner(mb, cb - com) + ic + steiner(mc, cc - com);
+
+    assert!((c.properties.mass - 3.0).abs() < 1e-15);
+    assert!((c.properties.center_of_mass.coords - com).amax() < 1e-15);
+    close(&c.properties.inertia_com, &expected, 1e-12);
+    assert!((c.density - rho).abs() < 1e-9 * rho);
+}
+
+/// A unit cube centred on the origin, as OBJ text.
+fn cube_obj() -> String {
+    let mut s = String::new();
+    for z in [-0.5, 0.5] {
+        for y in [-0.5, 0.5] {
+            for x in [-0.5, 0.5] {
+                s += &format!("v {x} {y} {z}\n");
+            }
+        }
+    }
+    // Vertices numbered 1 + x + 2y + 4z; faces wound outward.
+    s + "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"
+}
+
+#[test]
+fn a_scaled_mesh_is_found_through_its_package_and_weighed_exactly() {
+    let root = scratch("package_search");
+    std::fs::create_dir_all(root.join("mypkg/urdf")).unwrap();
+    std::fs::create_dir_all(root.join("mypkg/meshes")).unwrap();
+    std::fs::write(root.join("mypkg/meshes/cube.obj"), cube_obj()).unwrap();
+    let urdf = r#"<robot name="s"><link name="block">
+  <collision><origin xyz="0 0 0.5" rpy="0 0 0"/><geometry>
+    <mesh filename="package://mypkg/meshes/cube.obj" scale="0.1 0.2 0.3"/></geometry></collision>
+</link></robot>"#;
+    let path = root.join("mypkg/urdf/s.urdf");
+    std::fs::write(&path, urdf).unwrap();
+    let robot = read(&path, &ReadOptions::default()).unwrap();
+    let report = audit(&robot, &AuditOptions::default());
+    let l = &report.links[0];
+    // No mass stated: the assumed 1000 kg/m³ over 0.1 × 0.2 × 0.3 m.
+    let c = l.computed.as_ref().unwrap();
+    let m = 1000.0 * 0.006;
+    assert!((c.properties.mass - m).abs() < 1e-12);
+    assert!((c.properties.center_of_mass.z - 0.5).abs() < 1e-15);
+    let expected = Matrix3::from_diagonal(&Vector3::new(
+        m * (0.04 + 0.09) / 12.0,
+        m * (0.01 + 0.09) / 12.0,
+        m * (0.01 + 0.04) / 12.0,
+    ));
+    close(&c.properties.inertia_com, &expected, 1e-12);
+    assert_eq!(codes(&l.findings), ["missing_inertial"]);
+
+    // Elsewhere, found through --package; not found, every path tried is named.
+    let other = scratch("package_option");
+    std::fs::create_dir_all(other.join("store/meshes")).unwrap();
+    std::fs::create_dir_all(other.join("robot")).unwrap();
+    std::fs::write(other.join("store/meshes/cube.obj"), cube_obj()).unwrap();
+    let lone = other.join("robot/s.urdf");
+    std::fs::write(&lone, urdf.replace("mypkg", "elsewhere")).unwrap();
+    let missing = read(&lone, &ReadOptions::default()).unwrap();
+    let report = audit(&missing, &AuditOptions::default());
+    let tried = report.links[0]
+        .findings
+        .iter()
+        .find_map(|f| match f {
+            Finding::MeshMissing { tried, .. } => Some(tried),
+            _ => None,
+        })
+        .expect("the missing mesh is a finding");
+    assert!(tried.len() >= 3, "{tried:?}");
+    assert!(tried.iter().all(|p| p.ends_with("meshes/cube.obj")));
+    let options = ReadOptions {
+        packages: vec![("elsewhere".into(), other.join("store"))],
+    };
+    let found = read(&lone, &options).unwrap();
+    let c = audit(&found, &AuditOptions::default()).links[0]
+        .computed
+        .clone()
+        .unwrap();
+    assert!((c.properties.mass - m).abs() < 1e-12);
+}
+
+#[test]
+fn mjcf_defaults_childclass_and_a_fromto_capsule_give_the_closed_forms() {
+    let xml = r#"<mujoco model="m">
+  <compiler angle="radian"/>
+  <default>
+    <geom density="500"/>
+    <default class="limb"><geom type="capsule" size="0.05"/></default>
+  </default>
+  <worldbody>
+    <body name="upper" pos="0 0 1" childclass="limb">
+      <joint type="hinge"/>
+      <geom fromto="0 0 0 0.4 0 0"/>
+      <body name="lower" pos="0.4 0 0" euler="0 0 1.5707963267948966">
+        <joint/>
+        <geom class="main" type="box" size="0.1 0.05 0.02" pos="0.1 0 0"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>"#;
+    let robot = read_str(xml, Path::new("m.xml"), &ReadOptions::default()).unwrap();
+    assert_eq!(robot.links.len(), 2);
+    assert!(robot.links.iter().all(|l| l.moving));
+    let report = audit(&robot, &AuditOptions::default());
+
+    // The capsule: radius 0.05 (class limb), half-length 0.2 along x, density 500 (main).
+    let (r, h, rho) = (0.05f64, 0.2f64, 500.0);
+    let (vc, vs) = (PI * r * r * 2.0 * h, 4.0 / 3.0 * PI * r.powi(3));
+    let axial = rho * (vc * r * r / 2.0 + vs * 0.4 * r * r);
+    let side = rho * (vc * (r * r / 4.0 + h * h / 3.0) + vs * (0.4 * r * r + h * h + 0.75 * h * r));
+    let upper = report.links[0].computed.as_ref().unwrap();
+    assert!((upper.properties.mass - rho * (vc + vs)).abs() < 1e-14);
+    assert!((upper.properties.center_of_mass.x - 0.2).abs() < 1e-15);
+    close(
+        &upper.properties.inertia_com,
+        &Matrix3::from_diagonal(&Vector3::new(axial, side, side)),
+        1e-12,
+    );
+
+    // The box in class main: 0.2 × 0.1 × 0.04 at density 500, 0.1 along the body's x.
+    let lower = report.links[1].computed.as_ref().unwrap();
+    let m = 500.0 * 0.2 * 0.1 * 0.04;
+    assert!((lower.properties.mass - m).abs() < 1e-15);
+    let expected = Matrix3::from_diagonal(&Vector3::new(
+        m * (0.01 + 0.0016) / 12.0,
+        m * (0.04 + 0.0016) / 12.0,
+        m * (0.04 + 0.01) / 12.0,
+    ));
+    close(&lower.properties.inertia_com, &expected, 1e-12);
+    // Its zero pose: at (0.4, 0, 1), turned a quarter about z (MJCF euler, radians here).
+    let pose = robot.links[1].pose;
+    assert!((pose.translation.vector - Vector3::new(0.4, 0.0, 1.0)).amax() < 1e-15);
+    assert!((pose.rotation * Vector3::x() - Vector3::y()).amax() < 1e-15);
+}
+
+/// A 0.2 × 0.4 × 0.6 box of 2 kg centred at the origin stating diag(ixx, 0.18, 0.09): about x
+/// the corners lie √(0.2² + 0.3²) from the axis, so ixx ≤ 2 · 0.13 = 0.26.
+fn box_stating(ixx: f64, com_x: f64) -> Vec<Finding> {
+    let urdf = format!(
+        r#"<robot name="b"><link name="box">
+  <inertial><origin xyz="{com_x} 0 0"/><mass value="2"/>
+    <inertia ixx="{ixx}" ixy="0" ixz="0" iyy="0.18" iyz="0" izz="0.09"/></inertial>
+  <collision><geometry><box size="0.2 0.4 0.6"/></geometry></collision>
+</link></robot>"#
+    );
+    let robot = read_str(&urdf, Path::new("b.urdf"), &ReadOptions::default()).unwrap();
+    audit(&robot, &AuditOptions::default()).links[0]
+        .findings
+        .clone()
+}
+
+#[test]
+fn the_impossibility_bound_is_m_r_squared_exactly() {
+    let bound = 2.0 * (0.2f64.powi(2) + 0.3f64.powi(2));
+    assert!(!codes(&box_stating(bound * (1.0 - 1e-6), 0.0)).contains(&"impossible_moment"));
+    let above = box_stating(bound * (1.0 + 1e-6), 0.0);
+    match above.iter().find(|f| f.code() == "impossible_moment") {
+        Some(Finding::ImpossibleMoment { region, mass, axes }) => {
+            assert_eq!(*region, Region::Only(robot::GeometryKind::Collision));
+            assert_eq!(*mass, 2.0);
+            assert_eq!(axes.len(), 1);
+            assert_eq!(axes[0].rank, 2, "the largest moment, about x");
+            assert!((axes[0].bound - bound).abs() < 1e-15);
+            assert!((axes[0].radius - 0.13f64.sqrt()).abs() < 1e-15);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_centre_of_mass_outside_the_hull_is_found_with_its_distance() {
+    // 0.4 m beyond the box's face at x = 0.1 (the axis direction of the polytope).
+    let findings = box_stating(0.2, 0.5);
+    let outside = findings.iter().find_map(|f| match f {
+        Finding::ComOutsideGeometry { distance, .. } => Some(*distance),
+        _ => None,
+    });
+    assert!((outside.expect("outside") - 0.4).abs() < 1e-12);
+    assert!(!codes(&box_stating(0.2, 0.09)).contains(&"com_outside_geometry"));
+}
+
+#[test]
+fn placeholders_are_equal_moments_round_numbers_or_one_tensor_on_different_links() {
+    let urdf = r#"<robot name="p">
+  <link name="a"><inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+    <collision><geometry><box size="0.5 0.5 2"/></geometry></collision></link>
+  <link name="b"><inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+    <collision><geometry><box size="1 0.5 0.5"/></geometry></collision></link>
+  <link name="ball"><inertial><mass value="1"/><inertia ixx="0.016" ixy="0" ixz="0" iyy="0.016" iyz="0" izz="0.016"/></inertial>
+    <collision><geometry><sphere radius="0.2"/></geometry></collision></link>
+  <joint name="j" type="revolute"><parent link="a"/><child link="b"/></joint>
+</robot>"#;
+    let robot = read_str(urdf, Path::new("p.urdf"), &ReadOptions::default()).unwrap();
+    let report = audit(&robot, &AuditOptions::default());
+    let reasons = |name: &str| {
+        let i = report
+            .links
+            .iter()
+            .position(|l| robot.links[l.link].name == name)
+            .unwrap();
+        match report.links[i]
+            .findings
+            .iter()
+            .find(|f| f.code() == "placeholder")
+        {
+            Some(Finding::Placeholder { reasons }) => reasons.len(),
+            _ => 0,
+        }
+    };
+    // Equal moments on a long box, powers of ten, and the same tensor as the other box.
+    assert_eq!(reasons("a"), 3);
+    assert_eq!(reasons("b"), 3);
+    // A ball may have equal moments: 2/5 · 1 · 0.2² = 0.016.
+    assert_eq!(reasons("ball"), 0);
+}
+
+#[test]
+fn unreadable_descriptions_name_the_place() {
+    let bad = read_str(
+        "<robot>\n  <link name=\"a\">\n</robot>",
+        Path::new("x.urdf"),
+        &ReadOptions::default(),
+    );
+    let text = bad.unwrap_err().to_string();
+    assert!(text.starts_with("x.urdf:3:"), "{text}");
+
+    let xacro =
+        "<robot xmlns:xacro=\"http://ros.org/wiki/xacro\">\n<xacro:macro name=\"m\"/>\n</robot>";
+    let text = read_str(xacro, Path::new("r.urdf.xacro"), &ReadOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        text.contains("run xacro first") && text.contains("line 2"),
+        "{text}"
+    );
+
+    let mjcf = "<mujoco>\n<worldbody>\n<body><geom class=\"nope\" size=\"1\"/></body>\n</worldbody>\n</mujoco>";
+    let text = read_str(mjcf, Path::new("m.xml"), &ReadOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        text.starts_with("m.xml:3:") && text.contains("nope"),
+        "{text}"
+    );
+
+    let number = "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"0.07,\"/>\
+        <inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link></robot>";
+    let text = read_str(number, Path::new("n.urdf"), &ReadOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        text.contains("<mass value=\"0.07,\">") && text.contains("not a number"),
+        "{text}"
+    );
+}
