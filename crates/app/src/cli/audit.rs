@@ -280,11 +280,13 @@ fn fix_comment(robot: &Robot, l: &LinkAudit, c: &robot::Computed, kind: &str) ->
     } else {
         format!("; findings: {}", codes.join(", "))
     };
-    format!(
-        "<!-- inertia-lab audit --fix: exact mass properties of the {kind} geometry ({}) at {basis}; \
-         SI units, about the centre of mass, link axes, off-diagonals -sum(m*x*y). Before, {was}{findings}. -->",
+    // XML forbids "--" inside a comment.
+    let text = format!(
+        "inertia-lab audit, fixed: exact mass properties of the {kind} geometry ({}) at {basis}; \
+         SI units, about the centre of mass, link axes, off-diagonals -sum(m*x*y). Before, {was}{findings}.",
         shapes.join(", ")
-    )
+    );
+    format!("<!-- {} -->", text.replace("--", "- -"))
 }
 
 fn basis_text(c: &robot::Computed) -> String {

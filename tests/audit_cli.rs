@@ -1,0 +1,348 @@
+//! `inertia-lab audit` end to end: the pybullet Panda's placeholder inertias proved impossible,
+//! the fix loaded by yourdfpy and compiled by MuJoCo with our values, MuJoCo's own inertia of
+//! geoms against our closed forms, and the errors a user sees.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use common::{root, run, skip};
+use serde_json::Value;
+
+/// The description's JSON report, which must exit 0.
+fn audit_json(args: &[&str]) -> Value {
+    let mut all = vec!["audit"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    let out = run(&all);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+fn link<'a>(report: &'a Value, name: &str) -> &'a Value {
+    report["links"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|l| l["name"] == name)
+        .unwrap_or_else(|| panic!("no link {name}"))
+}
+
+fn finding<'a>(l: &'a Value, code: &str) -> Option<&'a Value> {
+    l["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|f| f["code"] == code)
+}
+
+fn f64s(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Array(a) => a.iter().flat_map(f64s).collect(),
+        other => vec![other.as_f64().expect("a number")],
+    }
+}
+
+/// Largest |a − b| over the largest |b|.
+fn relative(a: &Value, b: &Value) -> f64 {
+    let (a, b) = (f64s(a), f64s(b));
+    assert_eq!(a.len(), b.len());
+    let scale = b
+        .iter()
+        .fold(0.0f64, |m, x| m.max(x.abs()))
+        .max(f64::MIN_POSITIVE);
+    a.iter()
+        .zip(&b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+        / scale
+}
+
+const PANDA: &str = "tests/data/robots/franka_panda/panda.urdf";
+
+#[test]
+fn the_pybullet_panda_placeholders_are_proved_impossible_with_the_bound() {
+    let report = audit_json(&[PANDA]);
+    assert_eq!(report["schema_version"], 1);
+    for name in ["panda_leftfinger", "panda_rightfinger", "panda_hand"] {
+        let l = link(&report, name);
+        let f = finding(l, "impossible_moment").unwrap_or_else(|| panic!("{name}: {l}"));
+        assert_eq!(f["proof"], true);
+        let mass = f["mass"].as_f64().unwrap();
+        let moments = f["moments"].as_array().unwrap();
+        assert_eq!(moments.len(), 3, "{name}: all three moments exceed m r^2");
+        for m in moments {
+            let (moment, bound, r) = (
+                m["moment"].as_f64().unwrap(),
+                m["bound"].as_f64().unwrap(),
+                m["radius"].as_f64().unwrap(),
+            );
+            assert_eq!(moment, 0.1);
+            assert!((bound - mass * r * r).abs() <= 1e-15 * bound);
+            // A finger is a few centimetres long; the hand about 20 cm across.
+            assert!(r < 0.12, "{name}: r = {r}");
+            assert!(moment > 8.0 * bound, "{name}: {moment} vs {bound}");
+        }
+        assert!(finding(l, "placeholder").is_some());
+        let message = f["message"].as_str().unwrap();
+        assert!(message.contains("proof"), "{message}");
+    }
+    // The fingers' uniform-density moments: 7e-6 … 2.6e-5 kg·m² (over 3 800× less than 0.1).
+    let finger = &link(&report, "panda_leftfinger")["computed"];
+    let moments = f64s(&finger["principal_moments"]);
+    assert!(moments[0] > 6e-6 && moments[2] < 2.7e-5, "{moments:?}");
+}
+
+/// A copy of the Panda's folder in the test's own scratch space (the fix is written beside it,
+/// where its package paths resolve).
+fn panda_copy(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    let source = root().join("tests/data/robots/franka_panda");
+    for entry in walk(&source) {
+        let to = dir.join(entry.strip_prefix(&source).unwrap());
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(&entry, &to).unwrap();
+    }
+    dir
+}
+
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            files.extend(walk(&p));
+        } else {
+            files.push(p);
+        }
+    }
+    files
+}
+
+/// Whether python3 can import `module`; reports the skip otherwise.
+fn python_has(test: &str, module: &str, version: &str) -> bool {
+    let ok = Command::new("python3")
+        .args(["-c", &format!("import {module}")])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        skip(
+            test,
+            &format!("the Python package {module} is not installed"),
+            &format!(
+                "python3 -m venv .venv && .venv/bin/pip install {module}=={version}, then put .venv/bin first on PATH"
+            ),
+        );
+    }
+    ok
+}
+
+fn bodies(loader: &str, file: &Path) -> Value {
+    let out = Command::new("python3")
+        .arg(root().join("tests/python/robot_bodies.py"))
+        .arg(loader)
+        .arg(file)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        out.status.success(),
+        "{loader} on {}:\n{}",
+        file.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+/// Text without the inertials and the fix's comments: what the fix must leave unchanged.
+fn without_inertials(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(start) = rest.find("<inertial") {
+        let mut head = &rest[..start];
+        if let Some(c) = head.rfind("<!-- inertia-lab audit, fixed:") {
+            head = head[..c].trim_end_matches([' ', '\t']);
+        }
+        out.push_str(head.trim_end());
+        let end = rest[start..]
+            .find("</inertial>")
+            .map(|e| start + e + "</inertial>".len())
+            .or_else(|| rest[start..].find("/>").map(|e| start + e + 2))
+            .unwrap();
+        out.push_str("\u{1}");
+        rest = &rest[end..];
+    }
+    out + rest
+}
+
+#[test]
+fn the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values() {
+    let test = "the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values";
+    let dir = panda_copy("panda_fix");
+    let original = dir.join("panda.urdf");
+    let fixed = dir.join("panda_fixed.urdf");
+    let report = audit_json(&[
+        original.to_str().unwrap(),
+        "--fix",
+        "-o",
+        fixed.to_str().unwrap(),
+    ]);
+    let changed: Vec<&str> = report["fixed"]["links"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap())
+        .collect();
+    assert_eq!(changed.len(), 11, "every link with geometry: {changed:?}");
+
+    let before = std::fs::read_to_string(&original).unwrap();
+    let after = std::fs::read_to_string(&fixed).unwrap();
+    assert_eq!(
+        without_inertials(&before),
+        without_inertials(&after),
+        "only inertials change"
+    );
+    assert_eq!(after.matches("inertia-lab audit, fixed").count(), 11);
+
+    let ours = |name: &str| link(&report, name)["computed"].clone();
+    if python_has(test, "yourdfpy", "0.0.60") {
+        let read = bodies("yourdfpy", &fixed);
+        for name in &changed {
+            let (b, c) = (&read["bodies"][name], ours(name));
+            assert_eq!(b["mass"], c["mass"], "{name}");
+            assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-15, "{name}");
+            assert!(relative(&b["tensor"], &c["inertia"]) < 1e-15, "{name}");
+        }
+    }
+    if python_has(test, "mujoco", "4.0.0") {
+        let read = bodies("mujoco", &fixed);
+        for name in &changed {
+            let (b, c) = (&read["bodies"][name], ours(name));
+            assert!(relative(&b["mass"], &c["mass"]) < 1e-12, "{name}");
+            assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-9, "{name}");
+            assert!(
+                relative(&b["tensor"], &c["inertia"]) < 1e-9,
+                "{name}: {} vs {}",
+                b["tensor"],
+                c["inertia"]
+            );
+        }
+    }
+}
+
+/// Bodies whose inertia MuJoCo infers from primitive geoms, one fixed from a placeholder, and
+/// one with a rotated, offset inertial.
+const MJCF: &str = r#"<mujoco model="shapes">
+  <compiler angle="degree"/>
+  <default>
+    <geom density="700"/>
+    <default class="arm"><geom type="capsule" size="0.04"/></default>
+  </default>
+  <worldbody>
+    <body name="capsule" pos="0 0 1" childclass="arm">
+      <freejoint/>
+      <geom fromto="0 0 0 0.3 0.1 0.05"/>
+    </body>
+    <body name="mixed" pos="1 0 0" euler="10 20 30">
+      <freejoint/>
+      <geom type="box" size="0.1 0.2 0.05" pos="0.05 0 0" euler="0 0 40"/>
+      <geom type="cylinder" size="0.05 0.1" pos="0 0.3 0" zaxis="1 1 0" density="2000"/>
+      <geom type="sphere" size="0.07" pos="-0.2 0 0" mass="1.5"/>
+      <geom type="ellipsoid" size="0.05 0.08 0.12" pos="0 -0.2 0.1" quat="0.9 0.1 0.3 0.2"/>
+    </body>
+    <body name="placeholder" pos="2 0 0">
+      <freejoint/>
+      <inertial pos="0 0 0" mass="2" diaginertia="1 1 1"/>
+      <geom type="box" size="0.1 0.1 0.3"/>
+    </body>
+  </worldbody>
+</mujoco>
+"#;
+
+#[test]
+fn mujoco_infers_the_same_inertia_from_geoms_and_compiles_the_fix_to_our_values() {
+    let test = "mujoco_infers_the_same_inertia_from_geoms_and_compiles_the_fix_to_our_values";
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mjcf_fix");
+    std::fs::create_dir_all(&dir).unwrap();
+    let original = dir.join("shapes.xml");
+    std::fs::write(&original, MJCF).unwrap();
+    let fixed = dir.join("shapes_fixed.xml");
+    let report = audit_json(&[
+        original.to_str().unwrap(),
+        "--fix",
+        "-o",
+        fixed.to_str().unwrap(),
+        "--fix-links",
+        "all",
+    ]);
+    let placeholder = link(&report, "placeholder");
+    assert!(
+        finding(placeholder, "impossible_moment").is_some()
+            && finding(placeholder, "placeholder").is_some()
+    );
+    if !python_has(test, "mujoco", "4.0.0") {
+        return;
+    }
+    // MuJoCo's own inertia of the primitives (the original file: no inertial on two bodies).
+    let theirs = bodies("mujoco", &original);
+    for name in ["capsule", "mixed"] {
+        let (b, c) = (&theirs["bodies"][name], &link(&report, name)["computed"]);
+        assert!(
+            relative(&b["mass"], &c["mass"]) < 1e-12,
+            "{name}: {} vs {}",
+            b["mass"],
+            c["mass"]
+        );
+        assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-12, "{name}");
+        assert!(
+            relative(&b["tensor"], &c["inertia"]) < 1e-9,
+            "{name}: {} vs {}",
+            b["tensor"],
+            c["inertia"]
+        );
+    }
+    // The fix: every body now states our numbers, and MuJoCo keeps them.
+    let compiled = bodies("mujoco", &fixed);
+    for name in ["capsule", "mixed", "placeholder"] {
+        let (b, c) = (&compiled["bodies"][name], &link(&report, name)["computed"]);
+        assert!(relative(&b["mass"], &c["mass"]) < 1e-12, "{name}");
+        assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-9, "{name}");
+        assert!(relative(&b["tensor"], &c["inertia"]) < 1e-9, "{name}");
+        assert!(
+            relative(&b["inertia"], &c["principal_moments"]) < 1e-9,
+            "{name}: body_inertia as written"
+        );
+    }
+}
+
+#[test]
+fn a_description_that_cannot_be_read_exits_3_naming_the_place() {
+    let bad = common::TempFile::new(
+        "bad.urdf",
+        b"<robot name=\"r\">\n  <link name=\"a\">\n</robot>\n",
+    );
+    let out = run(&["audit", bad.path()]);
+    assert_eq!(out.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("bad.urdf:3:"), "{stderr}");
+
+    let xacro = common::TempFile::new("arm.urdf.xacro", b"<robot xmlns:xacro=\"http://ros.org/wiki/xacro\" name=\"a\">\n<xacro:property name=\"m\" value=\"1\"/>\n</robot>\n");
+    let out = run(&["audit", xacro.path()]);
+    assert_eq!(out.status.code(), Some(3));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("run xacro first"));
+
+    let out = run(&["audit", PANDA, "--fix"]);
+    assert_eq!(out.status.code(), Some(2), "--fix needs -o");
+    let out = run(&["audit", PANDA, "--fix", "-o", PANDA]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "never over the description itself"
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is the description itself"));
+}
