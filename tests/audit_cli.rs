@@ -27,7 +27,7 @@ fn audit_json(args: &[&str]) -> Value {
 fn link<'a>(report: &'a Value, name: &str) -> &'a Value {
     report["links"]
         .as_array()
-        .unwrap()
+        .expect("present")
         .iter()
         .find(|l| l["name"] == name)
         .unwrap_or_else(|| panic!("no link {name}"))
@@ -36,7 +36,7 @@ fn link<'a>(report: &'a Value, name: &str) -> &'a Value {
 fn finding<'a>(l: &'a Value, code: &str) -> Option<&'a Value> {
     l["findings"]
         .as_array()
-        .unwrap()
+        .expect("present")
         .iter()
         .find(|f| f["code"] == code)
 }
@@ -73,14 +73,14 @@ fn the_pybullet_panda_placeholders_are_proved_impossible_with_the_bound() {
         let l = link(&report, name);
         let f = finding(l, "impossible_moment").unwrap_or_else(|| panic!("{name}: {l}"));
         assert_eq!(f["proof"], true);
-        let mass = f["mass"].as_f64().unwrap();
-        let moments = f["moments"].as_array().unwrap();
+        let mass = f["mass"].as_f64().expect("present");
+        let moments = f["moments"].as_array().expect("present");
         assert_eq!(moments.len(), 3, "{name}: all three moments exceed m r^2");
         for m in moments {
             let (moment, bound, r) = (
-                m["moment"].as_f64().unwrap(),
-                m["bound"].as_f64().unwrap(),
-                m["radius"].as_f64().unwrap(),
+                m["moment"].as_f64().expect("present"),
+                m["bound"].as_f64().expect("present"),
+                m["radius"].as_f64().expect("present"),
             );
             assert_eq!(moment, 0.1);
             assert!((bound - mass * r * r).abs() <= 1e-15 * bound);
@@ -89,7 +89,7 @@ fn the_pybullet_panda_placeholders_are_proved_impossible_with_the_bound() {
             assert!(moment > 8.0 * bound, "{name}: {moment} vs {bound}");
         }
         assert!(finding(l, "placeholder").is_some());
-        let message = f["message"].as_str().unwrap();
+        let message = f["message"].as_str().expect("present");
         assert!(message.contains("proof"), "{message}");
     }
     // The fingers' uniform-density moments: 7e-6 … 2.6e-5 kg·m² (over 3 800× less than 0.1).
@@ -105,17 +105,17 @@ fn panda_copy(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&dir);
     let source = root().join("tests/data/robots/franka_panda");
     for entry in walk(&source) {
-        let to = dir.join(entry.strip_prefix(&source).unwrap());
-        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
-        std::fs::copy(&entry, &to).unwrap();
+        let to = dir.join(entry.strip_prefix(&source).expect("present"));
+        std::fs::create_dir_all(to.parent().expect("present")).expect("present");
+        std::fs::copy(&entry, &to).expect("present");
     }
     dir
 }
 
 fn walk(dir: &Path) -> Vec<PathBuf> {
     let mut files = Vec::new();
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
+    for e in std::fs::read_dir(dir).expect("present") {
+        let p = e.expect("present").path();
         if p.is_dir() {
             files.extend(walk(&p));
         } else {
@@ -173,8 +173,8 @@ fn without_inertials(text: &str) -> String {
             .find("</inertial>")
             .map(|e| start + e + "</inertial>".len())
             .or_else(|| rest[start..].find("/>").map(|e| start + e + 2))
-            .unwrap();
-        out.push_str("\u{1}");
+            .expect("present");
+        out.push('\u{1}');
         rest = &rest[end..];
     }
     out + rest
@@ -187,21 +187,21 @@ fn the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values() {
     let original = dir.join("panda.urdf");
     let fixed = dir.join("panda_fixed.urdf");
     let report = audit_json(&[
-        original.to_str().unwrap(),
+        original.to_str().expect("present"),
         "--fix",
         "-o",
-        fixed.to_str().unwrap(),
+        fixed.to_str().expect("present"),
     ]);
     let changed: Vec<&str> = report["fixed"]["links"]
         .as_array()
-        .unwrap()
+        .expect("present")
         .iter()
-        .map(|v| v.as_str().unwrap())
+        .map(|v| v.as_str().expect("present"))
         .collect();
     assert_eq!(changed.len(), 11, "every link with geometry: {changed:?}");
 
-    let before = std::fs::read_to_string(&original).unwrap();
-    let after = std::fs::read_to_string(&fixed).unwrap();
+    let before = std::fs::read_to_string(&original).expect("present");
+    let after = std::fs::read_to_string(&fixed).expect("present");
     assert_eq!(
         without_inertials(&before),
         without_inertials(&after),
@@ -268,15 +268,15 @@ const MJCF: &str = r#"<mujoco model="shapes">
 fn mujoco_infers_the_same_inertia_from_geoms_and_compiles_the_fix_to_our_values() {
     let test = "mujoco_infers_the_same_inertia_from_geoms_and_compiles_the_fix_to_our_values";
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mjcf_fix");
-    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::create_dir_all(&dir).expect("present");
     let original = dir.join("shapes.xml");
-    std::fs::write(&original, MJCF).unwrap();
+    std::fs::write(&original, MJCF).expect("present");
     let fixed = dir.join("shapes_fixed.xml");
     let report = audit_json(&[
-        original.to_str().unwrap(),
+        original.to_str().expect("present"),
         "--fix",
         "-o",
-        fixed.to_str().unwrap(),
+        fixed.to_str().expect("present"),
         "--fix-links",
         "all",
     ]);

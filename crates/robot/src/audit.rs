@@ -470,29 +470,29 @@ fn audit_link(
     let mut comparison = None;
     if let Some(s) = &stated {
         stated_laws(s, link.moving, &mut findings);
-        if s.mass > 0.0 {
-            if let Some((region, extents)) = &region {
-                bounds(s, *region, extents, &mut findings);
-            }
+        if s.mass > 0.0
+            && let Some((region, extents)) = &region
+        {
+            bounds(s, *region, extents, &mut findings);
         }
         if let (Ok(c), Some(size)) = (&computed, size) {
             if s.mass > 0.0 {
                 let cmp = compare(s, &c.properties, size);
-                if let Some(t) = options.max_moment_error {
-                    if cmp.tensor_error > t {
-                        findings.push(Finding::MomentsFar {
-                            error: cmp.tensor_error,
-                            threshold: t,
-                        });
-                    }
+                if let Some(t) = options.max_moment_error
+                    && cmp.tensor_error > t
+                {
+                    findings.push(Finding::MomentsFar {
+                        error: cmp.tensor_error,
+                        threshold: t,
+                    });
                 }
-                if let Some(t) = options.max_com_offset {
-                    if cmp.com_offset_fraction > t {
-                        findings.push(Finding::ComFar {
-                            fraction: cmp.com_offset_fraction,
-                            threshold: t,
-                        });
-                    }
+                if let Some(t) = options.max_com_offset
+                    && cmp.com_offset_fraction > t
+                {
+                    findings.push(Finding::ComFar {
+                        fraction: cmp.com_offset_fraction,
+                        threshold: t,
+                    });
                 }
                 comparison = Some(cmp);
             }

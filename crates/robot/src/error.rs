@@ -36,7 +36,7 @@ pub enum RobotError {
     #[error("{at}: not well-formed XML: {message}")]
     Xml {
         /// Where the parser stopped.
-        at: Location,
+        at: Box<Location>,
         /// The parser's words.
         message: String,
     },
@@ -69,7 +69,7 @@ pub enum RobotError {
     #[error("{at}: <{element} {attribute}=\"{value}\">: {problem}")]
     Attribute {
         /// The element's place.
-        at: Location,
+        at: Box<Location>,
         /// The element's name.
         element: String,
         /// The attribute's name.
@@ -83,7 +83,7 @@ pub enum RobotError {
     #[error("{at}: <{element}>: {problem}")]
     Element {
         /// The element's place.
-        at: Location,
+        at: Box<Location>,
         /// The element's name.
         element: String,
         /// What is wrong.

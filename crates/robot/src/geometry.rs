@@ -42,10 +42,10 @@ pub fn load_meshes(robot: &Robot, kinds: &[GeometryKind], repairs: &Repairs) -> 
     for link in &robot.links {
         for kind in kinds {
             for g in link.geometry(*kind) {
-                if let Shape::Mesh { file, scale } = &g.shape {
-                    if !wanted.iter().any(|(f, s)| f == file && s == scale) {
-                        wanted.push((file.clone(), *scale));
-                    }
+                if let Shape::Mesh { file, scale } = &g.shape
+                    && !wanted.iter().any(|(f, s)| f == file && s == scale)
+                {
+                    wanted.push((file.clone(), *scale));
                 }
             }
         }

@@ -227,15 +227,15 @@ impl Reader {
                 "MuJoCo scales every mass so that they add up to this",
             ),
         ] {
-            if let Some(v) = e.get(name) {
-                if name != "balanceinertia" || v == "true" {
-                    self.unsupported(
-                        e,
-                        format!(
-                            "{name}=\"{v}\": {what}; the audit reads the file's numbers as written"
-                        ),
-                    );
-                }
+            if let Some(v) = e.get(name)
+                && (name != "balanceinertia" || v == "true")
+            {
+                self.unsupported(
+                    e,
+                    format!(
+                        "{name}=\"{v}\": {what}; the audit reads the file's numbers as written"
+                    ),
+                );
             }
         }
         Ok(())
@@ -317,10 +317,10 @@ impl Reader {
         let scale = m
             .numbers::<3>("scale")?
             .map_or(Vector3::repeat(1.0), Vector3::from);
-        if let Some(inertia) = m.get("inertia") {
-            if inertia == "shell" {
-                self.unsupported(&m, "inertia=\"shell\": MuJoCo takes this mesh as a thin shell; the audit integrates it as a solid");
-            }
+        if let Some(inertia) = m.get("inertia")
+            && inertia == "shell"
+        {
+            self.unsupported(&m, "inertia=\"shell\": MuJoCo takes this mesh as a thin shell; the audit integrates it as a solid");
         }
         let base = self
             .compiler
@@ -475,25 +475,25 @@ impl Reader {
         let fromto = e.numbers::<6>("fromto")?;
         let mut pose = frame * self.pose(&e)?;
         let mut half_length = size_at(1);
-        if let Some(ft) = fromto {
-            if matches!(kind.as_str(), "capsule" | "cylinder" | "box" | "ellipsoid") {
-                let a = Vector3::new(ft[0], ft[1], ft[2]);
-                let b = Vector3::new(ft[3], ft[4], ft[5]);
-                let axis = b - a;
-                if axis.norm() == 0.0 {
-                    return Err(e.bad(
-                        "fromto",
-                        e.get("fromto").unwrap_or_default(),
-                        "the two ends are the same point",
-                    ));
-                }
-                let rotation = UnitQuaternion::rotation_between(&Vector3::z(), &axis)
-                    .unwrap_or_else(|| {
-                        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
-                    });
-                pose = frame * Isometry3::from_parts(Translation3::from((a + b) / 2.0), rotation);
-                half_length = axis.norm() / 2.0;
+        if let Some(ft) = fromto
+            && matches!(kind.as_str(), "capsule" | "cylinder" | "box" | "ellipsoid")
+        {
+            let a = Vector3::new(ft[0], ft[1], ft[2]);
+            let b = Vector3::new(ft[3], ft[4], ft[5]);
+            let axis = b - a;
+            if axis.norm() == 0.0 {
+                return Err(e.bad(
+                    "fromto",
+                    e.get("fromto").unwrap_or_default(),
+                    "the two ends are the same point",
+                ));
             }
+            let rotation =
+                UnitQuaternion::rotation_between(&Vector3::z(), &axis).unwrap_or_else(|| {
+                    UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
+                });
+            pose = frame * Isometry3::from_parts(Translation3::from((a + b) / 2.0), rotation);
+            half_length = axis.norm() / 2.0;
         }
         let need = |n: usize, what: &str| -> Result<(), RobotError> {
             if (0..n).all(|k| size_at(k) > 0.0) {
@@ -578,12 +578,12 @@ impl Reader {
                 what: format!("a {other} geom"),
             },
         };
-        if kind != "mesh" {
-            if let Some(mesh) = e.get("mesh") {
-                shape = Shape::Unsupported {
-                    what: format!("a {kind} fitted to mesh {mesh}"),
-                };
-            }
+        if kind != "mesh"
+            && let Some(mesh) = e.get("mesh")
+        {
+            shape = Shape::Unsupported {
+                what: format!("a {kind} fitted to mesh {mesh}"),
+            };
         }
         if e.get("shellinertia") == Some("true") {
             self.unsupported(raw, "shellinertia=\"true\": MuJoCo takes this geom as a thin shell; the audit integrates it as a solid");

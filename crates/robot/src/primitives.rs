@@ -131,9 +131,9 @@ mod tests {
     #[test]
     fn closed_forms_match_integrated_meshes() {
         let h = Vector3::new(0.3, 0.5, 0.7);
-        let exact = unit_properties(&Shape::Box { half_extents: h }).unwrap();
+        let exact = unit_properties(&Shape::Box { half_extents: h }).expect("present");
         let mesh = massprops::shapes::cuboid(h * 2.0, Point3::origin()).build();
-        let integrated = massprops::mass_properties(&mesh, 1.0).unwrap();
+        let integrated = massprops::mass_properties(&mesh, 1.0).expect("present");
         assert!((exact.mass - integrated.mass).abs() < 1e-14);
         assert!((exact.inertia_com - integrated.inertia_com).amax() < 1e-14);
 
@@ -144,9 +144,9 @@ mod tests {
             radius: r,
             half_length: h,
         })
-        .unwrap();
+        .expect("present");
         let prism = massprops::shapes::cylinder(r, -h, h, 4000).build();
-        let fine = massprops::mass_properties(&prism, 1.0).unwrap();
+        let fine = massprops::mass_properties(&prism, 1.0).expect("present");
         assert!((exact.mass / fine.mass - 1.0).abs() < 1e-6);
         for k in 0..3 {
             let ratio = exact.inertia_com[(k, k)] / fine.inertia_com[(k, k)];
@@ -159,12 +159,12 @@ mod tests {
     #[test]
     fn capsule_is_a_cylinder_and_two_hemispheres() {
         let r = 0.2;
-        let sphere = unit_properties(&Shape::Sphere { radius: r }).unwrap();
+        let sphere = unit_properties(&Shape::Sphere { radius: r }).expect("present");
         let tiny = unit_properties(&Shape::Capsule {
             radius: r,
             half_length: 0.0,
         })
-        .unwrap();
+        .expect("present");
         assert!((tiny.inertia_com - sphere.inertia_com).amax() < 1e-15);
 
         // Hemisphere about its flat face's centre: 2/5 (m/2) r² about a diameter; its centre of
@@ -189,7 +189,7 @@ mod tests {
             radius: r,
             half_length: h,
         })
-        .unwrap();
+        .expect("present");
         assert!(
             (capsule.mass / m - 1.0).abs() < 1e-9,
             "{} {}",
@@ -206,7 +206,7 @@ mod tests {
         };
         assert_eq!(support(&b, &Vector3::new(1.0, -1.0, 0.0)), Some(3.0));
         // From the z axis through the centre the farthest corner is √(1 + 4) away.
-        let d = farthest_from_line(&b, &Point3::origin(), &Vector3::z()).unwrap();
+        let d = farthest_from_line(&b, &Point3::origin(), &Vector3::z()).expect("present");
         assert!((d - 5f64.sqrt()).abs() < 1e-15);
     }
 }

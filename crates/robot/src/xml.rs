@@ -51,11 +51,11 @@ pub fn parse(text: &str, path: &Path, file: usize) -> Result<Element, RobotError
     let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
         let pos = e.pos();
         RobotError::Xml {
-            at: Location {
+            at: Box::new(Location {
                 file: path.to_owned(),
                 line: pos.row,
                 column: pos.col,
-            },
+            }),
             message: e.to_string(),
         }
     })?;
@@ -113,7 +113,7 @@ impl Element {
     /// An error about attribute `name` of this element.
     pub fn bad(&self, name: &str, value: &str, problem: impl Into<String>) -> RobotError {
         RobotError::Attribute {
-            at: self.at.clone(),
+            at: Box::new(self.at.clone()),
             element: self.name.clone(),
             attribute: name.to_owned(),
             value: value.to_owned(),
@@ -124,7 +124,7 @@ impl Element {
     /// An error about this element as a whole.
     pub fn wrong(&self, problem: impl Into<String>) -> RobotError {
         RobotError::Element {
-            at: self.at.clone(),
+            at: Box::new(self.at.clone()),
             element: self.name.clone(),
             problem: problem.into(),
         }

@@ -26,7 +26,7 @@ fn codes(f: &[Finding]) -> Vec<&'static str> {
 fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
     let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::create_dir_all(&dir).expect("present");
     dir
 }
 
@@ -45,9 +45,9 @@ fn a_box_and_a_cylinder_under_rotated_origins_sum_to_their_hand_derived_tensor()
 </robot>"#,
         half_pi = PI / 2.0
     );
-    let robot = read_str(&urdf, Path::new("t.urdf"), &ReadOptions::default()).unwrap();
+    let robot = read_str(&urdf, Path::new("t.urdf"), &ReadOptions::default()).expect("present");
     let report = audit(&robot, &AuditOptions::default());
-    let c = report.links[0].computed.as_ref().unwrap();
+    let c = report.links[0].computed.as_ref().expect("present");
 
     // By hand: the stated 3 kg spread over both volumes.
     let (vb, vc) = (0.2 * 0.4 * 0.6, PI * 0.05 * 0.05 * 0.3);
@@ -90,20 +90,20 @@ fn cube_obj() -> String {
 #[test]
 fn a_scaled_mesh_is_found_through_its_package_and_weighed_exactly() {
     let root = scratch("package_search");
-    std::fs::create_dir_all(root.join("mypkg/urdf")).unwrap();
-    std::fs::create_dir_all(root.join("mypkg/meshes")).unwrap();
-    std::fs::write(root.join("mypkg/meshes/cube.obj"), cube_obj()).unwrap();
+    std::fs::create_dir_all(root.join("mypkg/urdf")).expect("present");
+    std::fs::create_dir_all(root.join("mypkg/meshes")).expect("present");
+    std::fs::write(root.join("mypkg/meshes/cube.obj"), cube_obj()).expect("present");
     let urdf = r#"<robot name="s"><link name="block">
   <collision><origin xyz="0 0 0.5" rpy="0 0 0"/><geometry>
     <mesh filename="package://mypkg/meshes/cube.obj" scale="0.1 0.2 0.3"/></geometry></collision>
 </link></robot>"#;
     let path = root.join("mypkg/urdf/s.urdf");
-    std::fs::write(&path, urdf).unwrap();
-    let robot = read(&path, &ReadOptions::default()).unwrap();
+    std::fs::write(&path, urdf).expect("present");
+    let robot = read(&path, &ReadOptions::default()).expect("present");
     let report = audit(&robot, &AuditOptions::default());
     let l = &report.links[0];
     // No mass stated: the assumed 1000 kg/m³ over 0.1 × 0.2 × 0.3 m.
-    let c = l.computed.as_ref().unwrap();
+    let c = l.computed.as_ref().expect("present");
     let m = 1000.0 * 0.006;
     assert!((c.properties.mass - m).abs() < 1e-12);
     assert!((c.properties.center_of_mass.z - 0.5).abs() < 1e-15);
@@ -117,12 +117,12 @@ fn a_scaled_mesh_is_found_through_its_package_and_weighed_exactly() {
 
     // Elsewhere, found through --package; not found, every path tried is named.
     let other = scratch("package_option");
-    std::fs::create_dir_all(other.join("store/meshes")).unwrap();
-    std::fs::create_dir_all(other.join("robot")).unwrap();
-    std::fs::write(other.join("store/meshes/cube.obj"), cube_obj()).unwrap();
+    std::fs::create_dir_all(other.join("store/meshes")).expect("present");
+    std::fs::create_dir_all(other.join("robot")).expect("present");
+    std::fs::write(other.join("store/meshes/cube.obj"), cube_obj()).expect("present");
     let lone = other.join("robot/s.urdf");
-    std::fs::write(&lone, urdf.replace("mypkg", "elsewhere")).unwrap();
-    let missing = read(&lone, &ReadOptions::default()).unwrap();
+    std::fs::write(&lone, urdf.replace("mypkg", "elsewhere")).expect("present");
+    let missing = read(&lone, &ReadOptions::default()).expect("present");
     let report = audit(&missing, &AuditOptions::default());
     let tried = report.links[0]
         .findings
@@ -137,11 +137,11 @@ fn a_scaled_mesh_is_found_through_its_package_and_weighed_exactly() {
     let options = ReadOptions {
         packages: vec![("elsewhere".into(), other.join("store"))],
     };
-    let found = read(&lone, &options).unwrap();
+    let found = read(&lone, &options).expect("present");
     let c = audit(&found, &AuditOptions::default()).links[0]
         .computed
         .clone()
-        .unwrap();
+        .expect("present");
     assert!((c.properties.mass - m).abs() < 1e-12);
 }
 
@@ -164,7 +164,7 @@ fn mjcf_defaults_childclass_and_a_fromto_capsule_give_the_closed_forms() {
     </body>
   </worldbody>
 </mujoco>"#;
-    let robot = read_str(xml, Path::new("m.xml"), &ReadOptions::default()).unwrap();
+    let robot = read_str(xml, Path::new("m.xml"), &ReadOptions::default()).expect("present");
     assert_eq!(robot.links.len(), 2);
     assert!(robot.links.iter().all(|l| l.moving));
     let report = audit(&robot, &AuditOptions::default());
@@ -174,7 +174,7 @@ fn mjcf_defaults_childclass_and_a_fromto_capsule_give_the_closed_forms() {
     let (vc, vs) = (PI * r * r * 2.0 * h, 4.0 / 3.0 * PI * r.powi(3));
     let axial = rho * (vc * r * r / 2.0 + vs * 0.4 * r * r);
     let side = rho * (vc * (r * r / 4.0 + h * h / 3.0) + vs * (0.4 * r * r + h * h + 0.75 * h * r));
-    let upper = report.links[0].computed.as_ref().unwrap();
+    let upper = report.links[0].computed.as_ref().expect("present");
     assert!((upper.properties.mass - rho * (vc + vs)).abs() < 1e-14);
     assert!((upper.properties.center_of_mass.x - 0.2).abs() < 1e-15);
     close(
@@ -184,7 +184,7 @@ fn mjcf_defaults_childclass_and_a_fromto_capsule_give_the_closed_forms() {
     );
 
     // The box in class main: 0.2 × 0.1 × 0.04 at density 500, 0.1 along the body's x.
-    let lower = report.links[1].computed.as_ref().unwrap();
+    let lower = report.links[1].computed.as_ref().expect("present");
     let m = 500.0 * 0.2 * 0.1 * 0.04;
     assert!((lower.properties.mass - m).abs() < 1e-15);
     let expected = Matrix3::from_diagonal(&Vector3::new(
@@ -209,7 +209,7 @@ fn box_stating(ixx: f64, com_x: f64) -> Vec<Finding> {
   <collision><geometry><box size="0.2 0.4 0.6"/></geometry></collision>
 </link></robot>"#
     );
-    let robot = read_str(&urdf, Path::new("b.urdf"), &ReadOptions::default()).unwrap();
+    let robot = read_str(&urdf, Path::new("b.urdf"), &ReadOptions::default()).expect("present");
     audit(&robot, &AuditOptions::default()).links[0]
         .findings
         .clone()
@@ -256,14 +256,14 @@ fn placeholders_are_equal_moments_round_numbers_or_one_tensor_on_different_links
     <collision><geometry><sphere radius="0.2"/></geometry></collision></link>
   <joint name="j" type="revolute"><parent link="a"/><child link="b"/></joint>
 </robot>"#;
-    let robot = read_str(urdf, Path::new("p.urdf"), &ReadOptions::default()).unwrap();
+    let robot = read_str(urdf, Path::new("p.urdf"), &ReadOptions::default()).expect("present");
     let report = audit(&robot, &AuditOptions::default());
     let reasons = |name: &str| {
         let i = report
             .links
             .iter()
             .position(|l| robot.links[l.link].name == name)
-            .unwrap();
+            .expect("present");
         match report.links[i]
             .findings
             .iter()
@@ -287,13 +287,13 @@ fn unreadable_descriptions_name_the_place() {
         Path::new("x.urdf"),
         &ReadOptions::default(),
     );
-    let text = bad.unwrap_err().to_string();
+    let text = bad.expect_err("refused").to_string();
     assert!(text.starts_with("x.urdf:3:"), "{text}");
 
     let xacro =
         "<robot xmlns:xacro=\"http://ros.org/wiki/xacro\">\n<xacro:macro name=\"m\"/>\n</robot>";
     let text = read_str(xacro, Path::new("r.urdf.xacro"), &ReadOptions::default())
-        .unwrap_err()
+        .expect_err("refused")
         .to_string();
     assert!(
         text.contains("run xacro first") && text.contains("line 2"),
@@ -302,7 +302,7 @@ fn unreadable_descriptions_name_the_place() {
 
     let mjcf = "<mujoco>\n<worldbody>\n<body><geom class=\"nope\" size=\"1\"/></body>\n</worldbody>\n</mujoco>";
     let text = read_str(mjcf, Path::new("m.xml"), &ReadOptions::default())
-        .unwrap_err()
+        .expect_err("refused")
         .to_string();
     assert!(
         text.starts_with("m.xml:3:") && text.contains("nope"),
@@ -312,7 +312,7 @@ fn unreadable_descriptions_name_the_place() {
     let number = "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"0.07,\"/>\
         <inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link></robot>";
     let text = read_str(number, Path::new("n.urdf"), &ReadOptions::default())
-        .unwrap_err()
+        .expect_err("refused")
         .to_string();
     assert!(
         text.contains("<mass value=\"0.07,\">") && text.contains("not a number"),

@@ -110,15 +110,14 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
             })
             .collect::<Result<_, _>>()?,
     };
-    if args.fix {
-        if let Some(out) = &args.output {
-            if same_file(out, &args.file) {
-                return Err(CliError::Usage(format!(
-                    "-o {} is the description itself; write the fix to another file",
-                    out.display()
-                )));
-            }
-        }
+    if args.fix
+        && let Some(out) = &args.output
+        && same_file(out, &args.file)
+    {
+        return Err(CliError::Usage(format!(
+            "-o {} is the description itself; write the fix to another file",
+            out.display()
+        )));
     }
     let started = Instant::now();
     let robot =
