@@ -82,9 +82,20 @@ pub fn finding_text(f: &Finding, geometry: &str) -> String {
             let why: Vec<String> = reasons
                 .iter()
                 .map(|r| match r {
-                    PlaceholderReason::EqualMoments { moment } => format!(
+                    PlaceholderReason::EqualMoments {
+                        moment,
+                        weighed: true,
+                    } => format!(
                         "all three moments are {} kg*m^2 with no products (only a round body \
                          has that, and this link's geometry is not round)",
+                        num(*moment)
+                    ),
+                    PlaceholderReason::EqualMoments {
+                        moment,
+                        weighed: false,
+                    } => format!(
+                        "all three moments are {} kg*m^2 with no products (only a round body \
+                         has that)",
                         num(*moment)
                     ),
                     PlaceholderReason::RoundNumbers { written } => format!(

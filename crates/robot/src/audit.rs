@@ -25,7 +25,7 @@ use massprops::principal::Degeneracy;
 use massprops::{MassProperties, MeshError, Repairs, Warning};
 
 use crate::geometry::{self, Extent, Meshes, Problem, Ready};
-use crate::model::{Format, GeometryKind, GeometryMass, Link, Robot};
+use crate::model::{Format, GeometryKind, GeometryMass, Link, Robot, Shape};
 
 /// Relative slack for round-off in the laws and the bounds.
 const SLACK: f64 = 1e-9;
@@ -125,10 +125,13 @@ pub struct Comparison {
 /// Why a stated tensor looks like a placeholder.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PlaceholderReason {
-    /// All three moments equal (and no products), on a link whose geometry is not round.
+    /// All three moments equal (and no products), on a link whose geometry is not round, or
+    /// that has none to compare with.
     EqualMoments {
         /// The moment.
         moment: f64,
+        /// Whether the link's geometry was weighed (and found not round).
+        weighed: bool,
     },
     /// Every non-zero entry is a power of ten as written (1, 0.1, 1e-3…).
     RoundNumbers {
@@ -370,12 +373,7 @@ impl Audit {
 
 /// Audits every link of `robot`.
 pub fn audit(robot: &Robot, options: &AuditOptions) -> Audit {
-    // Both kinds: the proofs take the mass to lie in all of a link's geometry.
-    let meshes = geometry::load_meshes(
-        robot,
-        &[GeometryKind::Collision, GeometryKind::Visual],
-        &options.repairs,
-    );
+    let meshes = geometry::load_meshes(&mesh_uses(robot, options.geometry), &options.repairs);
     let mut links: Vec<LinkAudit> = robot
         .links
         .par_iter()
@@ -389,6 +387,39 @@ pub fn audit(robot: &Robot, options: &AuditOptions) -> Audit {
     Audit {
         links,
         options: options.clone(),
+    }
+}
+
+/// The meshes an audit reads: the kind audited, weighed; the other kind's points, for the
+/// proofs (which take the mass to lie in all of a link's geometry), except for an MJCF body
+/// that states no inertia, whose every geom is weighed as MuJoCo weighs it.
+pub fn mesh_uses(robot: &Robot, kind: GeometryKind) -> Vec<geometry::MeshUse> {
+    let other = other_kind(kind);
+    let mut uses = Vec::new();
+    for link in &robot.links {
+        let all_geoms = robot.format == Format::Mjcf && link.stated.is_none();
+        for (k, weigh) in [(kind, true), (other, all_geoms)] {
+            if k == other && !all_geoms && link.geometry(kind).is_empty() {
+                continue;
+            }
+            for g in link.geometry(k) {
+                if let Shape::Mesh { file, scale } = &g.shape {
+                    uses.push(geometry::MeshUse {
+                        file: file.clone(),
+                        scale: *scale,
+                        weigh,
+                    });
+                }
+            }
+        }
+    }
+    uses
+}
+
+fn other_kind(kind: GeometryKind) -> GeometryKind {
+    match kind {
+        GeometryKind::Collision => GeometryKind::Visual,
+        GeometryKind::Visual => GeometryKind::Collision,
     }
 }
 
@@ -439,12 +470,8 @@ fn audit_link(
     let extents: Option<Vec<&Extent<'_>>> = ready.iter().map(|r| r.extent.as_ref()).collect();
     let extents = extents.filter(|e| !e.is_empty());
     let size = extents.as_deref().map(box_diagonal);
-    let other_kind = match options.geometry {
-        GeometryKind::Collision => GeometryKind::Visual,
-        GeometryKind::Visual => GeometryKind::Collision,
-    };
     let other: Vec<Ready<'_>> = link
-        .geometry(other_kind)
+        .geometry(other_kind(options.geometry))
         .iter()
         .map(|g| geometry::ready(g, meshes))
         .collect();
@@ -456,7 +483,15 @@ fn audit_link(
         (Some(e), _) => Some((Region::Only(options.geometry), e.clone())),
         (None, _) => None,
     };
-    let computed = computed(link, &ready, robot.format, options);
+    // MuJoCo weighs every geom of a body that states no inertia, visual ones too.
+    let all_geoms: Vec<Ready<'_>>;
+    let weighed = if robot.format == Format::Mjcf && link.stated.is_none() {
+        all_geoms = ready.iter().chain(&other).cloned().collect();
+        &all_geoms
+    } else {
+        &ready
+    };
+    let computed = computed(link, weighed, robot.format, options);
     let stated = link
         .stated
         .as_ref()
@@ -521,7 +556,10 @@ fn audit_link(
             cm.z <= ISOTROPIC_RATIO * cm.x
         });
         if m.z > 0.0 && m.z - m.x <= SLACK * m.z && products <= SLACK * m.z && !round_shape {
-            reasons.push(PlaceholderReason::EqualMoments { moment: m.z });
+            reasons.push(PlaceholderReason::EqualMoments {
+                moment: m.z,
+                weighed: computed.is_ok(),
+            });
         }
         if round_numbers(written) {
             reasons.push(PlaceholderReason::RoundNumbers {
@@ -553,7 +591,8 @@ fn stated_laws(s: &MassProperties, moving: bool, findings: &mut Vec<Finding>) {
     if massless {
         return;
     }
-    if m.x <= 0.0 {
+    // A point mass (no moments) is a body; a moving one is refused by simulators.
+    if m.x < 0.0 || (m.x <= 0.0 && moving) {
         findings.push(Finding::NotPositiveDefinite { moments });
     } else if m.x + m.y < m.z * (1.0 - SLACK) {
         findings.push(Finding::TriangleInequality { moments });

@@ -42,16 +42,18 @@ pub enum RobotError {
     },
     /// A xacro file: macros that only `xacro` expands.
     #[error(
-        "{}: this is a xacro file (it uses xacro: elements, line {line}): run xacro first, \
-         `xacro {} > robot.urdf`, and audit the URDF it writes",
+        "{}:{line}: {what} is xacro's: run xacro first, `xacro {} > robot.urdf`, and audit \
+         the URDF it writes",
         file.display(),
         file.display()
     )]
     Xacro {
         /// The file.
         file: PathBuf,
-        /// The first line with a xacro element or `$(…)` substitution.
+        /// The line of the first xacro element or `${…}`/`$(…)` substitution.
         line: u32,
+        /// What it is.
+        what: String,
     },
     /// Neither `<robot>` (URDF) nor `<mujoco>` (MJCF) at the root.
     #[error(

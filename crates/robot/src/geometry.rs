@@ -12,7 +12,7 @@ use rayon::prelude::*;
 
 use massprops::{Fill, IntegratedPart, MassProperties, MeshError, Repairs, Warning};
 
-use crate::model::{Geometry, GeometryKind, Robot, Shape};
+use crate::model::{Geometry, Shape};
 use crate::primitives;
 
 /// A mesh file as read, scaled, and integrated.
@@ -20,8 +20,8 @@ use crate::primitives;
 pub struct LoadedMesh {
     /// Its points (those the faces use), scaled, in the mesh's frame.
     pub points: Vec<Point3<f64>>,
-    /// Its solid at density 1, or why it has none.
-    pub unit: Result<MassProperties, MeshError>,
+    /// Its solid at density 1, or why it has none; `None` when only its points were wanted.
+    pub unit: Option<Result<MassProperties, MeshError>>,
     /// What the mesh has wrong (the reader's and the defect pass's warnings).
     pub warnings: Vec<Warning>,
 }
@@ -36,38 +36,52 @@ fn key(file: &std::path::Path, scale: &Vector3<f64>) -> (PathBuf, [u64; 3]) {
     )
 }
 
-/// Reads and integrates every mesh of `kind` in `robot`, in parallel, each once.
-pub fn load_meshes(robot: &Robot, kinds: &[GeometryKind], repairs: &Repairs) -> Meshes {
-    let mut wanted: Vec<(PathBuf, Vector3<f64>)> = Vec::new();
-    for link in &robot.links {
-        for kind in kinds {
-            for g in link.geometry(*kind) {
-                if let Shape::Mesh { file, scale } = &g.shape
-                    && !wanted.iter().any(|(f, s)| f == file && s == scale)
-                {
-                    wanted.push((file.clone(), *scale));
-                }
-            }
+/// What [`load_meshes`] reads of one mesh: its points always, its integrals when `weigh`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshUse {
+    /// The file.
+    pub file: PathBuf,
+    /// Its per-axis scale.
+    pub scale: Vector3<f64>,
+    /// Whether it is weighed (integrated, its defects found), or only its points are needed.
+    pub weigh: bool,
+}
+
+/// Reads every mesh of `uses` once, in parallel; integrates those that are weighed.
+pub fn load_meshes(uses: &[MeshUse], repairs: &Repairs) -> Meshes {
+    let mut wanted: Vec<MeshUse> = Vec::new();
+    for u in uses {
+        match wanted
+            .iter_mut()
+            .find(|w| w.file == u.file && w.scale == u.scale)
+        {
+            Some(w) => w.weigh |= u.weigh,
+            None => wanted.push(u.clone()),
         }
     }
     wanted
         .par_iter()
-        .map(|(file, scale)| (key(file, scale), Arc::new(load(file, scale, repairs))))
+        .map(|u| (key(&u.file, &u.scale), Arc::new(load(u, repairs))))
         .collect()
 }
 
-fn load(
-    file: &std::path::Path,
-    scale: &Vector3<f64>,
-    repairs: &Repairs,
-) -> Result<LoadedMesh, MeshError> {
-    let read = massprops::load_mesh(file)?;
-    let mesh = if *scale == Vector3::repeat(1.0) {
+fn load(u: &MeshUse, repairs: &Repairs) -> Result<LoadedMesh, MeshError> {
+    let read = massprops::load_mesh(&u.file)?;
+    let scale = u.scale;
+    let mesh = if scale == Vector3::repeat(1.0) {
         read.mesh
     } else {
         read.mesh
-            .map_positions(|p| Point3::from(p.coords.component_mul(scale)))?
+            .map_positions(|p| Point3::from(p.coords.component_mul(&scale)))?
     };
+    let points = mesh.used_positions().collect();
+    if !u.weigh {
+        return Ok(LoadedMesh {
+            points,
+            unit: None,
+            warnings: Vec::new(),
+        });
+    }
     let integrated = IntegratedPart::new(&mesh, repairs);
     let unit = integrated
         .properties("mesh", Fill::Solid { density: 1.0 }, &Isometry3::identity())
@@ -80,8 +94,8 @@ fn load(
             .cloned(),
     );
     Ok(LoadedMesh {
-        points: mesh.used_positions().collect(),
-        unit,
+        points,
+        unit: Some(unit),
         warnings,
     })
 }
@@ -196,14 +210,16 @@ pub fn ready<'a>(geometry: &'a Geometry, meshes: &'a Meshes) -> Ready<'a> {
         Shape::Mesh { file, scale } => match meshes.get(&key(file, scale)).map(|m| m.as_ref()) {
             Some(Ok(mesh)) => Ready {
                 geometry,
-                unit: mesh
-                    .unit
-                    .as_ref()
-                    .map(|u| u.transformed(&pose))
-                    .map_err(|e| Problem::Mesh {
+                unit: match &mesh.unit {
+                    Some(Ok(u)) => Ok(u.transformed(&pose)),
+                    Some(Err(e)) => Err(Problem::Mesh {
                         file: file.clone(),
                         error: e.clone(),
                     }),
+                    None => Err(Problem::Unsupported {
+                        what: format!("mesh {} was not weighed", file.display()),
+                    }),
+                },
                 extent: Some(Extent::Points {
                     points: &mesh.points,
                     pose,

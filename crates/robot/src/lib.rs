@@ -63,10 +63,11 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Robot, RobotError> {
 /// Reads a description from its text, as if from `path` (relative files are found beside it).
 pub fn read_str(text: &str, path: &Path, options: &ReadOptions) -> Result<Robot, RobotError> {
     let root = xml::parse(text, path, 0)?;
-    if let Some(line) = xacro_line(text) {
+    if let Some((e, what)) = root.xacro() {
         return Err(RobotError::Xacro {
             file: path.to_owned(),
-            line,
+            line: e.at.line,
+            what,
         });
     }
     let sources = vec![SourceFile {
@@ -75,18 +76,10 @@ pub fn read_str(text: &str, path: &Path, options: &ReadOptions) -> Result<Robot,
     }];
     match root.name.as_str() {
         "robot" => urdf::read(&root, sources, options),
-        "mujoco" => mjcf::read(&root, sources),
+        "mujoco" | "mujocoinclude" => mjcf::read(&root, sources),
         other => Err(RobotError::UnknownFormat {
             file: path.to_owned(),
             root: other.to_owned(),
         }),
     }
-}
-
-/// The first line that only xacro understands: a `xacro:` element or a `${…}` or `$(…)`
-/// substitution.
-fn xacro_line(text: &str) -> Option<u32> {
-    text.lines()
-        .position(|l| l.contains("<xacro:") || l.contains("${") || l.contains("$("))
-        .map(|i| i as u32 + 1)
 }

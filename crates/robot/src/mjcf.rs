@@ -118,8 +118,10 @@ fn expand_includes(
         let index = sources.len();
         let included = xml::parse(&text, &path, index)?;
         sources.push(SourceFile { path, text });
-        if included.name != "mujoco" {
-            return Err(included.wrong("an included file's root element must be <mujoco>"));
+        // MuJoCo takes either root for an included file.
+        if included.name != "mujoco" && included.name != "mujocoinclude" {
+            return Err(included
+                .wrong("an included file's root element must be <mujoco> or <mujocoinclude>"));
         }
         let expanded = expand_includes(&included, dir, sources, depth + 1)?;
         out.children.extend(expanded.children);

@@ -85,8 +85,9 @@ pub fn support(shape: &Shape, n: &Vector3<f64>) -> Option<f64> {
 
 /// An upper bound of the distance from the line through `point` along unit `direction` to the
 /// farthest point of the solid (all in its own frame): exact for a box, a sphere and a capsule,
-/// and for a cylinder or ellipsoid the distance of the farthest centre of its rims or of its
-/// centre plus its largest radius. `None` for a mesh or an unsupported shape.
+/// for a cylinder the bound below (exact when the line crosses its axis at a right angle or
+/// runs along it), for an ellipsoid its centre's distance plus its largest radius. `None` for a
+/// mesh or an unsupported shape.
 pub fn farthest_from_line(
     shape: &Shape,
     point: &Point3<f64>,
@@ -106,16 +107,30 @@ pub fn farthest_from_line(
             .fold(0.0, f64::max),
         Shape::Sphere { radius } => off_line(Point3::origin()) + radius,
         Shape::Ellipsoid { radii } => off_line(Point3::origin()) + radii.amax(),
-        Shape::Cylinder {
-            radius,
-            half_length,
-        }
-        | Shape::Capsule {
+        Shape::Capsule {
             radius,
             half_length,
         } => {
             let [a, b] = axis_ends(half_length);
             off_line(a).max(off_line(b)) + radius
+        }
+        Shape::Cylinder {
+            radius,
+            half_length,
+        } => {
+            // A rim point is e + R·w, w a unit vector across the axis z. With P the projection
+            // off the line, |P(e − p) + R·Pw|² ≤ |q|² + 2R·|q − z(z·q)| + R² for q = P(e − p)
+            // (q·Pw = q·w, at most the part of q across the axis; |Pw| ≤ 1): exact when the
+            // line crosses the axis at a right angle.
+            axis_ends(half_length)
+                .iter()
+                .map(|&e| {
+                    let d = e - point;
+                    let q = d - direction * direction.dot(&d);
+                    let across = (q - Vector3::z() * q.z).norm();
+                    (q.norm_squared() + 2.0 * radius * across + radius * radius).sqrt()
+                })
+                .fold(0.0, f64::max)
         }
         Shape::Mesh { .. } | Shape::MissingMesh { .. } | Shape::Unsupported { .. } => return None,
     })
@@ -197,6 +212,37 @@ mod tests {
             m
         );
         assert!((capsule.inertia_com[(0, 0)] / ixx - 1.0).abs() < 1e-9);
+    }
+
+    /// A wheel (radius 0.1, half-width 0.02) seen from a line through its centre across its
+    /// axis: its farthest rim point is √(0.1² + 0.02²) away, not 0.1 + 0.02; along its axis, 0.1.
+    #[test]
+    fn a_cylinder_is_bounded_exactly_across_and_along_its_axis() {
+        let wheel = Shape::Cylinder {
+            radius: 0.1,
+            half_length: 0.02,
+        };
+        let across = farthest_from_line(&wheel, &Point3::origin(), &Vector3::x()).unwrap();
+        assert!(
+            (across - (0.01f64 + 0.0004).sqrt()).abs() < 1e-15,
+            "{across}"
+        );
+        let along = farthest_from_line(&wheel, &Point3::origin(), &Vector3::z()).unwrap();
+        assert!((along - 0.1).abs() < 1e-15);
+        // An oblique line: still above every sampled rim point's distance.
+        let d = Vector3::new(1.0, 2.0, 3.0).normalize();
+        let p = Point3::new(0.05, -0.3, 0.1);
+        let bound = farthest_from_line(&wheel, &p, &d).unwrap();
+        let worst = (0..3600)
+            .flat_map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / 3600.0;
+                [-0.02, 0.02].map(|z| {
+                    let v = Point3::new(0.1 * t.cos(), 0.1 * t.sin(), z) - p;
+                    (v - d * d.dot(&v)).norm()
+                })
+            })
+            .fold(0.0, f64::max);
+        assert!(bound >= worst && bound < worst * 1.2, "{bound} vs {worst}");
     }
 
     #[test]

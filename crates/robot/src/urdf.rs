@@ -209,6 +209,20 @@ fn geometry(
     let Some(s) = g.children.first() else {
         return Err(g.wrong("a <geometry> needs a box, cylinder, sphere or mesh"));
     };
+    // A geometry that cannot be used is the link's problem, not the whole file's.
+    let shape = shape(s, dir, options).unwrap_or_else(|e| Shape::Unsupported {
+        what: e.to_string(),
+    });
+    Ok(Some(Geometry {
+        shape,
+        pose: origin(e.child("origin"))?,
+        mass: GeometryMass::Unstated,
+        at: s.at.clone(),
+    }))
+}
+
+/// The shape element of a `<geometry>`.
+fn shape(s: &Element, dir: &Path, options: &ReadOptions) -> Result<Shape, RobotError> {
     let positive = |name: &str| -> Result<f64, RobotError> {
         let v = s.required_number(name)?;
         if v > 0.0 {
@@ -217,7 +231,7 @@ fn geometry(
             Err(s.bad(name, s.get(name).unwrap_or_default(), "must be positive"))
         }
     };
-    let shape = match s.name.as_str() {
+    Ok(match s.name.as_str() {
         "box" => {
             let size = s
                 .numbers::<3>("size")?
@@ -271,13 +285,7 @@ fn geometry(
         other => Shape::Unsupported {
             what: format!("<{other}> geometry"),
         },
-    };
-    Ok(Some(Geometry {
-        shape,
-        pose: origin(e.child("origin"))?,
-        mass: GeometryMass::Unstated,
-        at: s.at.clone(),
-    }))
+    })
 }
 
 /// Where a URDF mesh file is: the first of the candidates that exists, or every path tried.

@@ -22,6 +22,8 @@ pub struct SourceFile {
 pub struct Element {
     /// Local name (no namespace prefix).
     pub name: String,
+    /// The namespace of the name, when it has one (`xacro:macro` → xacro's URI).
+    pub namespace: Option<String>,
     /// Attributes, local names.
     pub attributes: Vec<(String, String)>,
     /// Child elements.
@@ -72,6 +74,7 @@ fn convert(
     let tag = node.tag_name();
     Element {
         name: tag.name().to_owned(),
+        namespace: tag.namespace().map(str::to_owned),
         attributes: node
             .attributes()
             .map(|a| (a.name().to_owned(), a.value().to_owned()))
@@ -92,6 +95,27 @@ fn convert(
 }
 
 impl Element {
+    /// The first element, this one or below, that only xacro understands (an element in
+    /// xacro's namespace, or a `${…}`/`$(…)` substitution in an attribute), and what it is.
+    /// Comments are not elements, so markup commented out does not count.
+    pub fn xacro(&self) -> Option<(&Element, String)> {
+        if self
+            .namespace
+            .as_deref()
+            .is_some_and(|n| n.contains("xacro"))
+        {
+            return Some((self, format!("the xacro element <xacro:{}>", self.name)));
+        }
+        if let Some((k, v)) = self
+            .attributes
+            .iter()
+            .find(|(_, v)| v.contains("${") || v.contains("$("))
+        {
+            return Some((self, format!("the substitution {k}=\"{v}\"")));
+        }
+        self.children.iter().find_map(Element::xacro)
+    }
+
     /// An attribute's value.
     pub fn get(&self, name: &str) -> Option<&str> {
         self.attributes

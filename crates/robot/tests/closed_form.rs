@@ -296,7 +296,7 @@ fn unreadable_descriptions_name_the_place() {
         .expect_err("refused")
         .to_string();
     assert!(
-        text.contains("run xacro first") && text.contains("line 2"),
+        text.contains("run xacro first") && text.contains("r.urdf.xacro:2:"),
         "{text}"
     );
 
@@ -317,5 +317,93 @@ fn unreadable_descriptions_name_the_place() {
     assert!(
         text.contains("<mass value=\"0.07,\">") && text.contains("not a number"),
         "{text}"
+    );
+}
+
+#[test]
+fn xacro_markup_in_comments_is_not_xacro_but_a_substitution_is() {
+    // As xArm's and TALOS's URDFs: xacro left in comments.
+    let commented = r#"<robot name="c"><!-- <xacro:arm prefix="${p}"/> -->
+  <link name="a"><visual><geometry><box size="1 1 1"/></geometry></visual></link></robot>"#;
+    assert!(read_str(commented, Path::new("c.urdf"), &ReadOptions::default()).is_ok());
+    // As Husky's: a roslaunch substitution in an attribute, on line 2.
+    let husky = "<robot name=\"h\">\n<link name=\"a\"><visual><geometry>\
+        <mesh filename=\"$(optenv HUSKY_MESH base.stl)\"/></geometry></visual></link></robot>";
+    let text = read_str(husky, Path::new("h.urdf"), &ReadOptions::default())
+        .expect_err("refused")
+        .to_string();
+    assert!(
+        text.starts_with("h.urdf:2:") && text.contains("substitution filename"),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_bad_primitive_is_its_link_finding_not_the_files_error() {
+    // As laikago_toes.urdf: one visual sphere of radius 0.
+    let urdf = r#"<robot name="t"><link name="toe">
+  <inertial><mass value="0.1"/><inertia ixx="1e-5" ixy="0" ixz="0" iyy="1e-5" iyz="0" izz="1e-5"/></inertial>
+  <collision><geometry><sphere radius="0.0"/></geometry></collision></link></robot>"#;
+    let robot = read_str(urdf, Path::new("t.urdf"), &ReadOptions::default()).expect("read");
+    let report = audit(&robot, &AuditOptions::default());
+    let what = report.links[0].findings.iter().find_map(|f| match f {
+        Finding::GeometryUnsupported { what } => Some(what.clone()),
+        _ => None,
+    });
+    let what = what.expect("a finding");
+    assert!(
+        what.contains("t.urdf:3:") && what.contains("must be positive"),
+        "{what}"
+    );
+}
+
+#[test]
+fn a_point_mass_is_a_body_unless_it_moves() {
+    let urdf = |joint: &str| {
+        format!(
+            r#"<robot name="p"><link name="base"/><link name="frame">
+  <inertial><mass value="1e-9"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>
+  <joint name="j" type="{joint}"><parent link="base"/><child link="frame"/></joint></robot>"#
+        )
+    };
+    let codes_of = |joint: &str| {
+        let robot =
+            read_str(&urdf(joint), Path::new("p.urdf"), &ReadOptions::default()).expect("read");
+        let report = audit(&robot, &AuditOptions::default());
+        codes(&report.links[1].findings)
+            .iter()
+            .map(|c| c.to_string())
+            .collect::<Vec<_>>()
+    };
+    assert!(!codes_of("fixed").contains(&"not_positive_definite".to_owned()));
+    assert!(codes_of("revolute").contains(&"not_positive_definite".to_owned()));
+}
+
+#[test]
+fn an_mjcf_body_without_inertial_weighs_every_geom_and_includes_mujocoinclude() {
+    let dir = scratch("mujocoinclude");
+    std::fs::write(
+        dir.join("parts.xml"),
+        r#"<mujocoinclude><body name="b"><freejoint/>
+  <geom type="box" size="0.1 0.1 0.1"/>
+  <geom type="sphere" size="0.05" pos="0 0 0.3" contype="0" conaffinity="0"/>
+</body></mujocoinclude>"#,
+    )
+    .expect("write");
+    let main = dir.join("model.xml");
+    std::fs::write(
+        &main,
+        r#"<mujoco><worldbody><include file="parts.xml"/></worldbody></mujoco>"#,
+    )
+    .expect("write");
+    let robot = read(&main, &ReadOptions::default()).expect("read");
+    let report = audit(&robot, &AuditOptions::default());
+    let c = report.links[0].computed.as_ref().expect("weighed");
+    // MuJoCo's default density over both geoms, the visual sphere too.
+    let m = 1000.0 * (0.008 + 4.0 / 3.0 * PI * 0.05f64.powi(3));
+    assert!(
+        (c.properties.mass - m).abs() < 1e-12 * m,
+        "{} vs {m}",
+        c.properties.mass
     );
 }

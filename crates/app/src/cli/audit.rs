@@ -294,7 +294,9 @@ fn basis_text(c: &robot::Computed) -> String {
             "uniform density {} kg/m^3 for the stated mass",
             significant(c.density, 6)
         ),
-        MassBasis::FileMasses => "the geoms' own masses and densities".to_owned(),
+        MassBasis::FileMasses => {
+            "the geoms' own masses and densities (every geom, visual ones too, as MuJoCo weighs a body without an inertial)".to_owned()
+        }
         MassBasis::GivenDensity(d) => format!("the density given, {} kg/m^3", significant(d, 6)),
         MassBasis::AssumedDensity(d) => {
             format!(
@@ -467,7 +469,7 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
             "center_of_mass": point(center_of_mass), "distance_outside": distance, "proof": true,
         }),
         F::Placeholder { reasons } => json!({"reasons": reasons.iter().map(|r| match r {
-            robot::PlaceholderReason::EqualMoments { moment } => json!({"kind": "equal_moments", "moment": moment}),
+            robot::PlaceholderReason::EqualMoments { moment, weighed } => json!({"kind": "equal_moments", "moment": moment, "geometry_weighed": weighed}),
             robot::PlaceholderReason::RoundNumbers { written } => json!({"kind": "round_numbers", "written": written}),
             robot::PlaceholderReason::SharedTensor { links } => json!({"kind": "shared_tensor", "links": links}),
         }).collect::<Vec<_>>()}),

@@ -35,8 +35,11 @@ impl Dialog {
             let path = match purpose {
                 DialogPurpose::OpenMesh => dialog
                     .add_filter(
-                        "Meshes and bodies (OBJ, STL, TOML)",
-                        &["obj", "stl", "toml", "OBJ", "STL", "TOML"],
+                        "Meshes, bodies and robots (OBJ, STL, TOML, URDF, MJCF)",
+                        &[
+                            "obj", "stl", "toml", "urdf", "xml", "OBJ", "STL", "TOML", "URDF",
+                            "XML",
+                        ],
                     )
                     .pick_file(),
                 DialogPurpose::AddPart => dialog

@@ -58,6 +58,9 @@ pub struct GuiArgs {
     /// textbook model), drawn as ghosts with their plot curves (to measure what they cost).
     #[arg(long, value_name = "N", requires = "bench_frames", value_parser = clap::value_parser!(u8).range(1..=3))]
     pub bench_ghosts: Option<u8>,
+    /// With a robot description (URDF or MJCF): show this link as the body.
+    #[arg(long, value_name = "NAME", requires = "file")]
+    pub link: Option<String>,
     /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
     /// settings, after --after simulated seconds, paused there.
     #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
@@ -428,6 +431,7 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
         ..Default::default()
     };
     let file = args.file.clone();
+    let link = args.link.clone();
     let (history, after) = (args.bench_history, args.after);
     let capture_outcome = Arc::clone(&outcome);
     let ghosts = [
@@ -451,9 +455,12 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
             let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
             if let Some(path) = file {
                 app.command(Command::LoadFile(path));
-                if scripted {
+                if scripted || link.is_some() {
                     // Every measured frame, and the picture, must show the mesh.
                     app.lab.wait_for_load();
+                }
+                if let Some(name) = &link {
+                    app.command(app.lab.link_named(name));
                 }
             }
             if bench.is_some() {

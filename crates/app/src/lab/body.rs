@@ -86,6 +86,24 @@ pub struct LoadedBody {
     /// The parts, for a body made of parts (`analysis` then describes their surfaces together,
     /// and the mass properties come from here).
     pub composition: Option<Composition>,
+    /// What a robot description states for this body (a link shown alone), at scale 1, body
+    /// coordinates: the "stated" inertia source.
+    pub stated: Option<MassProperties>,
+    /// A whole robot's links, each with its stated and computed inertia in body coordinates
+    /// (drawn as equivalent ellipsoids); empty for any other body.
+    pub links: Vec<LinkMark>,
+}
+
+/// One link of a robot drawn whole: its name, and its stated and computed inertia placed in the
+/// robot's frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkMark {
+    /// The link's name.
+    pub name: String,
+    /// As the description states it.
+    pub stated: Option<MassProperties>,
+    /// From its geometry.
+    pub computed: Option<MassProperties>,
 }
 
 /// What a part edit changed, for whoever draws the body.
@@ -144,6 +162,8 @@ impl LoadedBody {
             warning_faces,
             file: None,
             composition: None,
+            stated: None,
+            links: Vec::new(),
         }
     }
 

@@ -90,6 +90,9 @@ pub enum Command {
     RemovePart(usize),
     /// Write the body as a body file (and, beside it, the meshes of parts that have no file).
     SaveBody(PathBuf),
+    /// Show link N of the loaded robot description as the body (its stated inertia available
+    /// as the "stated" source), or the whole robot at its zero pose for `None`.
+    ShowLink(Option<usize>),
 }
 
 /// A line for the user: an error (red) or information.

@@ -68,6 +68,12 @@ pub enum LabError {
     /// A part index that the body does not have.
     #[error("no part number {0}")]
     NoPart(usize),
+    /// A robot description that cannot be read or drawn (the message names file and line).
+    #[error("{0}")]
+    Robot(String),
+    /// A link index out of range.
+    #[error("the robot has no link {0}")]
+    NoLink(usize),
     /// Hiding the last part shown.
     #[error("the last part shown stays shown")]
     LastShown,

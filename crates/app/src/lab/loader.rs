@@ -10,6 +10,7 @@ use std::thread;
 use super::body::LoadedBody;
 use super::error::LabError;
 use super::parts::from_resolved;
+use super::robot::{self, RobotModel};
 use crate::input::{self, Request, Resolved, Source};
 
 /// What the worker reports.
@@ -18,7 +19,16 @@ pub enum LoadEvent {
     /// A stage name and its completed fraction (0 to 1).
     Progress(&'static str, f32),
     /// The result; the worker then exits.
-    Done(Box<Result<LoadedBody, LabError>>),
+    Done(Box<Result<Loaded, LabError>>),
+}
+
+/// What a file loads as.
+#[derive(Debug)]
+pub enum Loaded {
+    /// A mesh or a body file: the body.
+    Body(LoadedBody),
+    /// A robot description: the audited robot and the body it shows first (the whole robot).
+    Robot(Box<RobotModel>, LoadedBody),
 }
 
 /// A running load.
@@ -45,7 +55,12 @@ impl Loading {
                 let _ = tx.send(e);
                 wake();
             };
-            let result = load(&p, &|stage, f| send(LoadEvent::Progress(stage, f)));
+            let result = if robot::is_description(&p) {
+                send(LoadEvent::Progress("reading and auditing the robot", 0.0));
+                robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
+            } else {
+                load(&p, &|stage, f| send(LoadEvent::Progress(stage, f))).map(Loaded::Body)
+            };
             send(LoadEvent::Done(Box::new(result)));
         });
         Self {
@@ -57,7 +72,7 @@ impl Loading {
     }
 
     /// Drains the reports; returns the result once the worker is done.
-    pub fn poll(&mut self) -> Option<Result<LoadedBody, LabError>> {
+    pub fn poll(&mut self) -> Option<Result<Loaded, LabError>> {
         loop {
             match self.events.try_recv() {
                 Ok(LoadEvent::Progress(stage, f)) => {
@@ -122,7 +137,9 @@ mod tests {
     fn wait(mut l: Loading) -> Result<LoadedBody, LabError> {
         for _ in 0..2000 {
             if let Some(r) = l.poll() {
-                return r;
+                return r.map(|loaded| match loaded {
+                    Loaded::Body(b) | Loaded::Robot(_, b) => b,
+                });
             }
             thread::sleep(std::time::Duration::from_millis(5));
         }

@@ -19,6 +19,7 @@ pub mod loader;
 pub mod parts;
 pub mod picking;
 pub mod placement;
+pub mod robot;
 pub mod samples;
 pub mod settings;
 pub mod specimen;
@@ -32,8 +33,9 @@ use body::LoadedBody;
 use clock::FrameClock;
 pub use command::{Command, Message};
 pub use error::LabError;
-use loader::Loading;
-use settings::AppSettings;
+use loader::{Loaded, Loading};
+use robot::RobotModel;
+use settings::{AppSettings, InertiaSource};
 pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView, Variant};
 
 /// The specimen every lab has: the one the user loads, pokes and plots.
@@ -63,6 +65,8 @@ pub struct Lab {
     run_mode: RunMode,
     clock: FrameClock,
     loading: Option<Loading>,
+    /// The robot description loaded last, while its links are what is shown.
+    robot: Option<RobotModel>,
     message: Option<Message>,
     /// Bumped whenever what is drawn of the body changes (a new body, a part moved, shown or
     /// hidden), so the 3D view uploads it again; an edit of masses alone leaves it.
@@ -108,6 +112,7 @@ impl Lab {
             run_mode: RunMode::Running,
             clock: FrameClock::new(),
             loading: None,
+            robot: None,
             message: None,
             generation: 0,
             waker: Waker(Arc::new(|| {})),
@@ -226,6 +231,7 @@ impl Lab {
             } => self.edit_part(index, *entry, visible)?,
             Command::RemovePart(index) => self.remove_part(index)?,
             Command::SaveBody(path) => self.save_body(&path)?,
+            Command::ShowLink(link) => self.show_link(link)?,
         }
         Ok(())
     }
@@ -314,7 +320,17 @@ impl Lab {
     /// simulated.
     fn install(&mut self, body: LoadedBody) -> Result<(), LabError> {
         let body = Arc::new(body);
-        self.start_all(&self.plan(), &body, self.preset_axis)?;
+        // The stated source exists only for a link whose description states an inertia.
+        let stated_copy = Variant::Source(InertiaSource::Stated);
+        if body.stated.is_none() && self.settings.body.source == InertiaSource::Stated {
+            self.settings.body.source = InertiaSource::Exact;
+        }
+        let plan: Vec<(SpecimenId, Variant)> = self
+            .plan()
+            .into_iter()
+            .filter(|(_, v)| body.stated.is_some() || *v != stated_copy)
+            .collect();
+        self.start_all(&plan, &body, self.preset_axis)?;
         self.generation += 1;
         // The diagnostics sit low in the side panel: the message line says whether to look.
         let warnings = match body.analysis.warnings.len() {
@@ -395,8 +411,28 @@ impl Lab {
         }
     }
 
-    fn finish_load(&mut self, result: Result<LoadedBody, LabError>) {
-        let outcome = result.and_then(|body| self.install(body));
+    fn finish_load(&mut self, result: Result<Loaded, LabError>) {
+        let outcome = result.and_then(|loaded| match loaded {
+            Loaded::Body(body) => {
+                self.install(body)?;
+                self.robot = None;
+                Ok(())
+            }
+            Loaded::Robot(model, body) => {
+                self.install(body)?;
+                let flagged = model.audit.links.iter().filter(|l| l.flagged()).count();
+                self.info(format!(
+                    "loaded robot {} ({} links, {flagged} with findings on their inertial): \
+                     choose a link under Robot",
+                    model.robot.name,
+                    model.robot.links.len()
+                ));
+                self.robot = Some(*model);
+                // The whole robot is shown at its zero pose, still; Run spins it as one body.
+                self.run_mode = RunMode::Paused;
+                Ok(())
+            }
+        });
         if let Err(e) = outcome {
             self.message = Some(Message {
                 text: format!("{e} (the current body is kept)"),
@@ -449,6 +485,87 @@ impl Lab {
     pub fn message(&self) -> Option<&Message> {
         self.message.as_ref()
     }
+    /// The robot whose links are shown, if a description was loaded.
+    pub fn robot(&self) -> Option<&RobotModel> {
+        self.robot.as_ref()
+    }
+
+    /// The command that shows the loaded robot's link called `name` (a message naming the links
+    /// when there is none).
+    pub fn link_named(&self, name: &str) -> Command {
+        let Some(model) = &self.robot else {
+            return Command::Notify(Message {
+                text: format!("--link {name}: no robot description is loaded"),
+                error: true,
+            });
+        };
+        match model.robot.links.iter().position(|l| l.name == name) {
+            Some(i) => Command::ShowLink(Some(i)),
+            None => Command::Notify(Message {
+                text: format!(
+                    "the robot has no link {name:?} (its links: {})",
+                    model
+                        .robot
+                        .links
+                        .iter()
+                        .map(|l| l.name.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+                error: true,
+            }),
+        }
+    }
+
+    /// Shows link `link` of the loaded robot as the body, or the whole robot for `None`.
+    fn show_link(&mut self, link: Option<usize>) -> Result<(), LabError> {
+        let model = self
+            .robot
+            .as_ref()
+            .ok_or(LabError::NoLink(link.unwrap_or(0)))?;
+        let body = match link {
+            Some(i) => robot::link_body(model, i)?,
+            None => robot::whole_body(model)?,
+        };
+        let name = body.name.clone();
+        let stated = body.stated.is_some();
+        self.install(body)?;
+        if let Some(m) = &mut self.robot {
+            m.shown = link;
+        }
+        // The whole robot stands still at its zero pose; a link is there to be spun.
+        self.run_mode = if link.is_none() {
+            RunMode::Paused
+        } else {
+            RunMode::Running
+        };
+        let mut text = match (link, stated) {
+            (None, _) => "the whole robot at its zero pose, with each link's ellipsoids".to_owned(),
+            (Some(_), true) => format!(
+                "link {name}: its collision geometry, spinning beside a copy with the inertia its file states"
+            ),
+            (Some(_), false) => format!("link {name}: its collision geometry (no inertia stated)"),
+        };
+        // A link that states an inertia spins beside a copy that uses it (the ghost).
+        let copy = Variant::Source(InertiaSource::Stated);
+        if stated
+            && self.settings.body.source != InertiaSource::Stated
+            && !self.plan().iter().any(|(_, v)| *v == copy)
+        {
+            let mut plan = self.plan();
+            plan.push((SpecimenId(self.next_id), copy));
+            self.next_id += 1;
+            let body = self.primary().body_arc().clone();
+            if let Err(e) = self.start_all(&plan, &body, self.preset_axis) {
+                text = format!(
+                    "link {name}: its collision geometry; its stated inertia cannot be simulated: {e}"
+                );
+            }
+        }
+        self.info(text);
+        Ok(())
+    }
+
     /// The running load, if any.
     pub fn loading(&self) -> Option<&Loading> {
         self.loading.as_ref()

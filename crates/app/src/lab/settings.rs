@@ -153,14 +153,17 @@ pub enum InertiaSource {
     BoundingBox,
     /// Equal point masses at the vertices.
     PointMasses,
+    /// What a robot description states for the link shown (when it states one).
+    Stated,
 }
 
 impl InertiaSource {
     /// All sources, in table order.
-    pub const ALL: [InertiaSource; 3] = [
+    pub const ALL: [InertiaSource; 4] = [
         InertiaSource::Exact,
         InertiaSource::BoundingBox,
         InertiaSource::PointMasses,
+        InertiaSource::Stated,
     ];
 
     /// Label in the UI.
@@ -169,6 +172,7 @@ impl InertiaSource {
             InertiaSource::Exact => "exact",
             InertiaSource::BoundingBox => "bounding box",
             InertiaSource::PointMasses => "point masses",
+            InertiaSource::Stated => "stated",
         }
     }
 }

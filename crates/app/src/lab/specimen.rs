@@ -104,8 +104,9 @@ pub struct Specimen {
     id: SpecimenId,
     variant: Variant,
     body: Arc<LoadedBody>,
-    /// Exact, bounding-box and point-mass properties at the current scale and mass.
-    props: [MassProperties; 3],
+    /// Exact, bounding-box, point-mass and stated properties at the current scale and mass (the
+    /// stated ones are the exact ones for a body that states none).
+    props: [MassProperties; 4],
     source: InertiaSource,
     scale: f64,
     sim: Simulation,
@@ -205,7 +206,7 @@ impl Specimen {
     /// New mass properties (when `changed`) and settings, p and L kept, the mesh kept in place.
     fn reshape(
         &mut self,
-        props: [MassProperties; 3],
+        props: [MassProperties; 4],
         new: &AppSettings,
         changed: bool,
     ) -> Result<(), LabError> {
@@ -408,7 +409,8 @@ impl Specimen {
     pub fn dropped(&self) -> f64 {
         self.dropped
     }
-    /// Mass properties per source (exact, bounding box, point masses) at the current scale/mass.
+    /// Mass properties per source (exact, bounding box, point masses, stated) at the current
+    /// scale and mass.
     pub fn properties(&self, source: InertiaSource) -> &MassProperties {
         &self.props[source_index(source)]
     }
@@ -514,15 +516,16 @@ fn source_index(source: InertiaSource) -> usize {
         InertiaSource::Exact => 0,
         InertiaSource::BoundingBox => 1,
         InertiaSource::PointMasses => 2,
+        InertiaSource::Stated => 3,
     }
 }
 
-/// The three sources' properties for the settings' scale and mass (the analysis is at density 1
+/// The four sources' properties for the settings' scale and mass (the analysis is at density 1
 /// and scale 1: mass ∝ s³, inertia ∝ s⁵ at fixed density).
 fn scaled_properties(
     body: &LoadedBody,
     settings: &AppSettings,
-) -> Result<[MassProperties; 3], LabError> {
+) -> Result<[MassProperties; 4], LabError> {
     let s = settings.body.scale;
     let a = &body.analysis;
     // A body of parts takes its mass from their materials; a single mesh from the settings.
@@ -547,10 +550,12 @@ fn scaled_properties(
                 source,
             })
     };
+    let exact = fit(whole.unwrap_or(&a.properties))?;
     Ok([
-        fit(whole.unwrap_or(&a.properties))?,
+        exact,
         fit(&a.bounding_box)?,
         fit(&a.point_masses)?,
+        body.stated.as_ref().map_or(Ok(exact), fit)?,
     ])
 }
 

@@ -15,7 +15,7 @@ use crate::lab::{Command, Lab, MAX_COPIES, Variant};
 #[derive(Debug, Clone, PartialEq)]
 pub struct CompareChoice {
     /// A copy per inertia source, in [`InertiaSource::ALL`] order (the lab's own is not offered).
-    pub sources: [bool; 3],
+    pub sources: [bool; 4],
     /// A copy under the other rotation model.
     pub other_model: bool,
     /// A copy with this integrator (the lab's own is not offered).
@@ -26,7 +26,7 @@ impl Default for CompareChoice {
     fn default() -> Self {
         // The original tool's lesson: the bounding-box guess moves differently.
         Self {
-            sources: [false, true, false],
+            sources: [false, true, false, false],
             other_model: false,
             integrator: None,
         }
@@ -81,8 +81,11 @@ pub fn show(
                 .wrap(),
             );
             let c = &mut state.compare;
+            let stated = lab.primary().body().stated.is_some();
             for (k, source) in InertiaSource::ALL.into_iter().enumerate() {
-                if source != s.body.source {
+                if source == InertiaSource::Stated && !stated {
+                    c.sources[k] = false;
+                } else if source != s.body.source {
                     ui.checkbox(&mut c.sources[k], format!("{} inertia", source.label()));
                 }
             }
@@ -178,7 +181,7 @@ mod tests {
     #[test]
     fn the_lab_s_own_choices_are_not_offered() {
         let choice = CompareChoice {
-            sources: [true, true, true],
+            sources: [true, true, true, false],
             other_model: true,
             integrator: Some(Integrator::MidpointCayley),
         };

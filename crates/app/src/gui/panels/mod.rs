@@ -11,6 +11,7 @@ pub mod help;
 pub mod parts;
 pub mod plots;
 pub mod polhodes;
+pub mod robot;
 pub mod side;
 pub mod sphere;
 pub mod toolbar;

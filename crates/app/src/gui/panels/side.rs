@@ -1,6 +1,7 @@
 //! The side panel: body and loading, mass-properties table, the inertia source, motion controls
 //! and presets, interaction strengths, view toggles, diagnostics and warnings.
 
+use massprops::MassProperties;
 use std::path::PathBuf;
 
 use egui::{Color32, RichText};
@@ -27,6 +28,7 @@ pub fn show(
         .on_hover_text(name.as_str());
     egui::ScrollArea::vertical().show(ui, |ui| {
         body_section(ui, lab, state, commands, s);
+        super::robot::show(ui, lab, commands);
         table_section(ui, lab, s);
         motion_section(ui, lab, commands, s);
         super::compare::show(ui, lab, s, state, commands);
@@ -74,7 +76,7 @@ fn body_section(
                 {
                     state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
-                ui.label("or drop an OBJ/STL (or a body .toml) file on the window");
+                ui.label("or drop an OBJ/STL, a body .toml or a robot .urdf/.xml on the window");
             });
             ui.horizontal(|ui| {
                 let l = ui.label("Path");
@@ -156,33 +158,47 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
         .default_open(true)
         .show(ui, |ui| {
             let primary = lab.primary();
-            let [exact, bbox, points] = InertiaSource::ALL.map(|src| primary.properties(src));
-            let [_, cb, cp] = InertiaSource::ALL.map(|src| primary.comparison(src));
+            let sources = shown_sources(primary);
+            let exact = primary.properties(InertiaSource::Exact);
+            let others: Vec<(&MassProperties, massprops::properties::Comparison)> = sources[1..]
+                .iter()
+                .map(|&src| (primary.properties(src), primary.comparison(src)))
+                .collect();
             egui::Grid::new("mass-table")
                 .striped(true)
-                .num_columns(4)
+                .num_columns(sources.len() + 1)
                 .show(ui, |ui| {
                     ui.label("");
-                    ui.strong("exact");
-                    ui.strong("bbox");
-                    ui.strong("points");
+                    for src in &sources {
+                        ui.strong(match src {
+                            InertiaSource::BoundingBox => "bbox",
+                            InertiaSource::PointMasses => "points",
+                            other => other.label(),
+                        });
+                    }
                     ui.end_row();
                     ui.label("mass (kg)");
                     ui.label(fmt(exact.mass));
-                    ui.label("same");
-                    ui.label("same");
+                    for (p, _) in &others {
+                        ui.label(if p.mass == exact.mass {
+                            "same".to_owned()
+                        } else {
+                            fmt(p.mass)
+                        });
+                    }
                     ui.end_row();
                     for i in 0..3 {
                         ui.label(format!("I{} (kg·m²)", i + 1));
                         ui.label(fmt(exact.principal.moments[i]));
-                        ui.label(fmt(bbox.principal.moments[i]));
-                        ui.label(fmt(points.principal.moments[i]));
+                        for (p, _) in &others {
+                            ui.label(fmt(p.principal.moments[i]));
+                        }
                         ui.end_row();
                     }
                     for i in 0..3 {
                         ui.label(format!("error I{}", i + 1));
                         ui.label("—");
-                        for c in [&cb, &cp] {
+                        for (_, c) in &others {
                             let e = c.moment_error[i] * 100.0;
                             ui.label(error_text(format!("{e:+.1} %"), e.abs() > 5.0));
                         }
@@ -191,7 +207,7 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                     for i in 0..3 {
                         ui.label(format!("axis {} angle", i + 1));
                         ui.label("—");
-                        for c in [&cb, &cp] {
+                        for (_, c) in &others {
                             match c.axis_angle[i] {
                                 Some(a) => {
                                     let deg = a.to_degrees();
@@ -204,8 +220,9 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                     }
                     ui.label("CoM offset (m)");
                     ui.label("—");
-                    ui.label(fmt(cb.com_offset));
-                    ui.label(fmt(cp.com_offset));
+                    for (_, c) in &others {
+                        ui.label(fmt(c.com_offset));
+                    }
                     ui.end_row();
                 });
             // A coordinate below 1e-12 of the body's size is round-off of a zero (as in the
@@ -226,11 +243,19 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
             );
             ui.label(RichText::new("Simulation uses").strong());
             ui.horizontal(|ui| {
-                for src in InertiaSource::ALL {
+                for src in sources {
                     ui.radio_value(&mut s.body.source, src, src.label());
                 }
             });
         });
+}
+
+/// The sources the body has: the stated one only for a robot link that states an inertia.
+fn shown_sources(primary: &crate::lab::Specimen) -> Vec<InertiaSource> {
+    InertiaSource::ALL
+        .into_iter()
+        .filter(|&s| s != InertiaSource::Stated || primary.body().stated.is_some())
+        .collect()
 }
 
 fn error_text(text: String, large: bool) -> RichText {

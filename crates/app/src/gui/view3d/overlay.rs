@@ -179,7 +179,7 @@ impl Context<'_> {
 type Layer = fn(&mut Overlay, &Context<'_>);
 
 /// The layers, bottom first.
-const LAYERS: [Layer; 12] = [
+const LAYERS: [Layer; 13] = [
     wireframe,
     bounding_box,
     principal_axes,
@@ -192,7 +192,69 @@ const LAYERS: [Layer; 12] = [
     string,
     highlighted_faces,
     selected_part,
+    link_ellipsoids,
 ];
+
+/// Colours of a robot link's equivalent ellipsoids: from its geometry, and as its file states.
+pub const COMPUTED_LINK_COLOR: Color32 = Color32::from_rgb(120, 230, 140);
+/// See [`COMPUTED_LINK_COLOR`].
+pub const STATED_LINK_COLOR: Color32 = Color32::from_rgb(255, 150, 70);
+
+/// A whole robot's links: each one's uniform ellipsoid with its computed and with its stated
+/// mass and moments, where one exists (stated moments that break I₁ + I₂ ≥ I₃ have none).
+fn link_ellipsoids(o: &mut Overlay, c: &Context<'_>) {
+    let mut too_large = 0;
+    let mut largest: f64 = 0.0;
+    for mark in &c.specimen.body().links {
+        for (p, color) in [
+            (&mark.computed, COMPUTED_LINK_COLOR),
+            (&mark.stated, STATED_LINK_COLOR),
+        ] {
+            let Some(p) = p else { continue };
+            let i = p.principal.moments;
+            let squared = Vector3::from_fn(|a, _| {
+                let (j, l) = ((a + 1) % 3, (a + 2) % 3);
+                2.5 * (i[j] + i[l] - i[a]) / p.mass
+            });
+            if p.mass <= 0.0 || squared.iter().any(|&x| !(x > 0.0)) {
+                continue;
+            }
+            let half = squared.map(f64::sqrt);
+            // Drawn where it fits the view: a placeholder's can be metres across a finger.
+            let scaled = half.amax() * c.placement.scale;
+            if scaled > 2.0 * c.radius {
+                too_large += 1;
+                largest = largest.max(2.0 * scaled);
+                continue;
+            }
+            let axes = p.principal.rotation;
+            let n = 32;
+            for plane in 0..3 {
+                let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
+                let point = |s: usize| {
+                    let t = std::f64::consts::TAU * s as f64 / n as f64;
+                    let mut q = Vector3::zeros();
+                    q[u] = half[u] * t.cos();
+                    q[v] = half[v] * t.sin();
+                    c.placement.to_world(&(p.center_of_mass + axes * q))
+                };
+                for k in 0..n {
+                    o.line(point(k), point(k + 1), color, 1.0);
+                }
+            }
+        }
+    }
+    if too_large > 0 {
+        o.labels.push(Label {
+            at: c.com + Vector3::new(0.0, c.radius, 0.0),
+            text: format!(
+                "{too_large} ellipsoid(s) larger than the robot, not drawn (up to {largest:.2} m across)"
+            ),
+            color: STATED_LINK_COLOR,
+            align: Align2::CENTER_BOTTOM,
+        });
+    }
+}
 
 /// The selected part of a body made of parts: its bounding box (in the body's axes) and name.
 fn selected_part(o: &mut Overlay, c: &Context<'_>) {

@@ -1,0 +1,93 @@
+//! The Robot section: a loaded URDF or MJCF description's links, worst finding first, each with
+//! its findings; choosing one makes it the body (its stated inertia then a source of its own),
+//! and "Whole robot" shows every link at the zero pose with its ellipsoids.
+
+use egui::{Color32, RichText};
+
+use crate::findings::{finding_text, num};
+use crate::lab::{Command, Lab};
+
+/// Colour of a finding that proves the stated inertia impossible, and of the others.
+const PROOF: Color32 = Color32::from_rgb(255, 120, 90);
+const OTHER: Color32 = Color32::from_rgb(240, 200, 110);
+
+/// Shows the section when a robot description is loaded.
+pub fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
+    let Some(model) = lab.robot() else {
+        return;
+    };
+    let robot = &model.robot;
+    let flagged = model.audit.links.iter().filter(|l| l.flagged()).count();
+    egui::CollapsingHeader::new("Robot")
+        .default_open(true)
+        .show(ui, |ui| {
+            ui.add(
+                egui::Label::new(format!(
+                    "{} ({}): {} links, {flagged} with findings on their stated inertia. \
+                     Computed: uniform density over the collision geometry. Whole robot: each \
+                     link's equivalent ellipsoid, green from its geometry, orange as stated.",
+                    robot.name,
+                    robot.format.name().to_uppercase(),
+                    robot.links.len()
+                ))
+                .wrap(),
+            );
+            if ui
+                .selectable_label(model.shown.is_none(), "Whole robot (zero pose)")
+                .clicked()
+            {
+                commands.push(Command::ShowLink(None));
+            }
+            egui::ScrollArea::vertical()
+                .id_salt("robot-links")
+                .max_height(180.0)
+                .show(ui, |ui| {
+                    for l in model.audit.worst_first() {
+                        let link = &robot.links[l.link];
+                        let mut codes: Vec<&str> = l.findings.iter().map(|f| f.code()).collect();
+                        codes.dedup();
+                        let mass = l
+                            .stated
+                            .as_ref()
+                            .map_or("no inertial".to_owned(), |p| format!("{} kg", num(p.mass)));
+                        let text = format!("{}  {mass}  {}", link.name, codes.join(", "));
+                        let color = match l.worst() {
+                            0 => PROOF,
+                            1..=6 => OTHER,
+                            _ => ui.visuals().text_color(),
+                        };
+                        let chosen = model.shown == Some(l.link);
+                        if ui
+                            .selectable_label(chosen, RichText::new(text).color(color))
+                            .clicked()
+                        {
+                            commands.push(Command::ShowLink(Some(l.link)));
+                        }
+                    }
+                });
+            if let Some(i) = model.shown {
+                let l = &model.audit.links[i];
+                ui.separator();
+                ui.strong(format!("Link {}", robot.links[i].name));
+                if let (Some(s), Ok(c)) = (&l.stated, &l.computed) {
+                    let m = |p: &massprops::MassProperties| {
+                        let v = p.principal.moments;
+                        format!("{} {} {}", num(v.x), num(v.y), num(v.z))
+                    };
+                    ui.label(format!("stated moments   {} kg·m²", m(s)));
+                    ui.label(format!("computed moments {} kg·m²", m(&c.properties)));
+                }
+                for f in &l.findings {
+                    let color = if f.severity() == 0 { PROOF } else { OTHER };
+                    ui.add(
+                        egui::Label::new(
+                            RichText::new(finding_text(f, "collision"))
+                                .small()
+                                .color(color),
+                        )
+                        .wrap(),
+                    );
+                }
+            }
+        });
+}
