@@ -1,18 +1,22 @@
 //! A robot audit's findings in words, shared by the command line's report and the app's Robot
-//! panel. The numbers come from `robot::Finding`; what is said around them is ours.
+//! section (each passes its own words for mesh warnings). The numbers come from
+//! `robot::Finding`; what is said around them is ours.
 
+use massprops::Warning;
 use robot::{Finding, PlaceholderReason, Region, Unweighed};
-
-use crate::cli::report::words::warning_text;
 
 /// A number to four significant digits.
 pub fn num(v: f64) -> String {
-    crate::cli::report::significant(v, 4)
+    crate::wording::significant(v, 4)
 }
 
 /// One finding as a sentence, naming its evidence; `geometry` is the kind audited
-/// ("collision").
-pub fn finding_text(f: &Finding, geometry: &str) -> String {
+/// ("collision"), and `mesh_words` the front end's own words for a mesh warning.
+pub fn finding_text(
+    f: &Finding,
+    geometry: &str,
+    mesh_words: impl Fn(&Warning) -> String,
+) -> String {
     match f {
         Finding::MissingInertial { moving: true } => "no <inertial>: a moving link without \
              mass, so every dynamics call treats it as weightless (simulators substitute a \
@@ -156,7 +160,7 @@ pub fn finding_text(f: &Finding, geometry: &str) -> String {
             format!("{what} is not integrated, so the link is not weighed")
         }
         Finding::MeshDefect { geometry, warning } => {
-            format!("{geometry}: {}", warning_text(warning, &[]))
+            format!("{geometry}: {}", mesh_words(warning))
         }
         _ => f.code().replace('_', " "),
     }

@@ -861,7 +861,9 @@ fn differ(a: &LinkAudit, b: &LinkAudit, robot: &Robot) -> bool {
                     .map(|g| g.shape.label())
                     .collect()
             };
-            shapes(a) != shapes(b)
+            // A link without geometry differs from nothing that can be seen.
+            let (sa, sb) = (shapes(a), shapes(b));
+            !sa.is_empty() && !sb.is_empty() && sa != sb
         }
     }
 }

@@ -407,3 +407,38 @@ fn an_mjcf_body_without_inertial_weighs_every_geom_and_includes_mujocoinclude() 
         c.properties.mass
     );
 }
+
+/// What the fuzz target does with an input (`fuzz/fuzz_targets/robot.rs`), shared with it.
+#[path = "../../../fuzz/fuzz_targets/robot_common.rs"]
+mod fuzz_target;
+
+#[test]
+fn the_fuzz_seeds_read_audit_and_fix_again() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz/seeds/robot");
+    let mut n = 0;
+    for entry in std::fs::read_dir(&dir).expect("the seeds") {
+        let text = std::fs::read_to_string(entry.expect("entry").path()).expect("text");
+        fuzz_target::audit_and_fix(&text);
+        n += 1;
+    }
+    assert!(n >= 2);
+}
+
+#[test]
+fn a_shared_tensor_is_a_placeholder_only_between_links_that_have_geometry() {
+    // As jvrc1's hip links: one tensor on links without any geometry says nothing of shapes.
+    let urdf = r#"<robot name="j">
+  <link name="a"><inertial><mass value="1"/><inertia ixx="0.0123" ixy="0" ixz="0" iyy="0.0234" iyz="0" izz="0.0345"/></inertial></link>
+  <link name="b"><inertial><mass value="1"/><inertia ixx="0.0123" ixy="0" ixz="0" iyy="0.0234" iyz="0" izz="0.0345"/></inertial></link>
+  <joint name="j" type="revolute"><parent link="a"/><child link="b"/></joint>
+</robot>"#;
+    let robot = read_str(urdf, Path::new("j.urdf"), &ReadOptions::default()).expect("read");
+    let report = audit(&robot, &AuditOptions::default());
+    for l in &report.links {
+        assert!(
+            !codes(&l.findings).contains(&"placeholder"),
+            "{:?}",
+            l.findings
+        );
+    }
+}

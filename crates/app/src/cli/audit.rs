@@ -17,7 +17,7 @@ use serde_json::{Value, json};
 
 use super::error::{CliError, positive};
 use super::repair::RepairArgs;
-use super::report::significant;
+use super::report::{significant, warning_text};
 use crate::export::{self, TENSOR_CONVENTION};
 use crate::findings::{finding_text, unweighed_text};
 
@@ -396,7 +396,12 @@ fn table(file: &str, robot: &Robot, report: &Audit) -> String {
             let _ = writeln!(s, "    not weighed: {}", unweighed_text(why, kind));
         }
         for f in &l.findings {
-            let _ = writeln!(s, "    [{}] {}", f.code(), finding_text(f, kind));
+            let _ = writeln!(
+                s,
+                "    [{}] {}",
+                f.code(),
+                finding_text(f, kind, |w| warning_text(w, &[]))
+            );
         }
     }
     if !robot.unsupported.is_empty() {
@@ -444,7 +449,8 @@ fn region_name(region: robot::Region) -> &'static str {
 /// The finding as `{code, message, …its evidence}`.
 fn finding_json(f: &robot::Finding, kind: &str) -> Value {
     use robot::Finding as F;
-    let mut v = json!({"code": f.code(), "message": finding_text(f, kind)});
+    let mut v =
+        json!({"code": f.code(), "message": finding_text(f, kind, |w| warning_text(w, &[]))});
     let evidence = match f {
         F::MissingInertial { moving } => json!({"moving": moving}),
         F::NonpositiveMass { mass } => json!({"mass": mass}),

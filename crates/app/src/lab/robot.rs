@@ -195,14 +195,16 @@ fn round(radii: Vector3<f64>, half_length: f64) -> PolyMesh {
     let mut ring_angles: Vec<(f64, f64)> = Vec::new();
     for i in 1..rings {
         let theta = std::f64::consts::PI * i as f64 / rings as f64;
-        let shift = if theta < std::f64::consts::FRAC_PI_2 {
-            half_length
-        } else {
-            -half_length
-        };
-        ring_angles.push((theta, shift));
-        if half_length > 0.0 && i == rings / 2 {
-            ring_angles.push((theta, -half_length));
+        match (2 * i).cmp(&rings) {
+            std::cmp::Ordering::Less => ring_angles.push((theta, half_length)),
+            std::cmp::Ordering::Greater => ring_angles.push((theta, -half_length)),
+            // The equator: once for an ellipsoid, at both ends of a capsule's cylinder.
+            std::cmp::Ordering::Equal => {
+                ring_angles.push((theta, half_length));
+                if half_length > 0.0 {
+                    ring_angles.push((theta, -half_length));
+                }
+            }
         }
     }
     for &(theta, shift) in &ring_angles {

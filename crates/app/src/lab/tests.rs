@@ -727,3 +727,64 @@ fn hiding_a_part_is_drawn_again_and_the_last_shown_part_stays() {
     let c = lab.primary().body().composition.clone().expect("parts");
     assert!(!c.parts[0].visible && c.parts[1].visible);
 }
+
+/// The vendored pybullet Panda (tests/data/robots).
+fn panda() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tests/data/robots/franka_panda/panda.urdf")
+}
+
+#[test]
+fn a_robot_link_spins_beside_a_copy_with_its_stated_inertia() {
+    let mut lab = lab();
+    lab.apply(Command::LoadFile(panda()));
+    lab.wait_for_load();
+    let robot = lab.robot().expect("a robot is loaded");
+    assert_eq!(robot.robot.links.len(), 13);
+    assert_eq!(robot.shown, None);
+    // The whole robot: every link with collision geometry, each with its two ellipsoids.
+    assert_eq!(lab.primary().body().links.len(), 13);
+    assert!(lab.primary().body().stated.is_none());
+    assert!(lab.is_paused(), "the zero pose stands still");
+
+    let finger = robot
+        .robot
+        .links
+        .iter()
+        .position(|l| l.name == "panda_leftfinger")
+        .expect("finger");
+    let computed = robot.audit.links[finger].computed.clone().expect("weighed");
+    lab.apply(lab.link_named("panda_leftfinger"));
+    assert!(
+        lab.message().is_some_and(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    // The body is the audit's: the stated 0.1 kg with the geometry's exact moments.
+    let exact = lab.primary().properties(InertiaSource::Exact);
+    assert_eq!(exact.mass, 0.1);
+    assert!((exact.principal.moments - computed.properties.principal.moments).amax() < 1e-18);
+    // The stated source: diag(0.1, 0.1, 0.1), simulated by the copy beside it.
+    let stated = *lab.primary().properties(InertiaSource::Stated);
+    assert!((stated.principal.moments.add_scalar(-0.1)).amax() < 1e-15);
+    assert_eq!(lab.specimens().len(), 2);
+    assert_eq!(
+        lab.specimens()[1].variant(),
+        Variant::Source(InertiaSource::Stated)
+    );
+    assert!(!lab.is_paused());
+    run(&mut lab, 10);
+    assert_eq!(
+        lab.specimens()[1].used_properties().principal.moments,
+        stated.principal.moments
+    );
+
+    // Back to the whole robot: the stated copy goes (the whole states nothing).
+    lab.apply(Command::ShowLink(None));
+    assert_eq!(lab.specimens().len(), 1);
+    let unknown = lab.link_named("no_such_link");
+    assert!(matches!(
+        unknown,
+        Command::Notify(Message { error: true, .. })
+    ));
+}

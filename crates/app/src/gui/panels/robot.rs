@@ -81,9 +81,11 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
                     let color = if f.severity() == 0 { PROOF } else { OTHER };
                     ui.add(
                         egui::Label::new(
-                            RichText::new(finding_text(f, "collision"))
-                                .small()
-                                .color(color),
+                            RichText::new(finding_text(f, "collision", |w| {
+                                crate::gui::warnings::warning_text(w, &[])
+                            }))
+                            .small()
+                            .color(color),
                         )
                         .wrap(),
                     );
