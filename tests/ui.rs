@@ -478,3 +478,51 @@ fn every_symbol_the_gui_writes_has_a_glyph() {
     }
     assert!(missing.is_empty(), "no glyph for {missing:?}");
 }
+
+#[test]
+fn a_robot_opens_from_the_path_field_and_a_link_chosen_in_its_section_spins_beside_its_stated_copy()
+{
+    let panda = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tests/data/robots/franka_panda/panda.urdf");
+    let mut h = harness();
+    frames(&mut h, 2);
+    h.get_by_label("Path").focus();
+    h.get_by_label("Path")
+        .type_text(&panda.display().to_string());
+    frames(&mut h, 1);
+    h.get_by_label("Load").click();
+    for _ in 0..1000 {
+        frames(&mut h, 1);
+        if h.state().lab().robot().is_some() {
+            break;
+        }
+    }
+    assert!(
+        h.state().lab().robot().is_some(),
+        "{:?}",
+        h.state().lab().message()
+    );
+    frames(&mut h, 2);
+    assert!(h.query_by_label_contains("13 links").is_some());
+    // The finger's row names its findings; clicking it makes it the body.
+    h.get_by_label_contains("panda_leftfinger").click();
+    frames(&mut h, 3);
+    let lab = h.state().lab();
+    assert_eq!(
+        lab.robot()
+            .and_then(|r| r.shown)
+            .map(|i| lab.robot().map(|r| r.robot.links[i].name.clone())),
+        Some(Some("panda_leftfinger".to_owned()))
+    );
+    assert_eq!(lab.specimens().len(), 2, "the stated copy beside it");
+    assert_eq!(
+        lab.specimens()[1].variant(),
+        Variant::Source(InertiaSource::Stated)
+    );
+    // The table shows the stated column, and the finding's words are on screen.
+    assert!(h.query_by_label("stated").is_some());
+    assert!(
+        h.query_by_label_contains("A proof, not an estimate")
+            .is_some()
+    );
+}

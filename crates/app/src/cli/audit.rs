@@ -221,6 +221,19 @@ fn write_fix(
                 continue;
             }
         };
+        let link = &robot.links[l.link];
+        let file = link
+            .stated
+            .as_ref()
+            .map_or(link.element.file, |s| s.span.file);
+        if file != 0 {
+            eprintln!(
+                "warning: link {name:?} is not fixed: it is written in {}, which the description \
+                 includes (fix that file, or copy the body into the model)",
+                robot.sources[file].path.display()
+            );
+            continue;
+        }
         let element = export::inertial_element(&c.properties, format)
             .map_err(|e| CliError::Input(format!("link {name:?}: {e}")))?;
         let comment = fix_comment(robot, l, c, kind);
