@@ -222,17 +222,19 @@ mod tests {
             radius: 0.1,
             half_length: 0.02,
         };
-        let across = farthest_from_line(&wheel, &Point3::origin(), &Vector3::x()).unwrap();
+        let across =
+            farthest_from_line(&wheel, &Point3::origin(), &Vector3::x()).expect("a primitive");
         assert!(
             (across - (0.01f64 + 0.0004).sqrt()).abs() < 1e-15,
             "{across}"
         );
-        let along = farthest_from_line(&wheel, &Point3::origin(), &Vector3::z()).unwrap();
+        let along =
+            farthest_from_line(&wheel, &Point3::origin(), &Vector3::z()).expect("a primitive");
         assert!((along - 0.1).abs() < 1e-15);
         // An oblique line: still above every sampled rim point's distance.
         let d = Vector3::new(1.0, 2.0, 3.0).normalize();
         let p = Point3::new(0.05, -0.3, 0.1);
-        let bound = farthest_from_line(&wheel, &p, &d).unwrap();
+        let bound = farthest_from_line(&wheel, &p, &d).expect("a primitive");
         let worst = (0..3600)
             .flat_map(|k| {
                 let t = std::f64::consts::TAU * k as f64 / 3600.0;

@@ -30,16 +30,11 @@ pub struct RobotModel {
 
 /// Whether `path` names a robot description (URDF, or an MJCF model) rather than a mesh.
 pub fn is_description(path: &Path) -> bool {
-    match path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
-        Some("urdf") => true,
-        Some("xml" | "mjcf") => true,
-        _ => false,
-    }
+    let extension = path.extension().and_then(|e| e.to_str());
+    matches!(
+        extension.map(str::to_ascii_lowercase).as_deref(),
+        Some("urdf" | "xml" | "mjcf")
+    )
 }
 
 /// Reads and audits the description at `path`, and the body of the whole robot.

@@ -216,7 +216,7 @@ fn link_ellipsoids(o: &mut Overlay, c: &Context<'_>) {
                 let (j, l) = ((a + 1) % 3, (a + 2) % 3);
                 2.5 * (i[j] + i[l] - i[a]) / p.mass
             });
-            if p.mass <= 0.0 || squared.iter().any(|&x| !(x > 0.0)) {
+            if p.mass <= 0.0 || squared.iter().any(|&x| x.is_nan() || x <= 0.0) {
                 continue;
             }
             let half = squared.map(f64::sqrt);
