@@ -503,9 +503,12 @@ fn a_robot_opens_from_the_path_field_and_a_link_chosen_in_its_section_spins_besi
         h.state().lab().message()
     );
     frames(&mut h, 2);
-    assert!(h.query_by_label_contains("13 links").is_some());
+    assert!(
+        h.query_by_label_contains("13 links, 13 with findings on their stated inertia")
+            .is_some()
+    );
     // The finger's row names its findings; clicking it makes it the body.
-    h.get_by_label_contains("panda_leftfinger").click();
+    h.get_by_label_contains("panda_leftfinger  0.1 kg").click();
     frames(&mut h, 3);
     let lab = h.state().lab();
     assert_eq!(
@@ -520,7 +523,8 @@ fn a_robot_opens_from_the_path_field_and_a_link_chosen_in_its_section_spins_besi
         Variant::Source(InertiaSource::Stated)
     );
     // The table shows the stated column, and the finding's words are on screen.
-    assert!(h.query_by_label("stated").is_some());
+    // The table's column and the "Simulation uses" choice.
+    assert_eq!(h.get_all_by_label("stated").count(), 2);
     assert!(
         h.query_by_label_contains("A proof, not an estimate")
             .is_some()
