@@ -92,6 +92,14 @@ fn the_pybullet_panda_placeholders_are_proved_impossible_with_the_bound() {
         let message = f["message"].as_str().expect("present");
         assert!(message.contains("proof"), "{message}");
     }
+    // The table names the angles between the principal axes both ways (free where the stated
+    // moments are equal, as all the Panda's are).
+    let table = run(&["audit", PANDA]);
+    let text = String::from_utf8_lossy(&table.stdout);
+    assert!(
+        text.contains("between their principal axes 1, 2, 3: free, free, free"),
+        "{text}"
+    );
     // The fingers' uniform-density moments: 7e-6 … 2.6e-5 kg·m² (over 3 800× less than 0.1).
     let finger = &link(&report, "panda_leftfinger")["computed"];
     let moments = f64s(&finger["principal_moments"]);

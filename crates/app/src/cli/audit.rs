@@ -405,6 +405,19 @@ fn table(file: &str, robot: &Robot, report: &Audit) -> String {
                 num(c.properties.principal.moments.z),
                 basis_text(c)
             );
+            if let Some(cmp) = &l.comparison {
+                let angles: Vec<String> = cmp
+                    .axis_angles
+                    .iter()
+                    .map(|a| a.map_or("free".to_owned(), |a| format!("{:.1} deg", a.to_degrees())))
+                    .collect();
+                let _ = writeln!(
+                    s,
+                    "    between their principal axes 1, 2, 3: {} (free: equal moments leave \
+                     the axis free)",
+                    angles.join(", ")
+                );
+            }
         } else if let Err(why) = &l.computed {
             let _ = writeln!(s, "    not weighed: {}", unweighed_text(why, kind));
         }
