@@ -8,7 +8,6 @@ use std::time::Instant;
 
 use clap::{Args, ValueEnum};
 use massprops::MassProperties;
-use nalgebra::{Matrix3, Point3, Vector3};
 use robot::fix::{Replacement, splice};
 use robot::{
     Audit, AuditOptions, Format, GeometryKind, LinkAudit, MassBasis, ReadOptions, Robot, audit,
@@ -17,6 +16,7 @@ use serde_json::{Value, json};
 
 use super::error::{CliError, positive};
 use super::repair::RepairArgs;
+use super::report::json::{point, rows, vector};
 use super::report::{significant, warning_text};
 use crate::export::{self, TENSOR_CONVENTION};
 use crate::findings::{finding_text, unweighed_text};
@@ -437,22 +437,6 @@ fn table(file: &str, robot: &Robot, report: &Audit) -> String {
         }
     }
     s
-}
-
-fn rows(m: &Matrix3<f64>) -> Value {
-    json!([
-        [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
-        [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
-        [m[(2, 0)], m[(2, 1)], m[(2, 2)]]
-    ])
-}
-
-fn point(p: &Point3<f64>) -> Value {
-    json!([p.x, p.y, p.z])
-}
-
-fn vector(v: &Vector3<f64>) -> Value {
-    json!([v.x, v.y, v.z])
 }
 
 fn properties_json(p: &MassProperties) -> Value {

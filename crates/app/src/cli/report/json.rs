@@ -20,7 +20,8 @@ use crate::export::TENSOR_CONVENTION;
 /// `stl_triangle_count`; `overlapping_shells` has `uncompared_bound`.
 pub const SCHEMA_VERSION: u32 = 4;
 
-fn rows(m: &Matrix3<f64>) -> Value {
+/// A 3×3 matrix as JSON rows.
+pub(crate) fn rows(m: &Matrix3<f64>) -> Value {
     json!([
         [m[(0, 0)], m[(0, 1)], m[(0, 2)]],
         [m[(1, 0)], m[(1, 1)], m[(1, 2)]],
@@ -28,11 +29,13 @@ fn rows(m: &Matrix3<f64>) -> Value {
     ])
 }
 
-fn point(p: &Point3<f64>) -> Value {
+/// A point as `[x, y, z]`.
+pub(crate) fn point(p: &Point3<f64>) -> Value {
     json!([p.x, p.y, p.z])
 }
 
-fn vector(v: &Vector3<f64>) -> Value {
+/// A vector as `[x, y, z]`.
+pub(crate) fn vector(v: &Vector3<f64>) -> Value {
     json!([v.x, v.y, v.z])
 }
 

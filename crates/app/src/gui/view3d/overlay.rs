@@ -228,20 +228,8 @@ fn link_ellipsoids(o: &mut Overlay, c: &Context<'_>) {
                 continue;
             }
             let axes = p.principal.rotation;
-            let n = 32;
-            for plane in 0..3 {
-                let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
-                let point = |s: usize| {
-                    let t = std::f64::consts::TAU * s as f64 / n as f64;
-                    let mut q = Vector3::zeros();
-                    q[u] = half[u] * t.cos();
-                    q[v] = half[v] * t.sin();
-                    c.placement.to_world(&(p.center_of_mass + axes * q))
-                };
-                for k in 0..n {
-                    o.line(point(k), point(k + 1), color, 1.0);
-                }
-            }
+            let to_world = |q: Vector3<f64>| c.placement.to_world(&(p.center_of_mass + axes * q));
+            principal_sections(o, &half, to_world, 32, color, 1.0);
         }
     }
     if too_large > 0 {
@@ -381,6 +369,31 @@ fn principal_axes(o: &mut Overlay, c: &Context<'_>) {
     }
 }
 
+/// An ellipsoid of semi-axes `half` as its three principal sections, `n` segments each, its
+/// principal-frame points placed by `to_world`.
+fn principal_sections(
+    o: &mut Overlay,
+    half: &Vector3<f64>,
+    to_world: impl Fn(Vector3<f64>) -> Point3<f64>,
+    n: usize,
+    color: Color32,
+    width: f32,
+) {
+    for plane in 0..3 {
+        let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
+        let point = |s: usize| {
+            let t = std::f64::consts::TAU * s as f64 / n as f64;
+            let mut p = Vector3::zeros();
+            p[u] = half[u] * t.cos();
+            p[v] = half[v] * t.sin();
+            to_world(p)
+        };
+        for s in 0..n {
+            o.line(point(s), point(s + 1), color, width);
+        }
+    }
+}
+
 /// The uniform box or ellipsoid with the same mass and principal moments.
 fn equivalent(o: &mut Overlay, c: &Context<'_>) {
     if c.view.equivalent == Equivalent::None {
@@ -415,20 +428,7 @@ fn equivalent(o: &mut Overlay, c: &Context<'_>) {
         }
         return;
     }
-    let n = 48;
-    for plane in 0..3 {
-        let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
-        let point = |s: usize| {
-            let t = std::f64::consts::TAU * s as f64 / n as f64;
-            let mut p = Vector3::zeros();
-            p[u] = half[u] * t.cos();
-            p[v] = half[v] * t.sin();
-            to_world(p)
-        };
-        for s in 0..n {
-            o.line(point(s), point(s + 1), EQUIVALENT_COLOR, 1.5);
-        }
-    }
+    principal_sections(o, &half, to_world, 48, EQUIVALENT_COLOR, 1.5);
     o.labels.push(Label {
         at: to_world(Vector3::new(half[0], 0.0, 0.0)),
         text: "equivalent ellipsoid".to_owned(),
