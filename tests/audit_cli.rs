@@ -263,6 +263,7 @@ const MJCF: &str = r#"<mujoco model="shapes">
       <geom type="sphere" size="0.07" pos="-0.2 0 0" mass="1.5"/>
       <geom type="ellipsoid" size="0.05 0.08 0.12" pos="0 -0.2 0.1" quat="0.9 0.1 0.3 0.2"/>
       <geom type="capsule" size="0.02" fromto="0 0 0.2 0.1 0.1 0.3" contype="0" conaffinity="0"/>
+      <geom type="sphere" size="0.05" pos="0 0 -0.3" group="6"/>
     </body>
     <body name="placeholder" pos="2 0 0">
       <freejoint/>

@@ -11,9 +11,11 @@
 //! radii) and `fromto` (the axis from one point to another); `mass` overrides `density`
 //! (default 1000); mesh files relative to `compiler/meshdir` (else `assetdir`) beside the model;
 //! a default class inherits from its parent, and an element takes `class`, else the nearest
-//! `childclass` above it, else `main`. What can change masses and is not modelled here (height
-//! fields, planes, primitives fitted to meshes, shell inertia, flexes, composites, replicate and
-//! attach, the compiler's mass-changing options) is listed in [`Robot::unsupported`].
+//! `childclass` above it, else `main`; a body without `<inertial>` is weighed from the geoms of
+//! `compiler/inertiagrouprange` (default groups 0 to 5) only. What can change masses and is not
+//! modelled here (height fields, planes, primitives fitted to meshes, shell inertia, flexes,
+//! composites, replicate and attach, the compiler's mass-changing options) is listed in
+//! [`Robot::unsupported`].
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -137,6 +139,8 @@ struct Compiler {
     assetdir: Option<String>,
     eulerseq: [u8; 3],
     inertia_from_geoms: bool,
+    /// Geoms of groups outside this range give a body no mass (`inertiagrouprange`).
+    inertia_groups: (f64, f64),
 }
 
 impl Default for Compiler {
@@ -147,6 +151,7 @@ impl Default for Compiler {
             assetdir: None,
             eulerseq: *b"xyz",
             inertia_from_geoms: false,
+            inertia_groups: (0.0, 5.0),
         }
     }
 }
@@ -207,6 +212,9 @@ impl Reader {
                 return Err(e.bad("eulerseq", s, "must be three of x y z X Y Z"));
             }
             self.compiler.eulerseq = [bytes[0], bytes[1], bytes[2]];
+        }
+        if let Some([lo, hi]) = e.numbers::<2>("inertiagrouprange")? {
+            self.compiler.inertia_groups = (lo, hi);
         }
         if let Some(v) = e.get("inertiafromgeom") {
             self.compiler.inertia_from_geoms = v == "true";
@@ -598,6 +606,14 @@ impl Reader {
             (Some(m), _) => GeometryMass::Mass(m),
             (None, Some(d)) => GeometryMass::Density(d),
             (None, None) => GeometryMass::Density(1000.0),
+        };
+        // MuJoCo weighs only the geoms of `inertiagrouprange` when it infers a body's inertia.
+        let group = e.number("group")?.unwrap_or(0.0);
+        let (lo, hi) = self.compiler.inertia_groups;
+        let mass = if (lo..=hi).contains(&group) {
+            mass
+        } else {
+            GeometryMass::Mass(0.0)
         };
         let contype = e.number("contype")?.unwrap_or(1.0);
         let conaffinity = e.number("conaffinity")?.unwrap_or(1.0);
