@@ -393,6 +393,7 @@ fn analyze_diagnosed(
         scale,
     );
     if let Some(solid) = &checked_solid {
+        caps_within(&warnings, repairs.max_cap_share)?;
         crate::laws::check(solid, mesh, &warnings)?;
     }
     Ok(Analysis {
@@ -458,6 +459,26 @@ pub(crate) fn check_range(size: f64, method: Method, spec: MassSpec) -> Result<(
         MassSpec::Density(_) => "express the mesh in other units, or use another density",
     };
     out_of("inertia", mass * size * size, RESULT_RANGE, advice)
+}
+
+/// Refuses a solid whose caps make more than `max_share` of its closed surface.
+fn caps_within(warnings: &[Warning], max_share: f64) -> Result<(), MeshError> {
+    for w in warnings {
+        if let Defect::HolesCapped {
+            cap_area_fraction, ..
+        } = w.defect
+        {
+            let share = cap_area_fraction / (1.0 + cap_area_fraction);
+            if share > max_share {
+                return Err(MeshError::CapsTooLarge {
+                    share,
+                    threshold: max_share,
+                    holes: w.count,
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Replaces a zero-volume error's generic cause by what the diagnostics found: a mesh with

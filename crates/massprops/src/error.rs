@@ -100,6 +100,24 @@ pub enum MeshError {
         /// Some faces on the holes' edges (zero-based).
         faces: Vec<usize>,
     },
+    /// The caps that would close the holes make too much of the closed surface
+    /// ([`Repairs::max_cap_share`](crate::Repairs)).
+    #[error(
+        "its {holes} hole(s) would be closed by caps that make {:.1} % of the closed surface \
+         (at most {:.1} % is allowed): the volume would be more the caps' than the file's. It is a \
+         sheet, a terrain or a mesh with large parts missing: use the shell method for its mass, \
+         or allow larger caps",
+        share * 100.0,
+        threshold * 100.0
+    )]
+    CapsTooLarge {
+        /// caps / (surface + caps).
+        share: f64,
+        /// The largest share allowed.
+        threshold: f64,
+        /// How many holes.
+        holes: usize,
+    },
     /// A part of a composite body cannot be used.
     #[error("part \"{part}\": {source}")]
     InPart {

@@ -735,3 +735,61 @@ fn an_open_mesh_under_the_shell_method_has_no_volume() {
     assert_rel(closed.volume.expect("closed"), 1.0, 1e-14, "closed box");
     assert_rel(closed.properties.mass, 6.0, 1e-14, "six faces");
 }
+
+/// A unit cube with only the faces `kept` (of x−, x+, y−, y+, z−, z+), wound outward.
+fn cube_with(kept: &[usize]) -> massprops::PolyMesh {
+    let p: Vec<nalgebra::Point3<f64>> = (0..8)
+        .map(|i| nalgebra::Point3::new((i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64))
+        .collect();
+    let faces: [[usize; 4]; 6] = [
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+    ];
+    let chosen: Vec<[usize; 4]> = kept.iter().map(|&k| faces[k]).collect();
+    massprops::PolyMesh::new(p, &chosen).expect("valid")
+}
+
+#[test]
+fn caps_larger_than_the_surface_they_close_are_refused_unless_allowed() {
+    use massprops::{MeshError, analyze_with};
+    let spec = MassSpec::Density(1.0);
+    // One face missing: its cap is 1/6 of the closed surface; the cube comes back whole.
+    let a = analyze_with(
+        &cube_with(&[0, 1, 2, 3, 4]),
+        Method::Volume,
+        spec,
+        &Repairs::default(),
+    )
+    .expect("capped");
+    assert!((a.volume.expect("volume") - 1.0).abs() < 1e-12);
+    // A band: the four sides of a box 0.1 tall, top and bottom missing. Its caps (2 m²) are
+    // 2 / 2.4 of the closed surface.
+    let fold = cube_with(&[0, 1, 2, 3])
+        .map_positions(|p| nalgebra::Point3::new(p.x, p.y, 0.1 * p.z))
+        .expect("valid");
+    let e = analyze_with(&fold, Method::Volume, spec, &Repairs::default()).expect_err("refused");
+    match e {
+        MeshError::CapsTooLarge {
+            share,
+            threshold,
+            holes,
+        } => {
+            assert!((share - 2.0 / 2.4).abs() < 1e-12, "{share}");
+            assert_eq!(threshold, 0.5);
+            assert_eq!(holes, 2);
+        }
+        other => panic!("{other:?}"),
+    }
+    let allowed = Repairs {
+        max_cap_share: 1.0,
+        ..Default::default()
+    };
+    let capped = analyze_with(&fold, Method::Volume, spec, &allowed).expect("allowed");
+    assert!((capped.volume.expect("volume") - 0.1).abs() < 1e-12);
+    // The shell method needs no caps.
+    assert!(analyze_with(&fold, Method::Shell, spec, &Repairs::default()).is_ok());
+}

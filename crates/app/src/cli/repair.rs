@@ -29,6 +29,11 @@ pub struct RepairArgs {
     /// What to do with holes (for the volume and for approximations at a given density).
     #[arg(long, value_enum, default_value_t = HolesArg::Cap)]
     pub holes: HolesArg,
+    /// With --holes cap: the largest share of the closed surface the caps may make, caps /
+    /// (surface + caps); a mesh whose caps make more is refused (a sheet, a terrain, a mesh with
+    /// large parts missing). 1 caps anything.
+    #[arg(long, default_value_t = massprops::defects::MAX_CAP_SHARE, value_name = "SHARE")]
+    pub max_cap_share: f64,
 }
 
 impl RepairArgs {
@@ -50,9 +55,16 @@ impl RepairArgs {
             HolesArg::Cap => Holes::Cap,
             HolesArg::Refuse => Holes::Refuse,
         };
+        if !(self.max_cap_share > 0.0 && self.max_cap_share <= 1.0) {
+            return Err(CliError::Usage(format!(
+                "--max-cap-share takes a share above 0 and at most 1, not {}",
+                self.max_cap_share
+            )));
+        }
         Ok(Repairs {
             weld,
             holes,
+            max_cap_share: self.max_cap_share,
             ..Repairs::default()
         })
     }

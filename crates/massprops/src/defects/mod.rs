@@ -58,7 +58,18 @@ pub struct Repairs {
     /// short. A count of work, not a time, so that the same file gives the same result on any
     /// machine at any load. Default [`OVERLAP_BUDGET`].
     pub overlap_budget: u64,
+    /// The largest share of the closed surface that caps may make, caps / (surface + caps):
+    /// a capped solid whose caps make more is refused ([`MeshError::CapsTooLarge`]), since its
+    /// volume would be more the caps' than the file's (a sheet, a terrain, a mesh with large
+    /// parts missing). Judged after the volume, so a sheet that encloses nothing even capped
+    /// is still named a sheet. Default [`MAX_CAP_SHARE`].
+    pub max_cap_share: f64,
 }
+
+/// The default [`Repairs::max_cap_share`]: caps larger than the surface they close are refused.
+/// Of 4 083 OBJ and STL meshes in robot packages on PyPI, 755 have holes; half of those have caps
+/// under 3.3 % of their surface, and 74 caps larger than it.
+pub const MAX_CAP_SHARE: f64 = 0.5;
 
 impl Default for Repairs {
     fn default() -> Self {
@@ -66,6 +77,7 @@ impl Default for Repairs {
             weld: Weld::Auto,
             holes: Holes::Cap,
             overlap_budget: OVERLAP_BUDGET,
+            max_cap_share: MAX_CAP_SHARE,
         }
     }
 }
