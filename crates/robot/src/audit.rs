@@ -423,22 +423,6 @@ fn other_kind(kind: GeometryKind) -> GeometryKind {
     }
 }
 
-/// A link's computed mass properties from its geometry of `kind` (for the app, which weighs
-/// one link at a time).
-pub fn weigh(
-    link: &Link,
-    meshes: &Meshes,
-    format: Format,
-    options: &AuditOptions,
-) -> Result<Computed, Unweighed> {
-    let ready: Vec<Ready<'_>> = link
-        .geometry(options.geometry)
-        .iter()
-        .map(|g| geometry::ready(g, meshes))
-        .collect();
-    computed(link, &ready, format, options)
-}
-
 fn audit_link(
     robot: &Robot,
     i: usize,

@@ -39,7 +39,7 @@ use std::path::{Path, PathBuf};
 
 pub use audit::{
     Audit, AuditOptions, Comparison, Computed, Finding, ImpossibleAxis, LinkAudit, MassBasis,
-    PLAUSIBLE_DENSITY, PlaceholderReason, Region, Unweighed, audit, weigh,
+    PLAUSIBLE_DENSITY, PlaceholderReason, Region, Unweighed, audit,
 };
 pub use error::{Location, RobotError};
 pub use model::{

@@ -236,7 +236,7 @@ fn write_fix(
         }
         let element = export::inertial_element(&c.properties, format)
             .map_err(|e| CliError::Input(format!("link {name:?}: {e}")))?;
-        let comment = fix_comment(robot, l, c, kind);
+        let comment = fix_comment(robot, l, c, report.options.geometry);
         replacements.push(Replacement {
             link: l.link,
             text: format!("{comment}\n{element}"),
@@ -256,14 +256,16 @@ fn write_fix(
 }
 
 /// The comment above a fixed inertial: where its numbers came from, and what was there.
-fn fix_comment(robot: &Robot, l: &LinkAudit, c: &robot::Computed, kind: &str) -> String {
+fn fix_comment(
+    robot: &Robot,
+    l: &LinkAudit,
+    c: &robot::Computed,
+    geometry: GeometryKind,
+) -> String {
+    let kind = geometry.name();
     let link = &robot.links[l.link];
     let shapes: Vec<String> = link
-        .geometry(if kind == "visual" {
-            GeometryKind::Visual
-        } else {
-            GeometryKind::Collision
-        })
+        .geometry(geometry)
         .iter()
         .map(|g| g.shape.label())
         .collect();

@@ -211,11 +211,7 @@ fn link_ellipsoids(o: &mut Overlay, c: &Context<'_>) {
             (&mark.stated, STATED_LINK_COLOR),
         ] {
             let Some(p) = p else { continue };
-            let i = p.principal.moments;
-            let squared = Vector3::from_fn(|a, _| {
-                let (j, l) = ((a + 1) % 3, (a + 2) % 3);
-                2.5 * (i[j] + i[l] - i[a]) / p.mass
-            });
+            let squared = uniform_half_squared(ELLIPSOID, p.mass, &p.principal.moments);
             if p.mass <= 0.0 || squared.iter().any(|&x| x.is_nan() || x <= 0.0) {
                 continue;
             }
@@ -369,6 +365,21 @@ fn principal_axes(o: &mut Overlay, c: &Context<'_>) {
     }
 }
 
+/// `k` of [`uniform_half_squared`] for a box: I₁ = m(b² + c²)/3 for half-extents a, b, c.
+const BOX: f64 = 1.5;
+/// `k` for an ellipsoid: I₁ = m(b² + c²)/5 for semi-axes a, b, c.
+const ELLIPSOID: f64 = 2.5;
+
+/// The squared half-extents (semi-axes) of the uniform box or ellipsoid with mass `m` and
+/// principal `moments`: a² = k(I₂ + I₃ − I₁)/m and its turns; negative where no such body has
+/// them (moments that break the triangle inequality).
+fn uniform_half_squared(k: f64, m: f64, moments: &Vector3<f64>) -> Vector3<f64> {
+    Vector3::from_fn(|a, _| {
+        let (j, l) = ((a + 1) % 3, (a + 2) % 3);
+        k * (moments[j] + moments[l] - moments[a]) / m
+    })
+}
+
 /// An ellipsoid of semi-axes `half` as its three principal sections, `n` segments each, its
 /// principal-frame points placed by `to_world`.
 fn principal_sections(
@@ -400,19 +411,12 @@ fn equivalent(o: &mut Overlay, c: &Context<'_>) {
         return;
     }
     let body = c.specimen.sim().body();
-    let (m, i) = (body.mass(), body.moments());
-    // Half-extents of the uniform box and semi-axes of the uniform ellipsoid with the same mass
-    // and principal moments: I₁ = m(b² + c²)/3 for a box of half-extents a, b, c, I₁ = m(b² +
-    // c²)/5 for an ellipsoid.
     let k = if c.view.equivalent == Equivalent::Box {
-        1.5
+        BOX
     } else {
-        2.5
+        ELLIPSOID
     };
-    let half = Vector3::from_fn(|a, _| {
-        let (j, l) = ((a + 1) % 3, (a + 2) % 3);
-        (k * (i[j] + i[l] - i[a]) / m).max(0.0).sqrt()
-    });
+    let half = uniform_half_squared(k, body.mass(), &body.moments()).map(|x| x.max(0.0).sqrt());
     let principal = body.orientation();
     let to_world = |p: Vector3<f64>| c.com + principal * p;
     if c.view.equivalent == Equivalent::Box {
