@@ -157,6 +157,14 @@ pub enum Defect {
         volume: f64,
         /// One standard error of `volume` (of the sampling by lines).
         uncertainty: f64,
+        /// How many faces bound the doubly counted volume (the warning's `faces` are some).
+        crossing_faces: usize,
+        /// The volume counted more than once in all — within these shells and between
+        /// overlapping shells (`overlapping_shells`) — as a fraction of the mass, like
+        /// [`Warning::effect_on_mass`]: the sum of both warnings' effects.
+        total_effect: f64,
+        /// One standard error of `total_effect`, as the same fraction.
+        total_uncertainty: f64,
     },
     /// A closed shell whose winding disagrees with its depth: wound outward inside a solid (a
     /// cavity's wall wound the wrong way, or a part inside another), so its volume counts twice.
@@ -621,6 +629,15 @@ fn warnings(
     for warning in &mut w {
         if let Some(e) = &mut warning.effect_on_mass {
             *e /= scale;
+        }
+        if let Defect::SelfOverlappingShell {
+            total_effect,
+            total_uncertainty,
+            ..
+        } = &mut warning.defect
+        {
+            *total_effect /= scale;
+            *total_uncertainty /= scale;
         }
     }
     w.sort_by_key(|w| rank(w.code()));

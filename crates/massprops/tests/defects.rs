@@ -436,6 +436,61 @@ fn a_mesh_with_five_percent_of_its_faces_flipped_has_its_own_volume() {
     assert_eq!(codes(&a), ["inconsistent_winding"]);
 }
 
+/// The volume of the prism of `height` on the inner pentagon of a pentagram {5/2} of radius 1:
+/// (5/2) ρ² sin 72° with ρ = cos 72° / cos 36°.
+fn pentagram_overlap(height: f64) -> f64 {
+    let inner = 72f64.to_radians().cos() / 36f64.to_radians().cos();
+    height * 2.5 * inner * inner * 72f64.to_radians().sin()
+}
+
+fn pentagram(radius: f64, center: (f64, f64)) -> Vec<Point2<f64>> {
+    (0..5)
+        .map(|k| {
+            let angle = std::f64::consts::FRAC_PI_2 + (2 * k % 5) as f64 * 72f64.to_radians();
+            Point2::new(
+                center.0 + radius * angle.cos(),
+                center.1 + radius * angle.sin(),
+            )
+        })
+        .collect()
+}
+
+/// The a1 trunk of pybullet_data in miniature: a shell passing through itself (a pentagram
+/// prism) beside two boxes that overlap. The self-overlap warning states the volume counted
+/// twice in all, its own and the boxes' (closed forms: the inner pentagon's prism, and a
+/// 1 × 1 × 1 corner shared by two 2-cubes).
+#[test]
+fn the_self_overlap_warning_states_the_total_counted_twice_with_the_overlaps_between_shells() {
+    let height = 0.7;
+    let mut b = shapes::prism(&pentagram(1.0, (0.0, 0.0)), 0.0, height);
+    b.append(&cuboid(2.0, [5.0, 0.0, 0.0]));
+    b.append(&cuboid(2.0, [6.0, 1.0, 1.0]));
+    let a = volume(&b.build());
+    assert_eq!(codes(&a), ["overlapping_shells", "self_overlapping_shell"]);
+    let counted = a.volume.expect("v");
+    let own = pentagram_overlap(height);
+    let expected = (own + 1.0) / counted;
+    let w = warning(&a, "self_overlapping_shell");
+    let Defect::SelfOverlappingShell {
+        total_effect,
+        total_uncertainty,
+        ..
+    } = w.defect
+    else {
+        unreachable!("its code")
+    };
+    let between = warning(&a, "overlapping_shells")
+        .effect_on_mass
+        .expect("known");
+    let within = w.effect_on_mass.expect("known");
+    assert_rel(total_effect, between + within, 1e-15, "the sum of both");
+    assert!(
+        (total_effect - expected).abs() <= 4.0 * total_uncertainty
+            && total_uncertainty < 0.01 * expected,
+        "{total_effect} ± {total_uncertainty} vs {expected}"
+    );
+}
+
 /// A prism on a pentagram {5/2} is one closed, consistently wound shell that passes through
 /// itself: its outline winds twice around the central pentagon, so the volume method counts that
 /// pentagonal prism twice (the integral is the winding number's). It is named, with the volume
@@ -444,30 +499,33 @@ fn a_mesh_with_five_percent_of_its_faces_flipped_has_its_own_volume() {
 #[test]
 fn a_shell_that_passes_through_itself_is_named_with_the_volume_counted_twice() {
     let height = 0.7;
-    let star: Vec<Point2<f64>> = (0..5)
-        .map(|k| {
-            let angle = std::f64::consts::FRAC_PI_2 + (2 * k % 5) as f64 * 72f64.to_radians();
-            Point2::new(angle.cos(), angle.sin())
-        })
-        .collect();
-    let mesh = shapes::prism(&star, 0.0, height).build();
+    let mesh = shapes::prism(&pentagram(1.0, (0.0, 0.0)), 0.0, height).build();
     let a = volume(&mesh);
     let w = warning(&a, "self_overlapping_shell");
     let Defect::SelfOverlappingShell {
         ref shells,
         volume: doubled,
         uncertainty,
+        crossing_faces,
+        total_effect,
+        ..
     } = w.defect
     else {
         unreachable!("its code")
     };
     assert_eq!((w.count, shells.as_slice()), (1, [0].as_slice()));
-    let inner = 72f64.to_radians().cos() / 36f64.to_radians().cos();
-    let pentagon = 2.5 * inner * inner * 72f64.to_radians().sin();
-    let expected = height * pentagon;
+    let expected = pentagram_overlap(height);
     assert!(
-        (doubled - expected).abs() <= 5.0 * uncertainty + 0.02 * expected,
+        (doubled - expected).abs() <= 4.0 * uncertainty && uncertainty < 0.003 * expected,
         "{doubled} ± {uncertainty} vs {expected}"
+    );
+    // The vertical lines see the doubly counted prism through the star's top and bottom (the
+    // walls are parallel to them); the five walls bound it too but no line crosses them.
+    assert_eq!((crossing_faces, w.faces.as_slice()), (2, [0, 1].as_slice()));
+    assert_eq!(
+        total_effect,
+        w.effect_on_mass.expect("known"),
+        "nothing else"
     );
     // Counted as it is (the star's own area once, the pentagon again): the effect is the
     // pentagon's share of that.

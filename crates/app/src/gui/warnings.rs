@@ -104,12 +104,15 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
         Defect::SelfOverlappingShell {
             volume,
             uncertainty,
+            total_effect,
             ..
         } => format!(
             "A closed part passes through itself ({faces}): the volume where it does, about \
              {volume:.3e} ± {uncertainty:.1e} (mesh units cubed), is counted twice, so the mass \
-             shown is too high by that much. Remove the self-intersection (a boolean union of \
-             the part with itself) in your modelling program."
+             shown is too high by that much ({} with any overlap between parts). Remove the \
+             self-intersection (a boolean union of the part with itself) in your modelling \
+             program.",
+            percent(*total_effect)
         ),
         Defect::NestedShell { .. } => format!(
             "A closed part lies inside another and points outward ({faces}), so its volume counts \

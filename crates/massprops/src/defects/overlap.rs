@@ -7,7 +7,10 @@
 //! the cell area, estimate the common volume by stratified sampling across lines. The grid is
 //! drawn [`REPLICATES`] times with independent jitter; the spread of the replicate estimates gives
 //! the uncertainty (one standard error). A shell is inside another when its bounding box is, and
-//! no line finds a stretch of it outside the other.
+//! no line finds a stretch of it outside the other. A shell that passes through itself (winding
+//! number ±2 somewhere) is found on the coarse grid and then measured again on a grid
+//! [`FINE_CELLS`] on a side, whose crossings also name the faces that bound the doubly counted
+//! volume.
 
 use nalgebra::Point3;
 
@@ -20,6 +23,10 @@ use crate::diagnostics::EXAMPLES;
 const REPLICATES: usize = 4;
 /// Cells along each side of the grid, per replicate.
 const CELLS: usize = 32;
+/// Cells along each side of the grid that measures a shell found passing through itself: the
+/// doubly counted part is often a thin sliver, which the coarse grid finds but measures to only
+/// ±40 % (the a1 trunk of pybullet_data).
+const FINE_CELLS: usize = 128;
 /// Lengths along a line below this fraction of the bounding-box diagonal are round-off (a shell
 /// touching another's wall from inside).
 const LENGTH_TOLERANCE: f64 = 1e-9;
@@ -38,12 +45,14 @@ struct Overlap {
 
 /// A closed shell that passes through itself: where its winding number is ±2 or more, its
 /// volume counts more than once.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 struct SelfOverlap {
     shell: usize,
     /// The volume counted more than once (each extra time counted again).
     volume: f64,
     uncertainty: f64,
+    /// The shell's faces that bound the doubly counted volume (indices into the mesh), ascending.
+    faces: Vec<u32>,
 }
 
 /// What the comparison of the closed shells found.
@@ -108,20 +117,44 @@ impl Relations {
         let volume: f64 = self.selves.iter().map(|o| o.volume).sum();
         let variance: f64 = self.selves.iter().map(|o| o.uncertainty.powi(2)).sum();
         let effect: f64 = self.selves.iter().map(|o| o.volume * sign(o.shell)).sum();
+        let between = self.overlap_effect(sign);
+        let between_variance: f64 = self.overlaps.iter().map(|o| o.uncertainty.powi(2)).sum();
+        let mut faces: Vec<usize> = self
+            .selves
+            .iter()
+            .flat_map(|o| o.faces.iter().map(|&f| f as usize))
+            .collect();
+        faces.sort_unstable();
+        faces.dedup();
         Some(Warning {
             defect: Defect::SelfOverlappingShell {
                 shells: self.selves.iter().take(EXAMPLES).map(|o| o.shell).collect(),
                 volume,
                 uncertainty: variance.sqrt(),
+                crossing_faces: faces.len(),
+                total_effect: effect + between,
+                total_uncertainty: (variance + between_variance).sqrt(),
             },
             count: self.selves.len(),
-            faces: self
-                .selves
-                .iter()
-                .filter_map(|o| parts[o.shell].faces.first().map(|&f| f as usize))
-                .collect(),
+            faces: if faces.is_empty() {
+                self.selves
+                    .iter()
+                    .filter_map(|o| parts[o.shell].faces.first().map(|&f| f as usize))
+                    .collect()
+            } else {
+                faces
+            },
             effect_on_mass: Some(effect),
         })
+    }
+
+    /// The volume counted twice (removed twice, for cavities) between overlapping shells.
+    fn overlap_effect(&self, sign: &dyn Fn(usize) -> f64) -> f64 {
+        // Two solids count their common part twice; two cavities remove it twice.
+        self.overlaps
+            .iter()
+            .map(|o| o.volume * (sign(o.a) + sign(o.b)) / 2.0)
+            .sum()
     }
 
     /// The `overlapping_shells` warning, when shells overlap or the budget cut the comparison
@@ -133,12 +166,7 @@ impl Relations {
         }
         let volume: f64 = self.overlaps.iter().map(|o| o.volume).sum();
         let variance: f64 = self.overlaps.iter().map(|o| o.uncertainty.powi(2)).sum();
-        // Two solids count their common part twice; two cavities remove it twice.
-        let effect: f64 = self
-            .overlaps
-            .iter()
-            .map(|o| o.volume * (sign(o.a) + sign(o.b)) / 2.0)
-            .sum();
+        let effect = self.overlap_effect(sign);
         let faces = self
             .overlaps
             .iter()
@@ -170,6 +198,8 @@ impl Relations {
 /// One closed shell as triangles, with its bounding box.
 struct Solid {
     triangles: Vec<[Point3<f64>; 3]>,
+    /// The mesh face each triangle comes from.
+    faces: Vec<u32>,
     lo: Point3<f64>,
     hi: Point3<f64>,
 }
@@ -271,17 +301,16 @@ pub(crate) fn compare(
         let seed = ((closed[i] as u64) << 32) ^ closed[j] as u64;
         Some(probe(a, b, tolerance, seed))
     });
-    let selves: Vec<Option<(f64, f64)>> = each(own.len(), &|n| {
+    let selves: Vec<Option<SelfOverlap>> = each(own.len(), &|n| {
         let k = own[n];
         let solid = built[k].as_ref()?;
         probe_self(solid, tolerance, closed[k] as u64)
     });
     for (&k, found) in own.iter().zip(selves) {
-        if let Some((volume, uncertainty)) = found {
+        if let Some(found) = found {
             relations.selves.push(SelfOverlap {
                 shell: closed[k],
-                volume,
-                uncertainty,
+                ..found
             });
         }
     }
@@ -344,14 +373,21 @@ fn bounds(mesh: &PolyMesh, faces: &[u32]) -> (Point3<f64>, Point3<f64>) {
 /// The faces as fan triangles.
 fn triangles(mesh: &PolyMesh, faces: &[u32], (lo, hi): (Point3<f64>, Point3<f64>)) -> Solid {
     let mut triangles = Vec::new();
+    let mut from = Vec::new();
     let at = |i: u32| mesh.positions()[i as usize];
     for &f in faces {
         let face = mesh.face(f as usize);
         for w in face[1..].windows(2) {
             triangles.push([at(face[0]), at(w[0]), at(w[1])]);
+            from.push(f);
         }
     }
-    Solid { triangles, lo, hi }
+    Solid {
+        triangles,
+        faces: from,
+        lo,
+        hi,
+    }
 }
 
 /// What the lines through two shells found.
@@ -363,17 +399,17 @@ struct Probe {
     uncertainty: f64,
 }
 
-/// A crossing of a line with a face: the line, the height, and ±1 (the face's normal points up
-/// or down).
-type Crossing = (u32, f64, i8);
+/// A crossing of a line with a face: the line, the height, ±1 (the face's normal points up
+/// or down), and the face.
+type Crossing = (u32, f64, i8, u32);
 
 fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
     let lo = a.lo.sup(&b.lo);
     let hi = a.hi.inf(&b.hi);
-    let (dx, dy) = ((hi.x - lo.x) / CELLS as f64, (hi.y - lo.y) / CELLS as f64);
-    let lines = grid_lines(lo, dx, dy, seed);
-    let crossings_a = crossings(a, &lines, lo, dx, dy);
-    let crossings_b = crossings(b, &lines, lo, dx, dy);
+    let grid = Grid::new(lo, hi, CELLS);
+    let lines = grid.lines(seed);
+    let crossings_a = crossings(a, &lines, &grid);
+    let crossings_b = crossings(b, &lines, &grid);
     let mut both = [0.0; REPLICATES];
     let (mut a_only, mut b_only) = (false, false);
     let mut overlap_seen = false;
@@ -389,13 +425,12 @@ fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
             ib += 1;
         }
         let lengths = sweep(&crossings_a[start_a..ia], &crossings_b[start_b..ib]);
-        both[line as usize / (CELLS * CELLS)] += lengths.both;
+        both[line as usize / grid.per_replicate()] += lengths.both;
         overlap_seen |= lengths.both > tolerance;
         a_only |= lengths.a_only > tolerance;
         b_only |= lengths.b_only > tolerance;
     }
-    let cell = dx * dy;
-    let estimates = both.map(|l| l * cell);
+    let estimates = both.map(|l| l * grid.dx * grid.dy);
     let volume = estimates.iter().sum::<f64>() / REPLICATES as f64;
     let spread = estimates.iter().map(|e| (e - volume).powi(2)).sum::<f64>();
     let uncertainty = (spread / (REPLICATES * (REPLICATES - 1)) as f64).sqrt();
@@ -413,78 +448,119 @@ fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
     }
 }
 
-/// The vertical lines of [`REPLICATES`] jittered `CELLS × CELLS` grids over the cells of size
-/// `dx × dy` from `lo`, replicate by replicate (one point drawn in each cell).
-fn grid_lines(lo: Point3<f64>, dx: f64, dy: f64, seed: u64) -> Vec<(f64, f64)> {
-    let mut rng = SplitMix(seed);
-    (0..REPLICATES * CELLS * CELLS)
-        .map(|n| {
-            let cell = n % (CELLS * CELLS);
-            let (i, j) = (cell % CELLS, cell / CELLS);
-            (
-                lo.x + (i as f64 + rng.unit()) * dx,
-                lo.y + (j as f64 + rng.unit()) * dy,
-            )
-        })
-        .collect()
+/// [`REPLICATES`] jittered grids of `cells × cells` vertical lines over a box's footprint.
+struct Grid {
+    lo: Point3<f64>,
+    dx: f64,
+    dy: f64,
+    cells: usize,
+}
+
+impl Grid {
+    fn new(lo: Point3<f64>, hi: Point3<f64>, cells: usize) -> Self {
+        Self {
+            lo,
+            dx: (hi.x - lo.x) / cells as f64,
+            dy: (hi.y - lo.y) / cells as f64,
+            cells,
+        }
+    }
+
+    /// Lines per replicate.
+    fn per_replicate(&self) -> usize {
+        self.cells * self.cells
+    }
+
+    /// The lines, replicate by replicate (one point drawn in each cell).
+    fn lines(&self, seed: u64) -> Vec<(f64, f64)> {
+        let mut rng = SplitMix(seed);
+        (0..REPLICATES * self.per_replicate())
+            .map(|n| {
+                let cell = n % self.per_replicate();
+                let (i, j) = (cell % self.cells, cell / self.cells);
+                (
+                    self.lo.x + (i as f64 + rng.unit()) * self.dx,
+                    self.lo.y + (j as f64 + rng.unit()) * self.dy,
+                )
+            })
+            .collect()
+    }
 }
 
 /// The volume a shell counts more than once (where it passes through itself: winding number ±2
-/// or more along a line), with one standard error; `None` when no line finds any.
-fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<(f64, f64)> {
-    let (lo, hi) = (a.lo, a.hi);
-    let (dx, dy) = ((hi.x - lo.x) / CELLS as f64, (hi.y - lo.y) / CELLS as f64);
-    if dx <= 0.0 || dy <= 0.0 {
+/// or more along a line), with one standard error and the faces bounding it; `None` when no line
+/// of the coarse grid finds any. `shell` is left 0 for the caller.
+fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<SelfOverlap> {
+    let coarse = self_lengths(a, CELLS, tolerance, seed ^ 0x5E1F_0000_0000_0000)?;
+    let fine = self_lengths(a, FINE_CELLS, tolerance, seed ^ 0x5E1F_F000_0000_0000);
+    // The fine grid measures; it finds nothing only where the coarse grid's find was round-off.
+    let found = fine.unwrap_or(coarse);
+    // Round-off where the shell's own faces meet at a fold is no volume.
+    let extent = a.hi - a.lo;
+    let boxed = extent.x * extent.y * extent.z.max(f64::MIN_POSITIVE);
+    (found.volume > SELF_VOLUME_TOLERANCE * boxed).then_some(found)
+}
+
+/// [`probe_self`] on one grid of `cells` on a side.
+fn self_lengths(a: &Solid, cells: usize, tolerance: f64, seed: u64) -> Option<SelfOverlap> {
+    let grid = Grid::new(a.lo, a.hi, cells);
+    if grid.dx <= 0.0 || grid.dy <= 0.0 {
         return None;
     }
-    let lines = grid_lines(lo, dx, dy, seed ^ 0x5E1F_0000_0000_0000);
-    let crossings = crossings(a, &lines, lo, dx, dy);
+    let lines = grid.lines(seed);
+    let crossings = crossings(a, &lines, &grid);
     let mut extra = [0.0; REPLICATES];
     let mut seen = false;
+    let mut faces = Vec::new();
     for line in crossings.chunk_by(|p, q| p.0 == q.0) {
         // Down the line from the top: the winding number below a crossing is that above it plus
-        // the crossing's sign; |w| − 1 more counts of each stretch where |w| > 1.
+        // the crossing's sign; |w| − 1 more counts of each stretch where |w| > 1. A crossing
+        // with |w| > 1 on either side bounds that stretch.
         let (mut w, mut z_prev) = (0i32, f64::INFINITY);
         let mut length = 0.0;
-        for &(_, z, sign) in line.iter().rev() {
+        for &(_, z, sign, face) in line.iter().rev() {
             if w.abs() > 1 && z_prev.is_finite() {
                 length += f64::from(w.abs() - 1) * (z_prev - z);
             }
+            let above = w;
             w += i32::from(sign);
+            if above.abs() > 1 || w.abs() > 1 {
+                faces.push(face);
+            }
             z_prev = z;
         }
         seen |= length > tolerance;
-        extra[line[0].0 as usize / (CELLS * CELLS)] += length;
+        extra[line[0].0 as usize / grid.per_replicate()] += length;
     }
     if !seen {
         return None;
     }
-    let estimates = extra.map(|l| l * dx * dy);
+    let estimates = extra.map(|l| l * grid.dx * grid.dy);
     let volume = estimates.iter().sum::<f64>() / REPLICATES as f64;
     let spread = estimates.iter().map(|e| (e - volume).powi(2)).sum::<f64>();
-    let uncertainty = (spread / (REPLICATES * (REPLICATES - 1)) as f64).sqrt();
-    // Round-off where the shell's own faces meet at a fold is no volume.
-    let extent = hi - lo;
-    let boxed = extent.x * extent.y * extent.z.max(f64::MIN_POSITIVE);
-    (volume > SELF_VOLUME_TOLERANCE * boxed).then_some((volume, uncertainty))
+    faces.sort_unstable();
+    faces.dedup();
+    Some(SelfOverlap {
+        shell: 0,
+        volume,
+        uncertainty: (spread / (REPLICATES * (REPLICATES - 1)) as f64).sqrt(),
+        faces,
+    })
 }
 
-/// Every crossing of the shell's faces with the vertical lines, ordered by line then height.
-fn crossings(
-    solid: &Solid,
-    lines: &[(f64, f64)],
-    lo: Point3<f64>,
-    dx: f64,
-    dy: f64,
-) -> Vec<Crossing> {
-    let per_replicate = CELLS * CELLS;
+/// Every crossing of the shell's faces with the grid's lines, ordered by line then height.
+fn crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Crossing> {
+    let Grid {
+        lo, dx, dy, cells, ..
+    } = *grid;
+    let per_replicate = grid.per_replicate();
     let cell_range = |min: f64, max: f64, origin: f64, step: f64| {
         let first = ((min - origin) / step).floor().max(0.0) as usize;
-        let last = (((max - origin) / step).floor().max(0.0) as usize).min(CELLS - 1);
+        let last = (((max - origin) / step).floor().max(0.0) as usize).min(cells - 1);
         first..=last
     };
     let mut out = Vec::new();
-    for t in &solid.triangles {
+    for (t, &face) in solid.triangles.iter().zip(&solid.faces) {
         let [p, q, r] = *t;
         let twice_area = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
         if twice_area == 0.0 {
@@ -494,8 +570,8 @@ fn crossings(
         let (min_y, max_y) = (p.y.min(q.y).min(r.y), p.y.max(q.y).max(r.y));
         if max_x < lo.x
             || max_y < lo.y
-            || min_x > lo.x + dx * CELLS as f64
-            || min_y > lo.y + dy * CELLS as f64
+            || min_x > lo.x + dx * cells as f64
+            || min_y > lo.y + dy * cells as f64
         {
             continue;
         }
@@ -503,7 +579,7 @@ fn crossings(
         for j in cell_range(min_y, max_y, lo.y, dy) {
             for i in cell_range(min_x, max_x, lo.x, dx) {
                 for k in 0..REPLICATES {
-                    let line = k * per_replicate + j * CELLS + i;
+                    let line = k * per_replicate + j * cells + i;
                     let (x, y) = lines[line];
                     let edge = |a: Point3<f64>, b: Point3<f64>| {
                         (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x)
@@ -516,13 +592,13 @@ fn crossings(
                     };
                     if inside {
                         let z = (w0 * p.z + w1 * q.z + w2 * r.z) / twice_area;
-                        out.push((line as u32, z, sign));
+                        out.push((line as u32, z, sign, face));
                     }
                 }
             }
         }
     }
-    out.sort_unstable_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    out.sort_unstable_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.3.cmp(&b.3)));
     out
 }
 

@@ -181,10 +181,16 @@ fn warning_json(w: &Warning, lines: &[u32]) -> Value {
             shells,
             volume,
             uncertainty,
+            crossing_faces,
+            total_effect,
+            total_uncertainty,
         } => json!({
             "shells": shells,
             "overlap_volume": volume,
             "uncertainty": uncertainty,
+            "crossing_faces": crossing_faces,
+            "total_effect_on_mass": total_effect,
+            "total_uncertainty": total_uncertainty,
         }),
         Defect::CracksClosed { largest_gap } => json!({ "largest_gap": largest_gap }),
         Defect::HolesCapped {

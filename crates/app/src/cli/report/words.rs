@@ -64,14 +64,30 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             shells,
             volume,
             uncertainty,
-        } => format!(
-            "{count} closed shell(s) pass through themselves (shell {}; {faces}): {} ± {} (mesh \
-             units cubed; ± one standard error of the sampling by lines) of their volume is \
-             counted twice, adding {effect} to the mass, on top of any overlap between shells",
-            join(shells),
-            significant(*volume, 3),
-            significant(*uncertainty, 2),
-        ),
+            crossing_faces,
+            total_effect,
+            total_uncertainty,
+        } => {
+            let mut text = format!(
+                "{count} closed shell(s) pass through themselves (shell {}; {crossing_faces} \
+                 faces bound the part inside itself, {faces}): {} ± {} (mesh units cubed; ± one \
+                 standard error of the sampling by lines, not of the lines' spacing) of their \
+                 volume is counted twice, adding {effect} to the mass",
+                join(shells),
+                significant(*volume, 3),
+                significant(*uncertainty, 2),
+            );
+            let own = w.effect_on_mass.unwrap_or(0.0);
+            if (total_effect - own).abs() > 0.0 {
+                let _ = write!(
+                    text,
+                    "; with the overlap between shells, volume counted twice adds {} ± {} in all",
+                    percent_to(*total_effect, 3),
+                    percent(*total_uncertainty).replace('+', "")
+                );
+            }
+            text
+        }
         Defect::NestedShell { shells } => format!(
             "{count} closed shell(s) wound outward inside another solid (shell {}; {faces}): each \
              is counted as solid again, adding {effect} to the mass; if it is meant as a cavity, \
@@ -146,8 +162,13 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
 
 /// A relative change as a signed percentage to two significant digits: "+9.4 %", "-1.2e-7 %".
 fn percent(x: f64) -> String {
+    percent_to(x, 2)
+}
+
+/// `x` as a signed percentage to `digits` significant digits.
+fn percent_to(x: f64, digits: usize) -> String {
     let sign = if x > 0.0 { "+" } else { "" };
-    format!("{sign}{} %", significant(x * 100.0, 2))
+    format!("{sign}{} %", significant(x * 100.0, digits))
 }
 
 /// Indices as "1, 4, 9".
