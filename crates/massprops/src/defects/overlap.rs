@@ -195,13 +195,25 @@ impl Relations {
     }
 }
 
-/// One closed shell as triangles, with its bounding box.
-struct Solid {
-    triangles: Vec<[Point3<f64>; 3]>,
-    /// The mesh face each triangle comes from.
-    faces: Vec<u32>,
+/// One closed shell: its faces in the mesh, with its bounding box.
+struct Solid<'a> {
+    mesh: &'a PolyMesh,
+    faces: &'a [u32],
     lo: Point3<f64>,
     hi: Point3<f64>,
+}
+
+impl Solid<'_> {
+    /// The faces as fan triangles, each with its face.
+    fn triangles(&self) -> impl Iterator<Item = ([Point3<f64>; 3], u32)> + '_ {
+        let at = |i: u32| self.mesh.positions()[i as usize];
+        self.faces.iter().flat_map(move |&f| {
+            let face = self.mesh.face(f as usize);
+            face[1..]
+                .windows(2)
+                .map(move |w| ([at(face[0]), at(w[0]), at(w[1])], f))
+        })
+    }
 }
 
 /// Compares the pairs of closed shells whose bounding boxes meet, in order, as long as the work
@@ -291,7 +303,7 @@ pub(crate) fn compare(
         needed[k] = true;
     }
     let built: Vec<Option<Solid>> = each(needed.len(), &|k| {
-        needed[k].then(|| triangles(mesh, &parts[closed[k]].faces, boxes[k]))
+        needed[k].then(|| solid(mesh, &parts[closed[k]].faces, boxes[k]))
     });
     let found: Vec<Option<Probe>> = each(chosen.len(), &|n| {
         let (i, j) = chosen[n];
@@ -370,21 +382,15 @@ fn bounds(mesh: &PolyMesh, faces: &[u32]) -> (Point3<f64>, Point3<f64>) {
     (lo, hi)
 }
 
-/// The faces as fan triangles.
-fn triangles(mesh: &PolyMesh, faces: &[u32], (lo, hi): (Point3<f64>, Point3<f64>)) -> Solid {
-    let mut triangles = Vec::new();
-    let mut from = Vec::new();
-    let at = |i: u32| mesh.positions()[i as usize];
-    for &f in faces {
-        let face = mesh.face(f as usize);
-        for w in face[1..].windows(2) {
-            triangles.push([at(face[0]), at(w[0]), at(w[1])]);
-            from.push(f);
-        }
-    }
+/// One shell's faces as a [`Solid`].
+fn solid<'a>(
+    mesh: &'a PolyMesh,
+    faces: &'a [u32],
+    (lo, hi): (Point3<f64>, Point3<f64>),
+) -> Solid<'a> {
     Solid {
-        triangles,
-        faces: from,
+        mesh,
+        faces,
         lo,
         hi,
     }
@@ -560,8 +566,7 @@ fn crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Crossing> 
         first..=last
     };
     let mut out = Vec::new();
-    for (t, &face) in solid.triangles.iter().zip(&solid.faces) {
-        let [p, q, r] = *t;
+    for ([p, q, r], face) in solid.triangles() {
         let twice_area = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
         if twice_area == 0.0 {
             continue;

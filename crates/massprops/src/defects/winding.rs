@@ -18,25 +18,42 @@ use crate::diagnostics::EXAMPLES;
 pub(super) fn reorient(work: &mut Cleaned<'_>, parts: &[Part], reference: Point3<f64>) -> bool {
     let mesh = &work.mesh;
     let n = mesh.face_count();
-    // Each face's neighbours across edges exactly two faces share, and whether the two run the
-    // edge the same way (then one of them is turned).
-    let mut neighbours: Vec<Vec<(u32, bool)>> = vec![Vec::new(); n];
-    let mut disagreeing = Vec::new();
-    for group in work.table.groups() {
-        if let [a, b] = group
-            && a.face != b.face
-        {
-            let same = a.forward == b.forward;
-            neighbours[a.face as usize].push((b.face, same));
-            neighbours[b.face as usize].push((a.face, same));
-            if same && disagreeing.len() < EXAMPLES {
-                disagreeing.push((a.face.min(b.face), a.face.max(b.face)));
-            }
-        }
-    }
+    // Edges exactly two faces share: the pair, and whether the two run the edge the same way
+    // (then one of them is turned).
+    let shared = || {
+        work.table.groups().filter_map(|group| match group {
+            [a, b] if a.face != b.face => Some((a.face, b.face, a.forward == b.forward)),
+            _ => None,
+        })
+    };
+    // Most meshes agree everywhere: one pass over the edges says so, before anything is built.
+    let disagreeing: Vec<(u32, u32)> = shared()
+        .filter(|&(_, _, same)| same)
+        .take(EXAMPLES)
+        .map(|(a, b, _)| (a.min(b), a.max(b)))
+        .collect();
     if disagreeing.is_empty() {
         return false;
     }
+    // Each face's neighbours, as one array cut at `starts` (a counting sort by face).
+    let mut starts = vec![0u32; n + 1];
+    for (a, b, _) in shared() {
+        starts[a as usize + 1] += 1;
+        starts[b as usize + 1] += 1;
+    }
+    for f in 0..n {
+        starts[f + 1] += starts[f];
+    }
+    let mut next = starts.clone();
+    let mut adjacent = vec![(0u32, false); starts[n] as usize];
+    for (a, b, same) in shared() {
+        for (from, to) in [(a, b), (b, a)] {
+            adjacent[next[from as usize] as usize] = (to, same);
+            next[from as usize] += 1;
+        }
+    }
+    let neighbours =
+        |f: u32| &adjacent[starts[f as usize] as usize..starts[f as usize + 1] as usize];
     let mut turn = vec![false; n];
     let mut flip_of: Vec<Option<bool>> = vec![None; n];
     let mut queue = VecDeque::new();
@@ -51,7 +68,7 @@ pub(super) fn reorient(work: &mut Cleaned<'_>, parts: &[Part], reference: Point3
         while let Some(f) = queue.pop_front() {
             let flip = flip_of[f as usize].unwrap_or(false);
             label.push((f, flip));
-            for &(g, same) in &neighbours[f as usize] {
+            for &(g, same) in neighbours(f) {
                 // Running the edge the same way, they disagree: one of the two is turned.
                 let wanted = flip ^ same;
                 match flip_of[g as usize] {

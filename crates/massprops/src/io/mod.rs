@@ -4,6 +4,7 @@
 
 mod body;
 mod obj;
+mod obj_fast;
 mod stl;
 
 use std::path::Path;
@@ -74,6 +75,11 @@ impl MeshFile {
 
 /// Loads an `.obj` or `.stl` file (chosen by extension, case-insensitive) as one body.
 pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
+    match extension(path).as_deref() {
+        Some("obj") => return obj::load_obj(path),
+        Some("stl") => return stl::load_stl(path),
+        _ => {}
+    }
     let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
         path: path.to_path_buf(),
         source: source.into(),
@@ -83,15 +89,53 @@ pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
 
 /// Parses a file already in memory; `path` names it in messages and gives the format.
 pub fn parse_mesh(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    match ext.as_deref() {
+    match extension(path).as_deref() {
         Some("obj") => parse_obj(bytes, path),
         Some("stl") => parse_stl(bytes, path),
         _ => Err(MeshError::UnsupportedFormat {
             path: path.to_path_buf(),
         }),
     }
+}
+
+/// The file's extension, lower case.
+fn extension(path: &Path) -> Option<String> {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+}
+
+/// Every file of extension `ext` (any case) in the workspace and under the folders listed in the
+/// environment variable `dirs` (colon-separated: the real-mesh survey's unpacked wheels), for the
+/// readers' cross-checks.
+#[cfg(test)]
+fn test_files(ext: &str, dirs: &str) -> Vec<std::path::PathBuf> {
+    fn walk(dir: &Path, ext: &str, out: &mut Vec<std::path::PathBuf>) {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            return;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() && !path.ends_with("target") {
+                walk(&path, ext, out);
+            } else if path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case(ext))
+            {
+                out.push(path);
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("../.."),
+        ext,
+        &mut files,
+    );
+    for dir in std::env::var(dirs).unwrap_or_default().split(':') {
+        if !dir.is_empty() {
+            walk(Path::new(dir), ext, &mut files);
+        }
+    }
+    files
 }

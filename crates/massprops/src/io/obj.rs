@@ -9,6 +9,7 @@ use std::path::Path;
 use nalgebra::Point3;
 
 use super::MeshFile;
+use super::obj_fast::FastObj;
 use crate::diagnostics::EXAMPLES;
 use crate::mesh::weld_exact;
 use crate::{Defect, MeshError, PolyMesh, Warning};
@@ -16,29 +17,164 @@ use crate::{Defect, MeshError, PolyMesh, Warning};
 /// Parses OBJ text: all objects and groups form one body; `l` and `p` elements are skipped, and
 /// so are `f` records of fewer than three corners (reported as [`Defect::TwoCornerFaces`]);
 /// positions are welded exactly. A UTF-8 byte-order mark at the start is ignored.
+///
+/// The records nearly every file is made of take a fast path of our own
+/// ([`obj_fast`](super::obj_fast)); any other file goes through `tobj`, with the same result.
 pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
-    // Windows exporters often start with a byte-order mark, which tobj would read as part of the
-    // first keyword, losing the first vertex and shifting every face index by one.
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let text = std::str::from_utf8(bytes).map_err(|e| MeshError::Malformed {
+    let text = utf8(bytes, path)?;
+    let parsed = match fast(text) {
+        Some(parsed) => parsed,
+        None => general(text, path)?,
+    };
+    finish(parsed, text, path)
+}
+
+/// The fast path over the whole text; `None` when it declines.
+fn fast(text: &str) -> Option<Parsed> {
+    let mut fast = FastObj::new(text.len());
+    fast.feed(text).ok()?;
+    Some(fast.finish())
+}
+
+/// The general path alone, on bytes the fast path declined.
+fn parse_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
+    let text = utf8(bytes, path)?;
+    finish(general(text, path)?, text, path)
+}
+
+/// [`parse_obj`] on a file read block by block: the fast path never holds the whole file; only
+/// a file it declines (or one with an error to locate) is read again whole.
+pub(super) fn load_obj(path: &Path) -> Result<MeshFile, MeshError> {
+    let io = |source: std::io::Error| MeshError::Io {
+        path: path.to_path_buf(),
+        source: source.into(),
+    };
+    let mut file = std::fs::File::open(path).map_err(io)?;
+    let size = file.metadata().map_or(0, |m| m.len() as usize);
+    let mut fast = FastObj::new(size);
+    let mut block = Vec::with_capacity(BLOCK + 4096);
+    let mut done = false;
+    let mut readable = true;
+    while !done && readable {
+        let filled = block.len();
+        block.resize(filled + BLOCK, 0);
+        let n = read_full(&mut file, &mut block[filled..]).map_err(io)?;
+        block.truncate(filled + n);
+        done = n == 0;
+        // Whole lines only, but the last line at the end of the file.
+        let cut = if done {
+            block.len()
+        } else {
+            block.iter().rposition(|&b| b == b'\n').map_or(0, |k| k + 1)
+        };
+        readable = match std::str::from_utf8(&block[..cut]) {
+            Ok(text) => fast.feed(text).is_ok(),
+            Err(_) => false,
+        };
+        block.drain(..cut);
+    }
+    if !readable {
+        let bytes = std::fs::read(path).map_err(io)?;
+        return parse_general(&bytes, path);
+    }
+    let parsed = fast.finish();
+    // The text is needed again only to name the line of a non-finite vertex.
+    let mesh_ok = parsed
+        .positions
+        .iter()
+        .all(|p| p.iter().all(|c| c.is_finite()));
+    if !mesh_ok {
+        let bytes = std::fs::read(path).map_err(io)?;
+        return parse_obj(&bytes, path);
+    }
+    finish(parsed, "", path)
+}
+
+/// Bytes read at a time by [`load_obj`]: large enough that each read is a fraction of the
+/// parse, small enough to stay in the cache's neighbourhood.
+const BLOCK: usize = 1 << 20;
+
+/// Fills `buf` as far as the file goes; fewer bytes only at its end.
+pub(super) fn read_full(file: &mut std::fs::File, buf: &mut [u8]) -> std::io::Result<usize> {
+    use std::io::Read as _;
+    let mut filled = 0;
+    while filled < buf.len() {
+        match file.read(&mut buf[filled..]) {
+            Ok(0) => break,
+            Ok(n) => filled += n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(filled)
+}
+
+/// The text, or an error naming the first line that is not UTF-8.
+fn utf8<'a>(bytes: &'a [u8], path: &Path) -> Result<&'a str, MeshError> {
+    std::str::from_utf8(bytes).map_err(|e| MeshError::Malformed {
         path: path.to_path_buf(),
         line: Some(line_of_offset(bytes, e.valid_up_to())),
         message: "the file is not UTF-8 text (is it a binary file?)".into(),
-    })?;
+    })
+}
+
+/// What either path read: the welded positions, the kept faces with their file lines and
+/// records, and the lines of the faces skipped for having fewer than three corners.
+pub(super) struct Parsed {
+    pub positions: Vec<Point3<f64>>,
+    pub indices: Vec<u32>,
+    pub arities: Vec<usize>,
+    pub face_lines: Vec<u32>,
+    /// The object and group names (its `elements` only the general path's scratch).
+    pub records: Records,
+    /// The object and group of the kept faces, as runs.
+    pub runs: Vec<PartRun>,
+    pub two_corner: Vec<usize>,
+}
+
+/// Kept faces from `first` on (up to the next run) are in this object and group (indices into
+/// [`Records::objects`] and [`Records::groups`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct PartRun {
+    pub first: usize,
+    pub object: u32,
+    pub group: u32,
+}
+
+/// Adds the run of face `face` when its object or group differs from the last run's.
+pub(super) fn extend_runs(runs: &mut Vec<PartRun>, face: usize, object: u32, group: u32) {
+    if runs
+        .last()
+        .is_none_or(|r| (r.object, r.group) != (object, group))
+    {
+        runs.push(PartRun {
+            first: face,
+            object,
+            group,
+        });
+    }
+}
+
+/// The general path, through `tobj`.
+fn general(text: &str, path: &Path) -> Result<Parsed, MeshError> {
+    // Windows exporters often start with a byte-order mark, which tobj would read as part of the
+    // first keyword, losing the first vertex and shifting every face index by one.
+    let text = text.strip_prefix('\u{FEFF}').unwrap_or(text);
     let options = tobj::LoadOptions {
         single_index: false,
         triangulate: false,
         ignore_points: false,
         ignore_lines: false,
     };
-    let (models, _materials) = tobj::load_obj_buf(&mut Cursor::new(bytes), &options, |_| {
-        Err(tobj::LoadError::OpenFileFailed)
-    })
-    .map_err(|e| MeshError::Malformed {
-        path: path.to_path_buf(),
-        line: locate_tobj_error(text, &e),
-        message: describe(&e).into(),
-    })?;
+    let (models, _materials) =
+        tobj::load_obj_buf(&mut Cursor::new(text.as_bytes()), &options, |_| {
+            Err(tobj::LoadError::OpenFileFailed)
+        })
+        .map_err(|e| MeshError::Malformed {
+            path: path.to_path_buf(),
+            line: locate_tobj_error(text, &e),
+            message: describe(&e).into(),
+        })?;
 
     let mut positions = Vec::new();
     let mut indices = Vec::new();
@@ -46,7 +182,7 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     // tobj returns `f` and `l` lines alike as elements (an `l` of three or more points looks like
     // a face), in file order; `p` lines it drops.
     let records = element_lines(text);
-    let mut kept: Vec<Record> = Vec::new();
+    let mut runs = Vec::new();
     let mut face_lines = Vec::new();
     let mut two_corner = Vec::new();
     let mut element = 0usize;
@@ -87,13 +223,36 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
                 continue;
             }
             indices.extend(face.iter().map(|&i| i + base));
+            extend_runs(&mut runs, arities.len(), record.object, record.group);
             arities.push(arity);
             face_lines.push(line as u32);
-            kept.push(record);
         }
     }
     let (welded, remap) = weld_exact(&positions);
     let indices = indices.into_iter().map(|i| remap[i as usize]).collect();
+    Ok(Parsed {
+        positions: welded,
+        indices,
+        arities,
+        face_lines,
+        records,
+        runs,
+        two_corner,
+    })
+}
+
+/// The mesh file from what a path read; `text` (the file, when a vertex is not finite) names
+/// the line of a bad vertex.
+fn finish(parsed: Parsed, text: &str, path: &Path) -> Result<MeshFile, MeshError> {
+    let Parsed {
+        positions,
+        indices,
+        arities,
+        face_lines,
+        records,
+        runs,
+        two_corner,
+    } = parsed;
     let mut warnings = Vec::new();
     if !two_corner.is_empty() {
         warnings.push(Warning {
@@ -105,7 +264,7 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             effect_on_mass: Some(0.0),
         });
     }
-    let mesh = PolyMesh::from_flat(welded, indices, &arities).map_err(|e| {
+    let mesh = PolyMesh::from_flat(positions, indices, &arities).map_err(|e| {
         let (line, source) = match e {
             // The welded index means nothing to the user: name the file's vertex and its line.
             MeshError::NonFiniteVertex { value, .. } => {
@@ -129,7 +288,7 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             source: Box::new(source),
         }
     })?;
-    let (part_names, face_parts) = parts(&records, &kept);
+    let (part_names, face_parts) = parts(&records, &runs, face_lines.len());
     Ok(MeshFile {
         mesh,
         face_lines,
@@ -184,31 +343,39 @@ fn keywords(text: &str) -> impl Iterator<Item = (usize, &str)> {
 
 /// One `f` or `l` record: its one-based line, whether it is a polyline, and the object and group
 /// (indices into [`Records::objects`] and [`Records::groups`]) in force there.
-#[derive(Clone, Copy)]
-struct Record {
-    line: usize,
-    polyline: bool,
-    object: u32,
-    group: u32,
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Record {
+    pub line: usize,
+    pub polyline: bool,
+    pub object: u32,
+    pub group: u32,
 }
 
 /// The elements tobj returns (each `f` or `l` record, in order) and the object and group names.
-struct Records {
-    elements: Vec<Record>,
+#[derive(Debug, PartialEq)]
+pub(super) struct Records {
+    pub elements: Vec<Record>,
     /// Names of `o` statements; index 0 is the unnamed part before the first.
-    objects: Vec<String>,
+    pub objects: Vec<String>,
     /// Names of `g` statements, likewise.
-    groups: Vec<String>,
+    pub groups: Vec<String>,
+}
+
+impl Records {
+    /// No element yet, the unnamed object and group in force.
+    pub fn new() -> Self {
+        Self {
+            elements: Vec::new(),
+            objects: vec![UNNAMED.to_owned()],
+            groups: vec![UNNAMED.to_owned()],
+        }
+    }
 }
 
 fn element_lines(text: &str) -> Records {
     // Bytes, not `str::lines` and `split_whitespace`: this runs on every file, and a scan of
     // bytes takes a fraction of the time on a million-face file.
-    let mut records = Records {
-        elements: Vec::new(),
-        objects: vec![UNNAMED.to_owned()],
-        groups: vec![UNNAMED.to_owned()],
-    };
+    let mut records = Records::new();
     let (mut object, mut group) = (0u32, 0u32);
     for (i, line) in text.as_bytes().split(|&b| b == b'\n').enumerate() {
         // tobj splits on Unicode whitespace (vertical tab, no-break space…): so does this, on the
@@ -258,30 +425,30 @@ const UNNAMED: &str = "unnamed";
 /// The parts of the kept faces (objects, or groups when the file has no `o`): the names, and
 /// for each face its part; both empty when the file names neither. Parts of the same name are
 /// one part, and names without faces are dropped.
-fn parts(records: &Records, kept: &[Record]) -> (Vec<String>, Vec<u32>) {
+fn parts(records: &Records, runs: &[PartRun], faces: usize) -> (Vec<String>, Vec<u32>) {
     let by_object = records.objects.len() > 1;
     if !by_object && records.groups.len() <= 1 {
         return (Vec::new(), Vec::new());
     }
     let mut names: Vec<String> = Vec::new();
-    let faces = kept
-        .iter()
-        .map(|r| {
-            let name = if by_object {
-                &records.objects[r.object as usize]
-            } else {
-                &records.groups[r.group as usize]
-            };
-            match names.iter().position(|n| n == name) {
-                Some(i) => i as u32,
-                None => {
-                    names.push(name.clone());
-                    (names.len() - 1) as u32
-                }
+    let mut out = Vec::with_capacity(faces);
+    for (k, r) in runs.iter().enumerate() {
+        let end = runs.get(k + 1).map_or(faces, |next| next.first);
+        let name = if by_object {
+            &records.objects[r.object as usize]
+        } else {
+            &records.groups[r.group as usize]
+        };
+        let part = match names.iter().position(|n| n == name) {
+            Some(i) => i as u32,
+            None => {
+                names.push(name.clone());
+                (names.len() - 1) as u32
             }
-        })
-        .collect();
-    (names, faces)
+        };
+        out.resize(end, part);
+    }
+    (names, out)
 }
 
 /// Finds the line `tobj` rejected, by re-checking the lines of the kind its error names.
@@ -338,5 +505,233 @@ fn locate_tobj_error(text: &str, e: &tobj::LoadError) -> Option<usize> {
             })
         }
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Both paths on the same text: the fast one (`None` when it declines) and `tobj`'s.
+    fn both(text: &str) -> (Option<Parsed>, Result<Parsed, MeshError>) {
+        (fast(text), general(text, Path::new("t.obj")))
+    }
+
+    /// The two results are the same, positions compared bit for bit.
+    fn same(a: &Parsed, b: &Parsed) -> bool {
+        let bits = |p: &Parsed| -> Vec<[u64; 3]> {
+            p.positions
+                .iter()
+                .map(|q| [q.x.to_bits(), q.y.to_bits(), q.z.to_bits()])
+                .collect()
+        };
+        bits(a) == bits(b)
+            && a.indices == b.indices
+            && a.arities == b.arities
+            && a.face_lines == b.face_lines
+            && (&a.records.objects, &a.records.groups) == (&b.records.objects, &b.records.groups)
+            && a.runs == b.runs
+            && a.two_corner == b.two_corner
+    }
+
+    /// The cross-check on real files: every OBJ of the workspace, and of the folders in
+    /// `MASSPROPS_OBJ_DIRS` (colon-separated: the real-mesh survey's unpacked wheels), gives the
+    /// same mesh on both paths, or the fast path declines it.
+    #[test]
+    fn the_fast_path_gives_tobjs_mesh_bit_for_bit_or_declines_on_every_obj_file() {
+        let files = super::super::test_files("obj", "MASSPROPS_OBJ_DIRS");
+        assert!(files.len() >= 20, "found only {files:?}");
+        let (mut equal, mut declined, mut refused) = (0, 0, 0);
+        for file in &files {
+            let bytes = std::fs::read(file).expect("readable");
+            let Ok(text) = std::str::from_utf8(&bytes) else {
+                continue;
+            };
+            match both(text) {
+                (Some(f), Ok(g)) => {
+                    assert!(same(&f, &g), "{} differs", file.display());
+                    equal += 1;
+                }
+                (Some(_), Err(e)) => panic!(
+                    "{}: tobj refuses ({e}) what the fast path read",
+                    file.display()
+                ),
+                (None, Ok(_)) => declined += 1,
+                (None, Err(_)) => refused += 1,
+            }
+        }
+        eprintln!(
+            "{} OBJ files: {equal} equal on both paths, {declined} declined by the fast path, \
+             {refused} refused by tobj",
+            files.len()
+        );
+        assert!(equal > declined, "the fast path should read most files");
+    }
+
+    /// One line of a generated OBJ file, given the counts of `v`, `vt`, `vn` so far.
+    fn generated_line(kind: u8, pick: &[u32], counts: &mut [usize; 3], text: &mut String) {
+        let number = |k: u32| -> String {
+            let x = (f64::from(k % 2000) - 1000.0) / 7.0;
+            match k % 5 {
+                0 => format!("{x}"),
+                1 => format!("{x:e}"),
+                2 => format!("{x:.3}"),
+                3 => format!("{}", (k % 7) as f64 - 3.0),
+                _ => format!("{x:.17}"),
+            }
+        };
+        let reference = |k: u32, count: usize| -> String {
+            let i = k as usize % count;
+            if k.is_multiple_of(3) {
+                format!("-{}", count - i)
+            } else {
+                format!("{}", i + 1)
+            }
+        };
+        match kind {
+            0..=3 => {
+                text.push_str(&format!(
+                    "v {} {} {}",
+                    number(pick[0]),
+                    number(pick[1]),
+                    number(pick[2])
+                ));
+                counts[0] += 1;
+            }
+            4 => {
+                text.push_str(&format!("vt {} {}", number(pick[0]), number(pick[1])));
+                counts[1] += 1;
+            }
+            5 => {
+                text.push_str(&format!(
+                    "vn {} {} {}",
+                    number(pick[0]),
+                    number(pick[1]),
+                    number(pick[2])
+                ));
+                counts[2] += 1;
+            }
+            6 => text.push_str(
+                [
+                    "o part",
+                    "g side",
+                    "s 1",
+                    "usemtl red",
+                    "mtllib m.mtl",
+                    "# note",
+                ][pick[0] as usize % 6],
+            ),
+            _ if counts[0] > 0 => {
+                text.push('f');
+                let corners = 3 + pick[3] as usize % 4;
+                for c in 0..corners {
+                    let k = pick[c % 4].wrapping_mul(2654435761).wrapping_add(c as u32);
+                    text.push(' ');
+                    text.push_str(&reference(k, counts[0]));
+                    match (k % 4, counts[1] > 0, counts[2] > 0) {
+                        (1, true, _) => text.push_str(&format!("/{}", reference(k / 4, counts[1]))),
+                        (2, _, true) => {
+                            text.push_str(&format!("//{}", reference(k / 4, counts[2])))
+                        }
+                        (3, true, true) => text.push_str(&format!(
+                            "/{}/{}",
+                            reference(k / 4, counts[1]),
+                            reference(k / 8, counts[2])
+                        )),
+                        _ => {}
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    proptest::proptest! {
+        /// Generated files mixing every record the fast path reads (numbers written every way,
+        /// all index forms, objects, groups, materials, `\r\n`) read as tobj reads them; with a
+        /// line it does not read added anywhere, it declines or still agrees.
+        #[test]
+        fn generated_obj_text_reads_as_tobj_reads_it(
+            lines in proptest::collection::vec((0u8..10, proptest::collection::vec(0u32..100_000, 4)), 1..60),
+            crlf in proptest::bool::ANY,
+            trigger in proptest::option::of((0usize..60, 0usize..5)),
+        ) {
+            let mut text = String::new();
+            let mut counts = [0usize; 3];
+            for (n, (kind, pick)) in lines.iter().enumerate() {
+                if let Some((at, which)) = trigger && at == n {
+                    text.push_str(["l 1 2", "v 1 2 3 4", "vt 1", "f 1 2 # c", "p 1"][which]);
+                    text.push('\n');
+                }
+                generated_line(*kind, pick, &mut counts, &mut text);
+                text.push_str(if crlf { "\r\n" } else { "\n" });
+            }
+            let (f, g) = both(&text);
+            match (f, g) {
+                (Some(f), Ok(g)) => proptest::prop_assert!(same(&f, &g), "{}", text),
+                (Some(_), Err(e)) => proptest::prop_assert!(false, "tobj refuses ({}) what the fast path read: {}", e, text),
+                (None, _) => proptest::prop_assert!(trigger.is_some(), "declined without a trigger: {}", text),
+            }
+        }
+    }
+
+    /// A whole mesh: two objects and groups, `\r\n` endings, numbers written every way, faces
+    /// with texture and normal references, negative indices, polygons, repeated positions.
+    const MIXED: &str = "# exported\r\nmtllib a.mtl\r\no first\r\nv 0 0 0\r\nv 1.0 0 0\r\n\
+        v 0 1e0 0\r\nv 0 0 +1.\r\nv -0.0 0 0\r\nvt 0 0\r\nvt 1 0 0\r\nvn 0 0 1\r\n\
+        usemtl red\r\ns 1\r\nf 1/1/1 2/2/1 3/1/1\r\nf 5//1 3//1 2//1\r\ng side\r\n\
+        f -4/-1 -3/-2 -1/-1\r\no second\r\nv 2 0 0\r\nv .5 .5 .5\r\ns off\r\nf 2 6 7 3\r\n\
+        \tf  1 3  4 \r\n";
+
+    #[test]
+    fn a_mixed_file_is_read_by_the_fast_path_as_tobj_reads_it() {
+        let (f, g) = both(MIXED);
+        let (f, g) = (f.expect("fast path reads it"), g.expect("tobj reads it"));
+        assert!(same(&f, &g));
+        // -0.0 and 0.0 are one vertex, the first one's coordinates kept.
+        assert_eq!(f.positions.len(), 6);
+        assert_eq!(f.arities, [3, 3, 3, 4, 3]);
+        assert_eq!(f.face_lines, [14, 15, 17, 22, 23]);
+        assert_eq!(f.records.objects, ["unnamed", "first", "second"]);
+    }
+
+    /// Each thing the fast path leaves to tobj, on a file that is otherwise [`MIXED`]: the fast
+    /// path declines, and the file reads (or fails) exactly as before.
+    #[test]
+    fn each_fallback_trigger_is_declined_and_read_by_tobj() {
+        let triggers: [(&str, &str); 11] = [
+            ("trailing comment", "v 1 1 1 # corner\n"),
+            ("one-number vt", "vt 0.5\n"),
+            ("polyline", "l 1 2 3\n"),
+            ("line continuation", "f 1 2 \\\n3\n"),
+            ("four-number v", "v 1 1 1 1\n"),
+            ("usemtl without a name", "usemtl\n"),
+            ("lone carriage return", "v 1 1 1\rv 2 2 2\n"),
+            ("two-corner face", "f 1 2\n"),
+            ("hexadecimal number", "v 0x10 0 0\n"),
+            ("point", "p 1\n"),
+            ("vertex colour", "v 1 1 1 0.5 0.5 0.5\n"),
+        ];
+        for (what, line) in triggers {
+            let text = format!("{MIXED}{line}");
+            assert!(
+                fast(&text).is_none(),
+                "{what}: the fast path should decline"
+            );
+            let path = Path::new("t.obj");
+            match (
+                parse_obj(text.as_bytes(), path),
+                parse_general(text.as_bytes(), path),
+            ) {
+                (Ok(a), Ok(b)) => assert_eq!(a, b, "{what}"),
+                (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string(), "{what}"),
+                (a, b) => panic!("{what}: {a:?} vs {b:?}"),
+            }
+        }
+        let bom = format!("\u{FEFF}{MIXED}");
+        assert!(fast(&bom).is_none(), "byte-order mark");
+        let read = parse_obj(bom.as_bytes(), Path::new("t.obj")).expect("tobj reads it");
+        let plain = parse_obj(MIXED.as_bytes(), Path::new("t.obj")).expect("fast");
+        assert_eq!(read, plain, "the mark changes nothing");
     }
 }

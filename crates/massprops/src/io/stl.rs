@@ -1,4 +1,5 @@
-//! STL, binary or ASCII, through `stl_io`; vertices (f32 in the format) are welded exactly.
+//! STL: binary files by our own reader (50-byte records, read in blocks from a path, corners
+//! welded on their f32 bits), ASCII through `stl_io`; vertices are welded exactly.
 
 use std::io::Cursor;
 use std::path::Path;
@@ -23,50 +24,35 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         Some(rest) if ascii => rest,
         _ => bytes,
     };
-    let mut warnings = Vec::new();
-    let recounted;
-    let bytes = if ascii {
-        bytes
-    } else {
-        match check_binary_length(bytes).map_err(malformed)? {
-            Some(records) => {
-                warnings.push(count_warning(bytes, records));
-                recounted = with_count(bytes, records);
-                &recounted
-            }
-            None => bytes,
-        }
-    };
+    if !ascii {
+        let announced = header_count(bytes);
+        let count = binary_count(bytes.len() as u64, announced).map_err(malformed)?;
+        let mut corners = Vec::with_capacity(3 * count as usize);
+        let end = 84 + 50 * count as usize;
+        binary_records(&bytes[84..end], 0, &mut corners).map_err(malformed)?;
+        return binary_mesh(&corners, announced, count, path);
+    }
     let mut corners = Vec::new();
     let mut part_names = Vec::new();
     let mut face_parts = Vec::new();
-    if ascii {
-        // stl_io reads the first `solid … endsolid` block and silently stops there: each block
-        // is read on its own, and its name names a part.
-        for (name, block) in solid_blocks(bytes) {
-            let patched = patch_bare_solid(block);
-            read_triangles(
-                patched.as_deref().unwrap_or(block),
-                &mut corners,
-                &malformed,
-            )?;
-            // Blocks of the same name are one part (as OBJ objects are).
-            let part = match part_names.iter().position(|n| *n == name) {
-                Some(k) => k,
-                None => {
-                    part_names.push(name);
-                    part_names.len() - 1
-                }
-            };
-            face_parts.resize(corners.len() / 3, part as u32);
-        }
-    } else {
-        let patched = patch_binary_header(bytes);
+    // stl_io reads the first `solid … endsolid` block and silently stops there: each block is
+    // read on its own, and its name names a part.
+    for (name, block) in solid_blocks(bytes) {
+        let patched = patch_bare_solid(block);
         read_triangles(
-            patched.as_deref().unwrap_or(bytes),
+            patched.as_deref().unwrap_or(block),
             &mut corners,
             &malformed,
         )?;
+        // Blocks of the same name are one part (as OBJ objects are).
+        let part = match part_names.iter().position(|n| *n == name) {
+            Some(k) => k,
+            None => {
+                part_names.push(name);
+                part_names.len() - 1
+            }
+        };
+        face_parts.resize(corners.len() / 3, part as u32);
     }
     let (positions, remap) = weld_exact(&corners);
     let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
@@ -75,17 +61,119 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         line: None,
         source: Box::new(e),
     })?;
-    let face_lines = if ascii {
-        facet_lines(bytes)
+    Ok(MeshFile {
+        mesh,
+        face_lines: facet_lines(bytes),
+        warnings: Vec::new(),
+        part_names,
+        face_parts,
+    })
+}
+
+/// [`parse_stl`] on a file: a binary one is read in blocks of records, never whole; an ASCII
+/// one is read whole.
+pub(super) fn load_stl(path: &Path) -> Result<MeshFile, MeshError> {
+    use std::io::Read as _;
+    let io = |source: std::io::Error| MeshError::Io {
+        path: path.to_path_buf(),
+        source: source.into(),
+    };
+    let malformed = |message: String| MeshError::Malformed {
+        path: path.to_path_buf(),
+        line: None,
+        message,
+    };
+    let mut file = std::fs::File::open(path).map_err(io)?;
+    let len = file.metadata().map_err(io)?.len();
+    let mut head = vec![0u8; len.min(1024) as usize];
+    file.read_exact(&mut head).map_err(io)?;
+    if is_ascii(&head) || len < 84 {
+        let bytes = std::fs::read(path).map_err(io)?;
+        return parse_stl(&bytes, path);
+    }
+    let announced = header_count(&head);
+    let count = binary_count(len, announced).map_err(malformed)?;
+    let mut corners = Vec::with_capacity(3 * count as usize);
+    // The records after the header in the bytes already read, then block by block.
+    let mut pending = head.split_off(84);
+    let mut block = vec![0u8; 50 * 8192];
+    let mut read = 0u64;
+    while read < count {
+        let n = super::obj::read_full(&mut file, &mut block).map_err(io)?;
+        pending.extend_from_slice(&block[..n]);
+        let whole = (pending.len() / 50).min((count - read) as usize) * 50;
+        binary_records(&pending[..whole], read, &mut corners).map_err(malformed)?;
+        read += (whole / 50) as u64;
+        pending.drain(..whole);
+        if n == 0 {
+            break;
+        }
+    }
+    binary_mesh(&corners, announced, count, path)
+}
+
+/// The triangles a binary STL of `len` bytes holds, given its header's count: by its size when
+/// the header counts fewer than the whole records that follow (warned about), else the header's.
+fn binary_count(len: u64, announced: u64) -> Result<u64, String> {
+    Ok(check_binary_length(len, announced)?.unwrap_or(announced))
+}
+
+/// Appends the corners of whole 50-byte binary records (normal, three corners, attribute),
+/// numbered on from `first`; a non-finite coordinate is an error naming its triangle.
+fn binary_records(records: &[u8], first: u64, corners: &mut Vec<[f32; 3]>) -> Result<(), String> {
+    for (k, record) in records.as_chunks::<50>().0.iter().enumerate() {
+        for corner in 0..3 {
+            let at = 12 + 12 * corner;
+            let c = |i: usize| {
+                let b = &record[at + 4 * i..at + 4 * i + 4];
+                f32::from_le_bytes([b[0], b[1], b[2], b[3]])
+            };
+            let p = [c(0), c(1), c(2)];
+            if let Some(value) = p.into_iter().find(|x| !x.is_finite()) {
+                return Err(format!(
+                    "triangle {} (counting from 0), corner {corner}: non-finite coordinate {value}",
+                    first + k as u64
+                ));
+            }
+            corners.push(p);
+        }
+    }
+    Ok(())
+}
+
+/// The welded mesh of a binary STL's corners (f32, as the format stores them, welded on their
+/// bits: a third of the memory of f64 points, converted exactly once welded).
+fn binary_mesh(
+    corners: &[[f32; 3]],
+    announced: u64,
+    count: u64,
+    path: &Path,
+) -> Result<MeshFile, MeshError> {
+    let key = |i: usize| corners[i].map(|c| (c + 0.0).to_bits());
+    let (firsts, remap) = crate::mesh::weld_by_key(corners.len(), key, |k| {
+        crate::mesh::weld_hash(k.map(u64::from))
+    });
+    let positions = firsts
+        .iter()
+        .map(|&i| corners[i as usize].map(f64::from).into())
+        .collect();
+    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
+    let mesh = PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
+        path: path.to_path_buf(),
+        line: None,
+        source: Box::new(e),
+    })?;
+    let warnings = if count > announced {
+        vec![count_warning(announced, count)]
     } else {
         Vec::new()
     };
     Ok(MeshFile {
         mesh,
-        face_lines,
+        face_lines: Vec::new(),
         warnings,
-        part_names,
-        face_parts,
+        part_names: Vec::new(),
+        face_parts: Vec::new(),
     })
 }
 
@@ -177,17 +265,14 @@ fn facet_lines(bytes: &[u8]) -> Vec<u32> {
 /// copy) is named as such, with how much is missing, rather than as an I/O error mid-triangle.
 /// A header that counts fewer triangles than the whole records that follow (an exporter that
 /// leaves the count 0) gives `Some(records)`: the file is read by its size.
-fn check_binary_length(bytes: &[u8]) -> Result<Option<u64>, String> {
-    let Some(count) = bytes.get(80..84) else {
+fn check_binary_length(len: u64, announced: u64) -> Result<Option<u64>, String> {
+    if len < 84 {
         return Err(format!(
-            "the file is cut short: {} bytes, less than a binary STL's 84-byte header (and it is \
-             not ASCII STL text, which starts with \"solid\")",
-            bytes.len()
+            "the file is cut short: {len} bytes, less than a binary STL's 84-byte header (and it \
+             is not ASCII STL text, which starts with \"solid\")"
         ));
-    };
-    let announced = u64::from(u32::from_le_bytes([count[0], count[1], count[2], count[3]]));
+    }
     let expected = 84 + 50 * announced;
-    let len = bytes.len() as u64;
     if len < expected {
         let complete = (len - 84) / 50;
         return Err(format!(
@@ -212,38 +297,13 @@ fn header_count(bytes: &[u8]) -> u64 {
 }
 
 /// The warning for a header that counts fewer triangles than the file holds.
-fn count_warning(bytes: &[u8], records: u64) -> crate::Warning {
+fn count_warning(header: u64, records: u64) -> crate::Warning {
     crate::Warning {
-        defect: crate::Defect::StlTriangleCount {
-            header: header_count(bytes),
-            records,
-        },
+        defect: crate::Defect::StlTriangleCount { header, records },
         count: 1,
         faces: Vec::new(),
         effect_on_mass: None,
     }
-}
-
-/// A copy of a binary STL with its header's count set to `records` (so the reader reads them
-/// all); a count beyond `u32` cannot be written and leaves the file as it is.
-fn with_count(bytes: &[u8], records: u64) -> Vec<u8> {
-    let mut copy = bytes.to_vec();
-    if let Ok(n) = u32::try_from(records) {
-        copy[80..84].copy_from_slice(&n.to_le_bytes());
-    }
-    copy
-}
-
-/// A binary STL whose free-form 80-byte header starts with `"solid "` (many CAD exporters write
-/// one) would be read as ASCII by `stl_io`: its first byte is changed in a copy (the header
-/// carries no data).
-fn patch_binary_header(bytes: &[u8]) -> Option<Vec<u8>> {
-    if !bytes.starts_with(b"solid") {
-        return None;
-    }
-    let mut copy = bytes.to_vec();
-    copy[0] = b'_';
-    Some(copy)
 }
 
 /// `stl_io` takes a file for ASCII only when its first line starts with `"solid "`: a block
@@ -257,4 +317,137 @@ fn patch_bare_solid(block: &[u8]) -> Option<Vec<u8>> {
     copy.extend_from_slice(b"solid ");
     copy.extend_from_slice(&block[5..]);
     Some(copy)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A binary STL of `triangles` records whose corners repeat (a grid, so most are shared),
+    /// with the header's count `announced`.
+    fn binary(triangles: usize, announced: u32) -> Vec<u8> {
+        let mut bytes = b"solid binary header that opens with solid".to_vec();
+        bytes.resize(80, b' ');
+        bytes.extend_from_slice(&announced.to_le_bytes());
+        for t in 0..triangles {
+            bytes.extend_from_slice(&[0; 12]);
+            let (x, y) = ((t % 97) as f32, (t / 97) as f32);
+            for [dx, dy] in [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]] {
+                for c in [x + dx, y + dy, (x * 0.37 - y).sin()] {
+                    bytes.extend_from_slice(&c.to_le_bytes());
+                }
+            }
+            bytes.extend_from_slice(&[0, 0]);
+        }
+        bytes
+    }
+
+    /// The same bytes through `stl_io`, as the reader did before it had its own: the corners,
+    /// welded.
+    fn through_stl_io(bytes: &[u8]) -> (Vec<Point3<f64>>, Vec<u32>) {
+        let mut copy = bytes.to_vec();
+        copy[0] = b'_';
+        let records = ((copy.len() - 84) / 50) as u32;
+        copy[80..84].copy_from_slice(&records.to_le_bytes());
+        let mut corners = Vec::new();
+        read_triangles(&copy, &mut corners, &|m: String| -> MeshError {
+            panic!("{m}")
+        })
+        .expect("stl_io reads it");
+        weld_exact(&corners)
+    }
+
+    fn bits(p: &[Point3<f64>]) -> Vec<[u64; 3]> {
+        p.iter()
+            .map(|q| q.coords.map(f64::to_bits).into())
+            .collect()
+    }
+
+    #[test]
+    fn the_binary_reader_gives_stl_ios_mesh_bit_for_bit_from_memory_and_from_a_file() {
+        let bytes = binary(30_000, 30_000);
+        let (positions, remap) = through_stl_io(&bytes);
+        let parsed = parse_stl(&bytes, Path::new("t.stl")).expect("reads");
+        assert_eq!(bits(parsed.mesh.positions()), bits(&positions));
+        let indices: Vec<u32> = parsed.mesh.faces().flatten().copied().collect();
+        assert_eq!(indices, remap);
+        // From a path, in blocks (30 000 records are more than three blocks).
+        let path = std::env::temp_dir().join(format!("massprops-stl-{}.stl", std::process::id()));
+        std::fs::write(&path, &bytes).expect("writable");
+        let loaded = load_stl(&path).expect("reads");
+        std::fs::remove_file(&path).ok();
+        assert_eq!(loaded, parsed);
+    }
+
+    /// Every binary STL of the workspace, and of the folders in `MASSPROPS_STL_DIRS`, reads as
+    /// `stl_io` reads it.
+    #[test]
+    fn every_binary_stl_file_reads_as_stl_io_reads_it() {
+        let files = super::super::test_files("stl", "MASSPROPS_STL_DIRS");
+        let mut compared = 0;
+        for file in &files {
+            let bytes = std::fs::read(file).expect("readable");
+            if is_ascii(&bytes) || bytes.len() < 84 {
+                continue;
+            }
+            let Ok(parsed) = parse_stl(&bytes, file) else {
+                continue;
+            };
+            let (positions, remap) = through_stl_io(&bytes[..84 + 50 * parsed.mesh.face_count()]);
+            assert_eq!(
+                bits(parsed.mesh.positions()),
+                bits(&positions),
+                "{}",
+                file.display()
+            );
+            let indices: Vec<u32> = parsed.mesh.faces().flatten().copied().collect();
+            assert_eq!(indices, remap, "{}", file.display());
+            compared += 1;
+        }
+        eprintln!("{compared} binary STL files read as stl_io reads them");
+        assert!(compared >= 2, "{files:?}");
+    }
+
+    #[test]
+    fn a_header_counting_zero_is_read_by_the_size_and_warned_about() {
+        let bytes = binary(1_938, 0);
+        let parsed = parse_stl(&bytes, Path::new("t.stl")).expect("reads");
+        assert_eq!(parsed.mesh.face_count(), 1_938);
+        assert!(matches!(
+            parsed.warnings[..],
+            [crate::Warning {
+                defect: crate::Defect::StlTriangleCount {
+                    header: 0,
+                    records: 1_938
+                },
+                ..
+            }]
+        ));
+    }
+
+    #[test]
+    fn a_non_finite_corner_in_a_later_block_names_its_triangle() {
+        let mut bytes = binary(20_000, 20_000);
+        let at = 84 + 50 * 17_001 + 12 + 12 + 4;
+        bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+        let path = std::env::temp_dir().join(format!("massprops-nan-{}.stl", std::process::id()));
+        std::fs::write(&path, &bytes).expect("writable");
+        let loaded = load_stl(&path).map(|_| ()).expect_err("refused");
+        std::fs::remove_file(&path).ok();
+        let parsed = parse_stl(&bytes, Path::new("t.stl"))
+            .map(|_| ())
+            .expect_err("refused");
+        assert!(
+            loaded
+                .to_string()
+                .contains("triangle 17001 (counting from 0), corner 1: non-finite coordinate NaN"),
+            "{loaded}"
+        );
+        assert_eq!(
+            loaded
+                .to_string()
+                .replace(&path.display().to_string(), "t.stl"),
+            parsed.to_string()
+        );
+    }
 }
