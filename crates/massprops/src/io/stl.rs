@@ -32,6 +32,25 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         binary_records(&bytes[84..end], 0, &mut corners).map_err(malformed)?;
         return binary_mesh(&corners, announced, count, path);
     }
+    match ascii_fast(bytes) {
+        Some(ascii) => {
+            let mut file = binary_mesh(&ascii.corners, 0, 0, path)?;
+            file.face_lines = ascii.facet_lines;
+            file.part_names = ascii.part_names;
+            file.face_parts = ascii.face_parts;
+            Ok(file)
+        }
+        None => ascii_general(bytes, path),
+    }
+}
+
+/// An ASCII STL through `stl_io`, block by block.
+fn ascii_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
+    let malformed = |message: String| MeshError::Malformed {
+        path: path.to_path_buf(),
+        line: None,
+        message,
+    };
     let mut corners = Vec::new();
     let mut part_names = Vec::new();
     let mut face_parts = Vec::new();
@@ -68,6 +87,91 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         part_names,
         face_parts,
     })
+}
+
+/// What the ASCII fast path read: the corners, the parts and the `facet` lines.
+struct AsciiParsed {
+    corners: Vec<[f32; 3]>,
+    part_names: Vec<String>,
+    face_parts: Vec<u32>,
+    facet_lines: Vec<u32>,
+}
+
+/// The fast path for ASCII STL: one pass over the lines for files made only of well-formed
+/// `solid NAME` … `facet normal` / `outer loop` / three `vertex` / `endloop` / `endfacet` …
+/// `endsolid` blocks, numbers through the standard library's f32 parser as `stl_io` reads them;
+/// `None` for anything else (a missing or non-finite number, an indented `solid`, a block left
+/// open, a keyword out of place), which then goes through `stl_io` as before, with its message.
+fn ascii_fast(bytes: &[u8]) -> Option<AsciiParsed> {
+    let text = std::str::from_utf8(bytes).ok()?;
+    let mut out = AsciiParsed {
+        corners: Vec::with_capacity(bytes.len() / 80),
+        part_names: Vec::new(),
+        face_parts: Vec::new(),
+        facet_lines: Vec::with_capacity(bytes.len() / 250),
+    };
+    // Inside a block: the part, and how far into the current facet (0: between facets).
+    let mut block: Option<u32> = None;
+    let mut step = 0;
+    for (i, line) in text.split('\n').enumerate() {
+        let mut words = line.split_ascii_whitespace();
+        let Some(first) = words.next() else {
+            continue;
+        };
+        let Some(part) = block else {
+            // Between blocks only a block's start: other text there would shift the lines.
+            if !line.trim_ascii_start().starts_with("solid") {
+                return None;
+            }
+            {
+                // `stl_io` wants the block's first line to start with `solid ` (a bare `solid` is
+                // given its space by `patch_bare_solid`).
+                if !(line.starts_with("solid ") || line.trim_ascii_end() == "solid") {
+                    return None;
+                }
+                let name = line.trim_ascii()[5..].trim_ascii();
+                let k = match out.part_names.iter().position(|n| n == name) {
+                    Some(k) => k,
+                    None => {
+                        out.part_names.push(name.to_owned());
+                        out.part_names.len() - 1
+                    }
+                };
+                block = Some(k as u32);
+            }
+            continue;
+        };
+        let numbers = |words: &mut std::str::SplitAsciiWhitespace<'_>| -> Option<[f32; 3]> {
+            let mut p = [0.0f32; 3];
+            for c in &mut p {
+                *c = words.next()?.parse().ok().filter(|x: &f32| x.is_finite())?;
+            }
+            words.next().is_none().then_some(p)
+        };
+        match (step, first) {
+            (0, "endsolid") => block = None,
+            (0, "facet") => {
+                (words.next()? == "normal").then_some(())?;
+                numbers(&mut words)?;
+                out.facet_lines.push((i + 1) as u32);
+                out.face_parts.push(part);
+                step = 1;
+            }
+            (1, "outer") => {
+                (words.next()? == "loop" && words.next().is_none()).then_some(())?;
+                step = 2;
+            }
+            (2..=4, "vertex") => {
+                out.corners.push(numbers(&mut words)?);
+                step += 1;
+            }
+            (5, "endloop") | (6, "endfacet") if words.next().is_none() => {
+                step = if step == 6 { 0 } else { 6 };
+            }
+            _ => return None,
+        }
+    }
+    block.is_none().then_some(out)
 }
 
 /// [`parse_stl`] on a file: a binary one is read in blocks of records, never whole; an ASCII
@@ -377,6 +481,74 @@ mod tests {
         let loaded = load_stl(&path).expect("reads");
         std::fs::remove_file(&path).ok();
         assert_eq!(loaded, parsed);
+    }
+
+    /// Every ASCII STL of the workspace, and of the folders in `MASSPROPS_STL_DIRS`, reads on the
+    /// fast path as through `stl_io`, or the fast path declines it.
+    #[test]
+    fn every_ascii_stl_file_reads_as_stl_io_reads_it_or_is_declined() {
+        let files = super::super::test_files("stl", "MASSPROPS_STL_DIRS");
+        let (mut equal, mut declined) = (0, 0);
+        for file in &files {
+            let bytes = std::fs::read(file).expect("readable");
+            if !is_ascii(&bytes) {
+                continue;
+            }
+            let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(&bytes);
+            let general = ascii_general(bytes, file);
+            match (ascii_fast(bytes), general) {
+                (Some(_), Ok(general)) => {
+                    let fast = parse_stl(bytes, file).expect("reads");
+                    assert_eq!(bits(fast.mesh.positions()), bits(general.mesh.positions()));
+                    assert_eq!(fast, general, "{}", file.display());
+                    equal += 1;
+                }
+                (Some(_), Err(e)) => panic!("{}: stl_io refuses ({e})", file.display()),
+                (None, _) => declined += 1,
+            }
+        }
+        eprintln!("ASCII STL files: {equal} equal on both paths, {declined} declined");
+        assert!(equal >= 1);
+    }
+
+    /// A two-block ASCII file with `\r\n`, blank lines and numbers written every way reads as
+    /// through `stl_io`; each departure from the plain grammar is declined and still reads (or
+    /// fails) as before.
+    #[test]
+    fn ascii_fast_path_matches_stl_io_and_declines_the_rest() {
+        let facet = |x: &str| {
+            format!(
+                "  facet normal 0 0 1\r\n    outer loop\r\n      vertex {x} 0 0\r\n      vertex 1 \
+                 1e0 0\r\n\r\n      vertex 0 1 -0.0\r\n    endloop\r\n  endfacet\r\n"
+            )
+        };
+        let text = format!(
+            "solid a\r\n{}{}endsolid a\r\nsolid\r\n{}endsolid\r\n",
+            facet("0"),
+            facet("2.5"),
+            facet(".25")
+        );
+        let path = Path::new("t.stl");
+        assert!(ascii_fast(text.as_bytes()).is_some());
+        let fast = parse_stl(text.as_bytes(), path).expect("reads");
+        assert_eq!(fast, ascii_general(text.as_bytes(), path).expect("reads"));
+        assert_eq!(fast.part_names, ["a", ""]);
+        assert_eq!(fast.face_lines, [2, 10, 20]);
+        for (what, from, to) in [
+            ("a missing normal", "facet normal 0 0 1", "facet normal 0 0"),
+            ("a non-finite vertex", "vertex 1 \
+                 1e0", "vertex inf 1e0"),
+            ("an indented solid", "a\r\nsolid\r\n", "a\r\n  solid\r\n"),
+            ("a block left open", "endsolid\r\n", ""),
+            ("text between blocks", "solid\r\n", "note\r\nsolid\r\n"),
+            ("a word after endloop", "endloop", "endloop x"),
+        ] {
+            let changed = text.replacen(from, to, 1);
+            assert_ne!(changed, text, "{what}");
+            assert!(ascii_fast(changed.as_bytes()).is_none(), "{what}");
+            let (a, b) = (parse_stl(changed.as_bytes(), path), ascii_general(changed.as_bytes(), path));
+            assert_eq!(format!("{a:?}"), format!("{b:?}"), "{what}");
+        }
     }
 
     /// Every binary STL of the workspace, and of the folders in `MASSPROPS_STL_DIRS`, reads as
