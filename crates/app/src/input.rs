@@ -130,18 +130,20 @@ pub enum InputError {
 }
 
 /// Where the file's bytes come from.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub enum Source<'a> {
     /// Read the file.
     Path(&'a Path),
-    /// Bytes already read from this path (the app reads with a progress bar).
+    /// Bytes already read from this path.
     Bytes(&'a [u8], &'a Path),
+    /// Read the file, reporting the fraction read (the app's progress bar).
+    Reported(&'a Path, &'a dyn Fn(f32)),
 }
 
 impl Source<'_> {
     fn path(&self) -> &Path {
         match self {
-            Source::Path(p) | Source::Bytes(_, p) => p,
+            Source::Path(p) | Source::Bytes(_, p) | Source::Reported(p, _) => p,
         }
     }
 }
@@ -159,7 +161,7 @@ pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputE
     };
     if massprops::io::is_body_file(path) {
         let body = match source {
-            Source::Path(p) => BodyFile::read(p),
+            Source::Path(p) | Source::Reported(p, _) => BodyFile::read(p),
             Source::Bytes(bytes, p) => std::str::from_utf8(bytes)
                 .map_err(|e| MeshError::Malformed {
                     path: p.to_path_buf(),
@@ -173,6 +175,7 @@ pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputE
     }
     let mut file = match source {
         Source::Path(p) => massprops::load_mesh(p),
+        Source::Reported(p, progress) => massprops::load_mesh_reporting(p, progress),
         Source::Bytes(bytes, p) => massprops::parse_mesh(bytes, p),
     }
     .map_err(InputError::Read)?;

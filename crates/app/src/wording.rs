@@ -52,6 +52,15 @@ pub fn significant(v: f64, digits: usize) -> String {
     }
 }
 
+/// A count as "5.23 M", "871 k" or "950".
+pub fn millions(n: usize) -> String {
+    match n {
+        0..1_000 => n.to_string(),
+        1_000..1_000_000 => format!("{} k", significant(n as f64 / 1e3, 3)),
+        _ => format!("{} M", significant(n as f64 / 1e6, 3)),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -63,5 +72,12 @@ mod tests {
         assert_eq!(face_line(0, &[]), "0");
         assert_eq!(list(&[1, 4, 9]), "1, 4, 9");
         assert_eq!(list(&[]), "");
+    }
+
+    #[test]
+    fn counts_read_in_thousands_and_millions() {
+        assert_eq!(millions(950), "950");
+        assert_eq!(millions(871_414), "871 k");
+        assert_eq!(millions(5_227_836), "5.23 M");
     }
 }

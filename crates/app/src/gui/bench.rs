@@ -1,6 +1,7 @@
 //! `--bench-frames N`: the app's frame time measured on its real window (percentiles of N
 //! frames after a warm-up, the UI's own work, eframe's whole-frame work), then picking timed
-//! through a grid of pixels; both printed as one line each before the window closes.
+//! through a grid of pixels, and the resident memory then; each printed as one line before the
+//! window closes.
 
 use std::time::{Duration, Instant};
 
@@ -99,8 +100,18 @@ impl Bench {
             cpu_mean
         );
         picking(lab, view);
+        if let Some(kib) = resident_kib() {
+            println!("resident memory {:.1} MB", kib as f64 / 1024.0);
+        }
         true
     }
+}
+
+/// The process's resident memory (`VmRSS`, KiB), where the system says (Linux).
+fn resident_kib() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
 }
 
 /// Times picking the body through a grid of pixels over the framed view (800 × 600).

@@ -14,7 +14,7 @@ use massprops::{
 use nalgebra::{Point3, Vector3};
 
 use super::error::LabError;
-use super::geometry::TriMesh;
+use super::geometry::{DRAW_BUDGET, Drawn, TriMesh};
 use super::parts::PartModel;
 use super::picking::Bvh;
 use super::samples::{SAMPLE_BODIES, SAMPLE_PART_MESHES, SAMPLES};
@@ -71,6 +71,9 @@ pub struct LoadedBody {
     pub mesh: Arc<TriMesh>,
     /// Picking index over `mesh`.
     pub bvh: Arc<Bvh>,
+    /// What the 3D view draws instead of `mesh` when it has more than [`DRAW_BUDGET`]
+    /// triangles; `None`: `mesh` itself.
+    pub drawn: Option<Arc<Drawn>>,
     /// Bounding sphere (centre, radius) of `mesh`, mesh coordinates.
     pub sphere: (Point3<f64>, f64),
     /// Exact, bounding-box and point-mass properties at density 1, plus diagnostics and warnings.
@@ -155,6 +158,7 @@ impl LoadedBody {
         Self {
             name: name.to_owned(),
             sphere: mesh.bounding_sphere(),
+            drawn: Drawn::of(&mesh, DRAW_BUDGET).map(Arc::new),
             mesh: Arc::new(mesh),
             bvh: Arc::new(bvh),
             analysis,
@@ -255,6 +259,7 @@ impl LoadedBody {
                 massprops::approximations::point_mass_properties(&merged, whole)?;
             body.analysis.properties = body.analysis.point_masses;
             body.sphere = mesh.bounding_sphere();
+            body.drawn = Drawn::of(&mesh, DRAW_BUDGET).map(Arc::new);
             body.mesh = Arc::new(mesh);
             body.bvh = Arc::new(bvh);
         } else {

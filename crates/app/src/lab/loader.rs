@@ -2,7 +2,6 @@
 //! index run on a worker thread that reports through a channel, so a large mesh never freezes the
 //! UI.
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::thread;
@@ -95,29 +94,16 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let io = |source: std::io::Error| {
-        LabError::from(massprops::MeshError::Io {
-            path: path.to_path_buf(),
-            source: source.into(),
-        })
-    };
-    let mut file = std::fs::File::open(path).map_err(io)?;
-    let total = file.metadata().map(|m| m.len()).unwrap_or(0).max(1);
-    let mut bytes = Vec::with_capacity(usize::try_from(total).unwrap_or(0));
-    let mut chunk = vec![0u8; 1 << 20];
-    loop {
-        let n = file.read(&mut chunk).map_err(io)?;
-        if n == 0 {
-            break;
-        }
-        bytes.extend_from_slice(&chunk[..n]);
-        progress("reading", bytes.len() as f32 / total as f32);
-    }
-    progress("parsing and mass properties", 0.0);
     // The one input path every command takes, at density 1 with the default repairs (the lab
-    // rescales mass and size live).
-    let resolved = input::resolve(Source::Bytes(&bytes, path), &Request::default())?;
-    drop(bytes);
+    // rescales mass and size live); the file is read in blocks, never whole.
+    let reading = |f: f32| {
+        if f < 1.0 {
+            progress("reading", f);
+        } else {
+            progress("checking the mesh and its mass properties", 0.0);
+        }
+    };
+    let resolved = input::resolve(Source::Reported(path, &reading), &Request::default())?;
     progress("picking index", 0.0);
     match resolved {
         Resolved::Mesh { file, analysis } => Ok(LoadedBody::analysed(

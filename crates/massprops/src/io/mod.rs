@@ -74,10 +74,19 @@ impl MeshFile {
 }
 
 /// Loads an `.obj` or `.stl` file (chosen by extension, case-insensitive) as one body.
+///
+/// OBJ and binary STL files are read in blocks: the whole file is never in memory at once
+/// (unless the OBJ fast path declines it; see [`parse_obj`]).
 pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
+    load_mesh_reporting(path, &|_| {})
+}
+
+/// [`load_mesh`], calling `progress` with the fraction of the file read so far (0 to 1) after
+/// each block.
+pub fn load_mesh_reporting(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
     match extension(path).as_deref() {
-        Some("obj") => return obj::load_obj(path),
-        Some("stl") => return stl::load_stl(path),
+        Some("obj") => return obj::load_obj(path, progress),
+        Some("stl") => return stl::load_stl(path, progress),
         _ => {}
     }
     let bytes = std::fs::read(path).map_err(|source| MeshError::Io {

@@ -44,7 +44,7 @@ fn parse_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
 
 /// [`parse_obj`] on a file read block by block: the fast path never holds the whole file; only
 /// a file it declines (or one with an error to locate) is read again whole.
-pub(super) fn load_obj(path: &Path) -> Result<MeshFile, MeshError> {
+pub(super) fn load_obj(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
     let io = |source: std::io::Error| MeshError::Io {
         path: path.to_path_buf(),
         source: source.into(),
@@ -55,12 +55,15 @@ pub(super) fn load_obj(path: &Path) -> Result<MeshFile, MeshError> {
     let mut block = Vec::with_capacity(BLOCK + 4096);
     let mut done = false;
     let mut readable = true;
+    let mut read = 0;
     while !done && readable {
         let filled = block.len();
         block.resize(filled + BLOCK, 0);
         let n = read_full(&mut file, &mut block[filled..]).map_err(io)?;
         block.truncate(filled + n);
         done = n == 0;
+        read += n;
+        progress(read as f32 / size.max(1) as f32);
         // Whole lines only, but the last line at the end of the file.
         let cut = if done {
             block.len()

@@ -176,7 +176,7 @@ fn ascii_fast(bytes: &[u8]) -> Option<AsciiParsed> {
 
 /// [`parse_stl`] on a file: a binary one is read in blocks of records, never whole; an ASCII
 /// one is read whole.
-pub(super) fn load_stl(path: &Path) -> Result<MeshFile, MeshError> {
+pub(super) fn load_stl(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
     use std::io::Read as _;
     let io = |source: std::io::Error| MeshError::Io {
         path: path.to_path_buf(),
@@ -208,6 +208,7 @@ pub(super) fn load_stl(path: &Path) -> Result<MeshFile, MeshError> {
         let whole = (pending.len() / 50).min((count - read) as usize) * 50;
         binary_records(&pending[..whole], read, &mut corners).map_err(malformed)?;
         read += (whole / 50) as u64;
+        progress(read as f32 / count.max(1) as f32);
         pending.drain(..whole);
         if n == 0 {
             break;
@@ -478,7 +479,7 @@ mod tests {
         // From a path, in blocks (30 000 records are more than three blocks).
         let path = std::env::temp_dir().join(format!("massprops-stl-{}.stl", std::process::id()));
         std::fs::write(&path, &bytes).expect("writable");
-        let loaded = load_stl(&path).expect("reads");
+        let loaded = load_stl(&path, &|_| {}).expect("reads");
         std::fs::remove_file(&path).ok();
         assert_eq!(loaded, parsed);
     }
@@ -536,8 +537,12 @@ mod tests {
         assert_eq!(fast.face_lines, [2, 10, 20]);
         for (what, from, to) in [
             ("a missing normal", "facet normal 0 0 1", "facet normal 0 0"),
-            ("a non-finite vertex", "vertex 1 \
-                 1e0", "vertex inf 1e0"),
+            (
+                "a non-finite vertex",
+                "vertex 1 \
+                 1e0",
+                "vertex inf 1e0",
+            ),
             ("an indented solid", "a\r\nsolid\r\n", "a\r\n  solid\r\n"),
             ("a block left open", "endsolid\r\n", ""),
             ("text between blocks", "solid\r\n", "note\r\nsolid\r\n"),
@@ -546,7 +551,10 @@ mod tests {
             let changed = text.replacen(from, to, 1);
             assert_ne!(changed, text, "{what}");
             assert!(ascii_fast(changed.as_bytes()).is_none(), "{what}");
-            let (a, b) = (parse_stl(changed.as_bytes(), path), ascii_general(changed.as_bytes(), path));
+            let (a, b) = (
+                parse_stl(changed.as_bytes(), path),
+                ascii_general(changed.as_bytes(), path),
+            );
             assert_eq!(format!("{a:?}"), format!("{b:?}"), "{what}");
         }
     }
@@ -604,7 +612,7 @@ mod tests {
         bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
         let path = std::env::temp_dir().join(format!("massprops-nan-{}.stl", std::process::id()));
         std::fs::write(&path, &bytes).expect("writable");
-        let loaded = load_stl(&path).map(|_| ()).expect_err("refused");
+        let loaded = load_stl(&path, &|_| {}).map(|_| ()).expect_err("refused");
         std::fs::remove_file(&path).ok();
         let parsed = parse_stl(&bytes, Path::new("t.stl"))
             .map(|_| ())

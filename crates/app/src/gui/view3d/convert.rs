@@ -34,10 +34,61 @@ pub fn size(v: egui::Vec2) -> Vector2<f64> {
     Vector2::new(f64::from(v.x), f64::from(v.y))
 }
 
-/// A flat-shaded GPU mesh (vertices unshared so every triangle has its face normal: the
-/// T-handle's edges stay crisp) in coordinates relative to `origin`. With `colors` (one per
-/// triangle; `None` leaves the triangle out), each triangle gets its own colour.
+/// Above this many triangles a single-colour mesh is drawn with shared, smooth-shaded vertices
+/// (a scan: triangles far smaller than a pixel's worth of shading detail), below it flat-shaded
+/// with unshared vertices (a model: crisp edges).
+pub const SMOOTH_ABOVE: usize = 100_000;
+
+/// The body's GPU mesh in coordinates relative to `origin`. With `colors` (one per triangle;
+/// `None` leaves the triangle out), each triangle gets its own colour, flat-shaded; without,
+/// see [`SMOOTH_ABOVE`].
 pub fn cpu_mesh(mesh: &TriMesh, origin: &Point3<f64>, colors: &[Option<[u8; 3]>]) -> CpuMesh {
+    if colors.is_empty() && mesh.triangles.len() > SMOOTH_ABOVE {
+        smooth_mesh(mesh, origin)
+    } else {
+        flat_mesh(mesh, origin, colors)
+    }
+}
+
+/// Shared vertices with area-weighted vertex normals and an index buffer: one GPU vertex per
+/// mesh vertex (a closed triangle mesh has about half as many vertices as triangles, so a sixth
+/// of the flat mesh's vertices to shade and store).
+fn smooth_mesh(mesh: &TriMesh, origin: &Point3<f64>) -> CpuMesh {
+    let mut sums = vec![nalgebra::Vector3::<f64>::zeros(); mesh.positions.len()];
+    for t in &mesh.triangles {
+        let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+        // The cross product is twice the area along the normal: larger faces weigh more.
+        let n = (b - a).cross(&(c - a));
+        for &i in t {
+            sums[i as usize] += n;
+        }
+    }
+    let normals = sums
+        .iter()
+        .map(|n| {
+            let n = n.try_normalize(0.0).unwrap_or_else(nalgebra::Vector3::z);
+            Vec3::new(n.x as f32, n.y as f32, n.z as f32)
+        })
+        .collect();
+    let positions = mesh
+        .positions
+        .iter()
+        .map(|p| {
+            let p = p - origin;
+            Vec3::new(p.x as f32, p.y as f32, p.z as f32)
+        })
+        .collect();
+    CpuMesh {
+        positions: Positions::F32(positions),
+        indices: Indices::U32(mesh.triangles.iter().flatten().copied().collect()),
+        normals: Some(normals),
+        ..Default::default()
+    }
+}
+
+/// Flat shading: vertices unshared so every triangle has its face normal (the T-handle's edges
+/// stay crisp).
+fn flat_mesh(mesh: &TriMesh, origin: &Point3<f64>, colors: &[Option<[u8; 3]>]) -> CpuMesh {
     let mut positions = Vec::with_capacity(mesh.triangles.len() * 3);
     let mut normals = Vec::with_capacity(mesh.triangles.len() * 3);
     let mut vertex_colors = Vec::new();
@@ -126,6 +177,32 @@ mod tests {
         assert_eq!((t.w.x, t.w.y, t.w.z), (1.0, 2.0, 3.0));
         let p = FrameParams::new(&OrbitCamera::default(), &m, &Point3::new(10.0, 0.0, 0.0));
         assert_eq!((p.model.w.x, p.model.w.y), (11.0, 2.0));
+    }
+
+    #[test]
+    fn a_scan_is_drawn_with_one_shared_vertex_per_mesh_vertex_and_outward_normals() {
+        let mesh = TriMesh::from_poly(
+            &massprops::shapes::torus(1.0, 0.3, 400, 200)
+                .triangulated()
+                .build(),
+        );
+        assert!(mesh.triangles.len() > SMOOTH_ABOVE);
+        let cpu = cpu_mesh(&mesh, &Point3::origin(), &[]);
+        let Positions::F32(ps) = &cpu.positions else {
+            panic!("f32 positions")
+        };
+        assert_eq!(ps.len(), mesh.positions.len());
+        let Indices::U32(indices) = &cpu.indices else {
+            panic!("u32 indices")
+        };
+        assert_eq!(indices.len(), 3 * mesh.triangles.len());
+        // On a torus the outward normal at a point is its offset from the tube's centre circle.
+        let normals = cpu.normals.expect("normals");
+        for (p, n) in ps.iter().zip(&normals) {
+            let ring = Vec3::new(p.x, p.y, 0.0).normalize();
+            let outward = (*p - ring).normalize();
+            assert!(n.dot(outward) > 0.999, "{n:?} at {p:?}");
+        }
     }
 
     #[test]

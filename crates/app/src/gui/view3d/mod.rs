@@ -151,10 +151,19 @@ impl View3d {
                     && s.generation() != Some(lab.generation())
                 {
                     let body = lab.primary().body();
-                    s.set_mesh(
-                        lab.generation(),
-                        &convert::cpu_mesh(&body.mesh, &origin, &triangle_colors(body)),
-                    );
+                    let colors = triangle_colors(body);
+                    let cpu = match &body.drawn {
+                        Some(drawn) => {
+                            let colors: Vec<_> = if colors.is_empty() {
+                                colors
+                            } else {
+                                drawn.from.iter().map(|&k| colors[k as usize]).collect()
+                            };
+                            convert::cpu_mesh(&drawn.mesh, &origin, &colors)
+                        }
+                        None => convert::cpu_mesh(&body.mesh, &origin, &colors),
+                    };
+                    s.set_mesh(lab.generation(), &cpu);
                 }
                 let scene = Arc::clone(scene);
                 let callback = egui_glow::CallbackFn::new(move |info, _painter| {
@@ -182,6 +191,14 @@ impl View3d {
         }
         self.paint_overlay(ui, rect, lab, selection);
         let mut hint = HINT.to_owned();
+        if let Some(drawn) = &lab.primary().body().drawn {
+            hint = format!(
+                "Drawn simplified: {} of {} triangles (the drawing budget of a software \
+                 renderer); every number and pick uses them all · {hint}",
+                crate::wording::millions(drawn.mesh.triangles.len()),
+                crate::wording::millions(lab.primary().body().mesh.triangles.len()),
+            );
+        }
         if lab.settings().view.wireframe
             && lab.primary().body().mesh.edges.len() > WIREFRAME_MAX_EDGES
         {
