@@ -42,20 +42,35 @@ impl EdgeTable {
     /// Collects and groups the sides of every face of `mesh`. A side whose two corners are the
     /// same vertex (a repeated corner) is no edge and is left out.
     pub fn new(mesh: &PolyMesh) -> Self {
-        fn sides(face: &[u32]) -> impl Iterator<Item = (u32, u32)> + '_ {
-            let last = face[face.len() - 1];
-            std::iter::once(last)
-                .chain(face.iter().copied())
-                .zip(face.iter().copied())
-                .filter(|(a, b)| a != b)
+        match mesh.as_triangles() {
+            // The common case without the per-face slices: three sides a triangle.
+            Some(triangles) => Self::from_sides(mesh.positions().len(), |side| {
+                for (f, &[a, b, c]) in triangles.iter().enumerate() {
+                    for (from, to) in [(a, b), (b, c), (c, a)] {
+                        if from != to {
+                            side(from, to, f as u32);
+                        }
+                    }
+                }
+            }),
+            None => Self::from_sides(mesh.positions().len(), |side| {
+                for (f, face) in mesh.faces().enumerate() {
+                    let last = face[face.len() - 1];
+                    for (from, to) in std::iter::once(last).chain(face.iter().copied()).zip(face) {
+                        if from != *to {
+                            side(from, *to, f as u32);
+                        }
+                    }
+                }
+            }),
         }
-        let vertices = mesh.positions().len();
+    }
+
+    /// The table of the sides `each` gives (called twice: to count, then to place), as
+    /// `side(from, to, face)`.
+    fn from_sides(vertices: usize, each: impl Fn(&mut dyn FnMut(u32, u32, u32))) -> Self {
         let mut starts = vec![0u32; vertices + 1];
-        for face in mesh.faces() {
-            for (a, b) in sides(face) {
-                starts[a.min(b) as usize + 1] += 1;
-            }
-        }
+        each(&mut |a, b, _| starts[a.min(b) as usize + 1] += 1);
         for v in 0..vertices {
             starts[v + 1] += starts[v];
         }
@@ -68,19 +83,17 @@ impl EdgeTable {
             forward: false,
         };
         let mut records = vec![empty; total];
-        for (f, face) in mesh.faces().enumerate() {
-            for (a, b) in sides(face) {
-                let lo = a.min(b);
-                let slot = &mut next[lo as usize];
-                records[*slot as usize] = HalfEdge {
-                    lo,
-                    hi: a.max(b),
-                    face: f as u32,
-                    forward: a < b,
-                };
-                *slot += 1;
-            }
-        }
+        each(&mut |a, b, face| {
+            let lo = a.min(b);
+            let slot = &mut next[lo as usize];
+            records[*slot as usize] = HalfEdge {
+                lo,
+                hi: a.max(b),
+                face,
+                forward: a < b,
+            };
+            *slot += 1;
+        });
         // Buckets hold a few records each (about six on a triangle mesh): an insertion sort on
         // the high vertex, stable, so each group lists its faces in ascending order.
         for w in starts.windows(2) {
