@@ -1,8 +1,8 @@
 //! The fast path for OBJ: one pass over the bytes for the records nearly every mesh file is made
 //! of, welding as it goes. It reads `v` (exactly three numbers), `vt` (two or three), `vn`
 //! (three), `f` (three or more corners `v`, `v/vt`, `v//vn` or `v/vt/vn`, positive or negative),
-//! `o`, `g`, `s`, `usemtl`, `mtllib` and comments, and declines everything else — a `w` or
-//! colours on a `v`, `l` and `p`, a face of fewer than three corners, a reference to an element
+//! `o`, `g`, `s`, `usemtl`, `mtllib` and comments, and declines everything else — a `w` on a
+//! `v` (or colours on only some), `l` and `p`, a face of fewer than three corners, a reference to an element
 //! not yet defined, a trailing comment, a lone carriage return, a byte-order mark, whitespace
 //! other than spaces and tabs between words, any other keyword — so that the caller hands the
 //! same bytes to `tobj`: every file either path accepts gives the same mesh bit for bit, and every
@@ -35,6 +35,8 @@ pub(super) struct FastObj {
     used: u32,
     texcoords: usize,
     normals: usize,
+    /// Whether the vertices carry colours, once the first is read.
+    coloured: Option<bool>,
     indices: Vec<u32>,
     arities: Vec<usize>,
     face_lines: Vec<u32>,
@@ -59,6 +61,7 @@ impl FastObj {
             used: 0,
             texcoords: 0,
             normals: 0,
+            coloured: None,
             indices: Vec::with_capacity(6 * vertices),
             arities: Vec::with_capacity(2 * vertices),
             face_lines: Vec::with_capacity(2 * vertices),
@@ -128,7 +131,18 @@ impl FastObj {
         match keyword {
             "v" => {
                 let p = [words.number()?, words.number()?, words.number()?];
+                // Vertex colours (`v x y z r g b`, ignored here) only when every vertex has
+                // them: `tobj` refuses a face on a vertex without colours once any has some.
+                let coloured = words.peek().is_some();
+                if coloured {
+                    for _ in 0..3 {
+                        words.number()?;
+                    }
+                }
                 words.end()?;
+                if *self.coloured.get_or_insert(coloured) != coloured {
+                    return Err(());
+                }
                 self.vertices.push(Point3::from(p));
                 self.first_use.push(UNUSED);
             }
@@ -166,7 +180,7 @@ impl FastObj {
                 plain(line)?;
                 // `tobj` takes the name after the line's first space and refuses an empty one.
                 let name = line.split_once(' ').map_or("", |(_, n)| n.trim());
-                if name.is_empty() || !line.is_ascii() {
+                if name.is_empty() {
                     return Err(());
                 }
             }
