@@ -5,6 +5,7 @@
 //! - [`timeseries`]: the one time-series schema (CSV columns) of `simulate` and the app's plots;
 //! - [`input`]: the one input path, a file and the mass and repair flags → a body;
 //! - [`wording`]: how faces, lines and lists are written, for every front end's words;
+//! - [`platform`]: what the system tells about the process (its memory);
 //! - [`cli`]: the `props`, `simulate` and `export` commands and their reports;
 //! - [`lab`]: the app's headless model (specimens, commands, loader, bodies of parts, picking);
 //! - `gui` (feature `gui`, default on): the desktop app drawing the lab with eframe and three-d.
@@ -18,5 +19,6 @@ pub mod findings;
 pub mod gui;
 pub mod input;
 pub mod lab;
+pub mod platform;
 pub mod timeseries;
 pub mod wording;

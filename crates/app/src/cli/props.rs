@@ -145,9 +145,17 @@ fn timings(args: &PropsArgs, request: &Request) -> Result<(), CliError> {
     let start = Instant::now();
     let _ = file.analyze(request.method, request.spec, &request.repairs);
     let analysis = start.elapsed();
+    let peak = crate::platform::memory()
+        .map(|m| {
+            format!(
+                ", peak resident memory {:.1} MB",
+                m.peak_kib as f64 / 1024.0
+            )
+        })
+        .unwrap_or_default();
     eprintln!(
         "timings ({} triangles): read+parse+weld {:.1} ms, volume integration {:.1} ms, \
-         full analysis (integration, diagnostics, defects, approximations) {:.1} ms",
+         full analysis (integration, diagnostics, defects, approximations) {:.1} ms{peak}",
         mesh.triangle_count(),
         ms(parsed),
         ms(integration),

@@ -100,18 +100,15 @@ impl Bench {
             cpu_mean
         );
         picking(lab, view);
-        if let Some(kib) = resident_kib() {
-            println!("resident memory {:.1} MB", kib as f64 / 1024.0);
+        if let Some(m) = crate::platform::memory() {
+            println!(
+                "resident memory {:.1} MB (peak {:.1} MB)",
+                m.resident_kib as f64 / 1024.0,
+                m.peak_kib as f64 / 1024.0
+            );
         }
         true
     }
-}
-
-/// The process's resident memory (`VmRSS`, KiB), where the system says (Linux).
-fn resident_kib() -> Option<u64> {
-    let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
-    line.split_whitespace().nth(1)?.parse().ok()
 }
 
 /// Times picking the body through a grid of pixels over the framed view (800 × 600).

@@ -2,8 +2,6 @@
 //! edges for the wireframe overlay. Plain f64 data in the mesh's own coordinates; the 3D view
 //! converts it to GPU buffers and `picking` indexes it.
 
-use std::collections::HashSet;
-
 use massprops::PolyMesh;
 use nalgebra::{Point3, Vector3};
 
@@ -14,9 +12,15 @@ pub struct TriMesh {
     pub positions: Vec<Point3<f64>>,
     /// Triangles, counter-clockwise seen from outside like the source faces.
     pub triangles: Vec<[u32; 3]>,
-    /// The source polygons' edges, each once (triangulation diagonals excluded).
+    /// The source polygons' edges, each once (triangulation diagonals excluded), for the
+    /// wireframe; empty when there are more than [`WIREFRAME_MAX_EDGES`] (never drawn, so
+    /// never kept).
     pub edges: Vec<[u32; 2]>,
 }
+
+/// Above this many polygon edges the wireframe is not drawn (egui would spend more time on it
+/// than the whole frame budget), and the edges are not kept.
+pub const WIREFRAME_MAX_EDGES: usize = 60_000;
 
 impl TriMesh {
     /// Triangulates every face of `mesh` (ear clipping, so non-convex planar faces such as the
@@ -24,11 +28,17 @@ impl TriMesh {
     pub fn from_poly(mesh: &PolyMesh) -> Self {
         let positions = mesh.positions().to_vec();
         let mut triangles = Vec::with_capacity(mesh.triangle_count());
-        let mut edges = HashSet::new();
+        // Each edge is one or two face sides on all but non-manifold edges: past twice the
+        // limit in sides the wireframe is off.
+        let sides = mesh.triangle_count() + 2 * mesh.face_count();
+        let keep_edges = sides <= 2 * WIREFRAME_MAX_EDGES;
+        let mut edges = Vec::new();
         for face in mesh.faces() {
-            for (k, &a) in face.iter().enumerate() {
-                let b = face[(k + 1) % face.len()];
-                edges.insert([a.min(b), a.max(b)]);
+            if keep_edges {
+                for (k, &a) in face.iter().enumerate() {
+                    let b = face[(k + 1) % face.len()];
+                    edges.push([a.min(b), a.max(b)]);
+                }
             }
             if face.len() == 3 {
                 triangles.push([face[0], face[1], face[2]]);
@@ -36,8 +46,11 @@ impl TriMesh {
                 ear_clip(&positions, face, &mut triangles);
             }
         }
-        let mut edges: Vec<[u32; 2]> = edges.into_iter().collect();
         edges.sort_unstable();
+        edges.dedup();
+        if edges.len() > WIREFRAME_MAX_EDGES {
+            edges = Vec::new();
+        }
         Self {
             positions,
             triangles,

@@ -13,10 +13,11 @@ use egui::{Color32, PointerButton, Sense, Stroke};
 use nalgebra::{Matrix4, Point3, Vector3};
 
 use self::camera::OrbitCamera;
+use crate::lab::geometry::WIREFRAME_MAX_EDGES;
 use crate::lab::settings::GhostLayout;
 use crate::lab::{Command, Lab, PRIMARY};
 use convert::FrameParams;
-use overlay::{Overlay, Selection, WIREFRAME_MAX_EDGES};
+use overlay::{Overlay, Selection};
 use scene::Scene;
 
 /// What a primary-button drag is doing.
@@ -200,7 +201,7 @@ impl View3d {
             );
         }
         if lab.settings().view.wireframe
-            && lab.primary().body().mesh.edges.len() > WIREFRAME_MAX_EDGES
+            && lab.primary().body().analysis.diagnostics.edges > WIREFRAME_MAX_EDGES
         {
             hint = format!("Wireframe off above {WIREFRAME_MAX_EDGES} edges · {hint}");
         }

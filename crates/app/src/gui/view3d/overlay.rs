@@ -12,10 +12,6 @@ use crate::lab::placement::Placement;
 use crate::lab::settings::{Equivalent, InertiaSource, ViewSettings};
 use crate::lab::{Lab, Specimen};
 
-/// Above this many polygon edges the wireframe is skipped: egui would spend more time on it than
-/// the whole frame budget.
-pub const WIREFRAME_MAX_EDGES: usize = 60_000;
-
 /// A straight line in world space.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Segment {
@@ -320,7 +316,7 @@ const LABEL_MERGE: f64 = 0.3;
 
 fn wireframe(o: &mut Overlay, c: &Context<'_>) {
     let mesh = &c.specimen.body().mesh;
-    if !c.view.wireframe || mesh.edges.len() > WIREFRAME_MAX_EDGES {
+    if !c.view.wireframe {
         return;
     }
     let color = Color32::from_rgba_unmultiplied(20, 20, 20, 200);
