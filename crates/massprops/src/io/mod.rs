@@ -10,6 +10,8 @@ mod stl;
 use std::path::Path;
 
 pub use body::{BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
+#[cfg(fuzzing)]
+pub use obj::fast_path_agrees;
 pub use obj::parse_obj;
 pub use stl::parse_stl;
 

@@ -36,6 +36,32 @@ fn fast(text: &str) -> Option<Parsed> {
     Some(fast.finish())
 }
 
+/// For the fuzzer (`--cfg fuzzing`): whether the fast path, where it reads `bytes` at all,
+/// reads them as tobj does (the same positions bit for bit, faces, lines and parts).
+#[cfg(fuzzing)]
+#[doc(hidden)]
+pub fn fast_path_agrees(bytes: &[u8]) -> bool {
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return true;
+    };
+    let Some(f) = fast(text) else {
+        return true;
+    };
+    let Ok(g) = general(text, Path::new("fuzz.obj")) else {
+        return false;
+    };
+    let bits = |p: &Parsed| -> Vec<[u64; 3]> {
+        p.positions
+            .iter()
+            .map(|q| [q.x.to_bits(), q.y.to_bits(), q.z.to_bits()])
+            .collect()
+    };
+    bits(&f) == bits(&g)
+        && (f.indices, f.arities, f.face_lines, f.runs, f.two_corner)
+            == (g.indices, g.arities, g.face_lines, g.runs, g.two_corner)
+        && (f.records.objects, f.records.groups) == (g.records.objects, g.records.groups)
+}
+
 /// The general path alone, on bytes the fast path declined.
 fn parse_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let text = utf8(bytes, path)?;
