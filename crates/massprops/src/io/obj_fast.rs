@@ -250,17 +250,7 @@ fn plain(line: &str) -> Result<(), ()> {
 /// defined so far, as a zero-based index, and where it ends; `Err` when there is none there or
 /// it points at nothing yet.
 fn index(bytes: &[u8], mut at: usize, count: usize) -> Result<(usize, usize), ()> {
-    let negative = match bytes.get(at) {
-        Some(b'-') => {
-            at += 1;
-            true
-        }
-        Some(b'+') => {
-            at += 1;
-            false
-        }
-        _ => false,
-    };
+    let negative = sign(bytes, &mut at);
     let start = at;
     let mut n: usize = 0;
     while let Some(&b) = bytes.get(at) {
@@ -298,58 +288,35 @@ fn fast_decimal(bytes: &[u8]) -> Option<f64> {
         1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
         1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
     ];
-    let (negative, mut at) = match bytes.first()? {
-        b'-' => (true, 1),
-        b'+' => (false, 1),
-        _ => (false, 0),
-    };
+    let mut at = 0;
+    let negative = sign(bytes, &mut at);
     let mut mantissa: u64 = 0;
+    // Significant digits (leading zeros add none); wrapping is harmless past 19, declined below.
     let mut digits = 0;
-    let mut exponent: i32 = 0;
-    let mut seen = false;
-    while let Some(&b) = bytes.get(at) {
-        if !b.is_ascii_digit() {
-            break;
-        }
-        // Leading zeros add no digit.
-        if mantissa != 0 || b != b'0' {
-            digits += 1;
-        }
-        mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
-        seen = true;
-        at += 1;
-    }
-    if bytes.get(at) == Some(&b'.') {
-        at += 1;
-        while let Some(&b) = bytes.get(at) {
-            if !b.is_ascii_digit() {
-                break;
-            }
+    let mut run = |at: &mut usize| {
+        let start = *at;
+        while let Some(&b) = bytes.get(*at).filter(|b| b.is_ascii_digit()) {
             if mantissa != 0 || b != b'0' {
                 digits += 1;
             }
             mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
-            exponent -= 1;
-            seen = true;
-            at += 1;
+            *at += 1;
         }
+        *at - start
+    };
+    let whole = run(&mut at);
+    let mut fraction = 0;
+    if bytes.get(at) == Some(&b'.') {
+        at += 1;
+        fraction = run(&mut at);
     }
-    if !seen || digits > 19 {
+    let mut exponent = -(fraction as i32);
+    if whole + fraction == 0 || digits > 19 {
         return None;
     }
     if matches!(bytes.get(at), Some(b'e' | b'E')) {
         at += 1;
-        let negative_exponent = match bytes.get(at) {
-            Some(b'-') => {
-                at += 1;
-                true
-            }
-            Some(b'+') => {
-                at += 1;
-                false
-            }
-            _ => false,
-        };
+        let negative_exponent = sign(bytes, &mut at);
         let start = at;
         let mut e: i32 = 0;
         while let Some(&b) = bytes.get(at) {
@@ -374,6 +341,21 @@ fn fast_decimal(bytes: &[u8]) -> Option<f64> {
         _ => return None,
     };
     Some(if negative { -value } else { value })
+}
+
+/// Whether a `-` is at `bytes[*at]`; a sign, `+` or `-`, is stepped over.
+fn sign(bytes: &[u8], at: &mut usize) -> bool {
+    match bytes.get(*at) {
+        Some(b'-') => {
+            *at += 1;
+            true
+        }
+        Some(b'+') => {
+            *at += 1;
+            false
+        }
+        _ => false,
+    }
 }
 
 /// The words of a line, split at spaces and tabs only.

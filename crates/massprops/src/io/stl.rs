@@ -74,18 +74,26 @@ fn ascii_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         face_parts.resize(corners.len() / 3, part as u32);
     }
     let (positions, remap) = weld_exact(&corners);
-    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
-    let mesh = PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
-        path: path.to_path_buf(),
-        line: None,
-        source: Box::new(e),
-    })?;
     Ok(MeshFile {
-        mesh,
+        mesh: triangle_mesh(positions, &remap, path)?,
         face_lines: facet_lines(bytes),
         warnings: Vec::new(),
         part_names,
         face_parts,
+    })
+}
+
+/// The mesh of welded `positions` whose corners, three a triangle, are `remap`.
+fn triangle_mesh(
+    positions: Vec<Point3<f64>>,
+    remap: &[u32],
+    path: &Path,
+) -> Result<PolyMesh, MeshError> {
+    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
+    PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
+        path: path.to_path_buf(),
+        line: None,
+        source: Box::new(e),
     })
 }
 
@@ -262,12 +270,7 @@ fn binary_mesh(
         .iter()
         .map(|&i| corners[i as usize].map(f64::from).into())
         .collect();
-    let triangles: Vec<[u32; 3]> = remap.as_chunks::<3>().0.to_vec();
-    let mesh = PolyMesh::from_triangles(positions, &triangles).map_err(|e| MeshError::InFile {
-        path: path.to_path_buf(),
-        line: None,
-        source: Box::new(e),
-    })?;
+    let mesh = triangle_mesh(positions, &remap, path)?;
     let warnings = if count > announced {
         vec![count_warning(announced, count)]
     } else {
