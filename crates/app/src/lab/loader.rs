@@ -15,8 +15,8 @@ use crate::input::{self, Request, Resolved, Source};
 /// What the worker reports.
 #[derive(Debug)]
 pub enum LoadEvent {
-    /// A stage name and its completed fraction (0 to 1).
-    Progress(&'static str, f32),
+    /// A stage name and its completed fraction (0 to 1), when the stage can measure one.
+    Progress(&'static str, Option<f32>),
     /// The result; the worker then exits.
     Done(Box<Result<Loaded, LabError>>),
 }
@@ -38,7 +38,7 @@ pub struct Loading {
     /// Latest progress report.
     pub stage: &'static str,
     /// Fraction of the stage done.
-    pub fraction: f32,
+    pub fraction: Option<f32>,
     events: Receiver<LoadEvent>,
 }
 
@@ -55,7 +55,7 @@ impl Loading {
                 wake();
             };
             let result = if robot::is_description(&p) {
-                send(LoadEvent::Progress("reading and auditing the robot", 0.0));
+                send(LoadEvent::Progress("reading and auditing the robot", None));
                 robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
             } else {
                 load(&p, &|stage, f| send(LoadEvent::Progress(stage, f))).map(Loaded::Body)
@@ -65,7 +65,7 @@ impl Loading {
         Self {
             path,
             stage: "starting",
-            fraction: 0.0,
+            fraction: None,
             events: rx,
         }
     }
@@ -89,7 +89,7 @@ impl Loading {
 }
 
 /// Reads, parses and analyses a mesh file, reporting progress.
-fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody, LabError> {
+fn load(path: &Path, progress: &dyn Fn(&'static str, Option<f32>)) -> Result<LoadedBody, LabError> {
     let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
@@ -98,13 +98,13 @@ fn load(path: &Path, progress: &dyn Fn(&'static str, f32)) -> Result<LoadedBody,
     // rescales mass and size live); the file is read in blocks, never whole.
     let reading = |f: f32| {
         if f < 1.0 {
-            progress("reading", f);
+            progress("reading", Some(f));
         } else {
-            progress("checking the mesh and its mass properties", 0.0);
+            progress("checking the mesh and its mass properties", None);
         }
     };
     let resolved = input::resolve(Source::Reported(path, &reading), &Request::default())?;
-    progress("picking index", 0.0);
+    progress("picking index", None);
     match resolved {
         Resolved::Mesh { file, analysis } => Ok(LoadedBody::analysed(
             &name,
@@ -130,6 +130,40 @@ mod tests {
             thread::sleep(std::time::Duration::from_millis(5));
         }
         Err(LabError::LoaderStopped("timed out".into()))
+    }
+
+    /// A file of several blocks reports its reading as a rising fraction that ends at the
+    /// whole, then the stages that measure none; the body is the file's.
+    #[test]
+    fn reading_reports_a_rising_fraction_then_the_unmeasured_stages() {
+        let dir = std::env::temp_dir().join(format!("inertia-lab-progress-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let path = dir.join("torus.obj");
+        let torus = massprops::shapes::torus(1.0, 0.3, 400, 200).triangulated();
+        std::fs::write(&path, massprops::shapes::to_obj("torus", "", &torus)).expect("write");
+        let events = std::cell::RefCell::new(Vec::new());
+        let body = load(&path, &|stage, f| events.borrow_mut().push((stage, f))).expect("loads");
+        std::fs::remove_dir_all(&dir).ok();
+        let events = events.into_inner();
+        let reading: Vec<f32> = events
+            .iter()
+            .filter(|(stage, _)| *stage == "reading")
+            .filter_map(|(_, f)| *f)
+            .collect();
+        assert!(reading.len() >= 3, "{events:?}");
+        assert!(reading.windows(2).all(|w| w[0] < w[1]), "{reading:?}");
+        assert!(reading.iter().all(|f| (0.0..1.0).contains(f)));
+        let after: Vec<_> = events.iter().skip_while(|(s, _)| *s == "reading").collect();
+        assert_eq!(
+            after,
+            [
+                &("checking the mesh and its mass properties", None),
+                &("picking index", None)
+            ]
+        );
+        // 2π²Rr² to the polygon's accuracy.
+        let exact = 2.0 * std::f64::consts::PI.powi(2) * 0.3 * 0.3;
+        assert!((body.analysis.properties.mass / exact - 1.0).abs() < 1e-3);
     }
 
     #[test]

@@ -89,7 +89,9 @@ pub(super) fn load_obj(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, 
         block.truncate(filled + n);
         done = n == 0;
         read += n;
-        progress(read as f32 / size.max(1) as f32);
+        if n > 0 {
+            progress(read as f32 / size.max(1) as f32);
+        }
         // Whole lines only, but the last line at the end of the file.
         let cut = if done {
             block.len()

@@ -117,7 +117,10 @@ fn body_section(
                         .on_hover_text(l.path.display().to_string());
                 });
                 ui.label(format!("{}…", l.stage));
-                ui.add(egui::ProgressBar::new(l.fraction).show_percentage());
+                // A stage that measures no fraction has the spinner alone.
+                if let Some(f) = l.fraction {
+                    ui.add(egui::ProgressBar::new(f).show_percentage());
+                }
             }
             number(ui, "Size ×", &mut s.body.scale, 1e-3..=1e3, 0.01, "");
             if lab.primary().body().composition.is_some() {
