@@ -9,8 +9,9 @@
 //! shell, the vertex point-mass sum and the bounding-box cuboid, principal moments and axes by a
 //! scale-invariant Jacobi eigensolver, mesh diagnostics, and OBJ/STL loading.
 //!
-//! Cargo features, both on by default: `io` (OBJ and STL parsing and file loading, through
-//! `tobj` and `stl_io`) and `parallel` (the triangle path and the diagnostics on the rayon pool).
+//! Cargo features, both on by default: `io` (OBJ and STL parsing and file loading, by fast
+//! paths of our own beside `tobj` and `stl_io`) and `parallel` (the triangle path and the
+//! diagnostics on the rayon pool).
 //! Without `parallel`, [`integrals::IntegrationPath::TriangleParallel`] and [`integrals::IntegrationPath::Auto`] run
 //! the triangle path on the calling thread, with the same result bit for bit (the block order is
 //! fixed either way). With neither, only `nalgebra` and `thiserror` are built: what a dynamics

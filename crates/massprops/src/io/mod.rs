@@ -1,6 +1,8 @@
-//! Reading meshes from files: Wavefront OBJ (through `tobj`) and STL, binary or ASCII (through
-//! `stl_io`). Positions with identical coordinates are welded so per-corner splitting in a file
-//! never changes the topology; every object and group of a file forms one body.
+//! Reading meshes from files: Wavefront OBJ and STL, binary or ASCII, by fast paths of our own
+//! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
+//! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
+//! identical coordinates are welded so per-corner splitting in a file never changes the
+//! topology; every object and group of a file forms one body.
 
 mod body;
 mod obj;
