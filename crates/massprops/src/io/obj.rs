@@ -19,7 +19,7 @@ use crate::{Defect, MeshError, PolyMesh, Warning};
 /// positions are welded exactly. A UTF-8 byte-order mark at the start is ignored.
 ///
 /// The records nearly every file is made of take a fast path of our own
-/// ([`obj_fast`](super::obj_fast)); any other file goes through `tobj`, with the same result.
+/// (`io/obj_fast.rs`); any other file goes through `tobj`, with the same result.
 pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let text = utf8(bytes, path)?;
     let parsed = match fast(text) {
