@@ -26,7 +26,13 @@ pub fn parse_obj(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         Some(parsed) => parsed,
         None => general(text, path)?,
     };
-    finish(parsed, text, path)
+    finish(parsed, without_mark(text), path)
+}
+
+/// The text without a byte-order mark at its start (Windows exporters write one; tobj would
+/// read it as part of the first keyword, losing the first vertex and shifting every face index).
+fn without_mark(text: &str) -> &str {
+    text.strip_prefix('\u{FEFF}').unwrap_or(text)
 }
 
 /// The fast path over the whole text; `None` when it declines.
@@ -65,7 +71,7 @@ pub fn fast_path_agrees(bytes: &[u8]) -> bool {
 /// The general path alone, on bytes the fast path declined.
 fn parse_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let text = utf8(bytes, path)?;
-    finish(general(text, path)?, text, path)
+    finish(general(text, path)?, without_mark(text), path)
 }
 
 /// [`parse_obj`] on a file read block by block: the fast path never holds the whole file; only
@@ -188,9 +194,7 @@ pub(super) fn extend_runs(runs: &mut Vec<PartRun>, face: usize, object: u32, gro
 
 /// The general path, through `tobj`.
 fn general(text: &str, path: &Path) -> Result<Parsed, MeshError> {
-    // Windows exporters often start with a byte-order mark, which tobj would read as part of the
-    // first keyword, losing the first vertex and shifting every face index by one.
-    let text = text.strip_prefix('\u{FEFF}').unwrap_or(text);
+    let text = without_mark(text);
     let options = tobj::LoadOptions {
         single_index: false,
         triangulate: false,
@@ -783,6 +787,14 @@ mod tests {
                 (a, b) => panic!("{what}: {a:?} vs {b:?}"),
             }
         }
+        // A non-finite vertex on a marked file's first line is named with its line.
+        let bad = parse_obj(
+            "\u{FEFF}v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".as_bytes(),
+            Path::new("t.obj"),
+        )
+        .map(|_| ())
+        .expect_err("refused");
+        assert!(bad.to_string().contains("line 1"), "{bad}");
         let bom = format!("\u{FEFF}{MIXED}");
         assert!(fast(&bom).is_none(), "byte-order mark");
         let read = parse_obj(bom.as_bytes(), Path::new("t.obj")).expect("tobj reads it");
