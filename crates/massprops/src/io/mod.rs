@@ -7,6 +7,7 @@
 mod body;
 mod obj;
 mod obj_fast;
+mod obj_parsed;
 mod stl;
 
 use std::path::Path;

@@ -10,6 +10,7 @@ use nalgebra::Point3;
 
 use super::MeshFile;
 use super::obj_fast::FastObj;
+use super::obj_parsed::{Parsed, Record, Records, extend_runs, parts};
 use crate::diagnostics::EXAMPLES;
 use crate::mesh::weld_exact;
 use crate::{Defect, MeshError, PolyMesh, Warning};
@@ -153,43 +154,6 @@ fn utf8<'a>(bytes: &'a [u8], path: &Path) -> Result<&'a str, MeshError> {
         line: Some(line_of_offset(bytes, e.valid_up_to())),
         message: "the file is not UTF-8 text (is it a binary file?)".into(),
     })
-}
-
-/// What either path read: the welded positions, the kept faces with their file lines and
-/// records, and the lines of the faces skipped for having fewer than three corners.
-pub(super) struct Parsed {
-    pub positions: Vec<Point3<f64>>,
-    pub indices: Vec<u32>,
-    pub arities: Vec<usize>,
-    pub face_lines: Vec<u32>,
-    /// The object and group names (its `elements` only the general path's scratch).
-    pub records: Records,
-    /// The object and group of the kept faces, as runs.
-    pub runs: Vec<PartRun>,
-    pub two_corner: Vec<usize>,
-}
-
-/// Kept faces from `first` on (up to the next run) are in this object and group (indices into
-/// [`Records::objects`] and [`Records::groups`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct PartRun {
-    pub first: usize,
-    pub object: u32,
-    pub group: u32,
-}
-
-/// Adds the run of face `face` when its object or group differs from the last run's.
-pub(super) fn extend_runs(runs: &mut Vec<PartRun>, face: usize, object: u32, group: u32) {
-    if runs
-        .last()
-        .is_none_or(|r| (r.object, r.group) != (object, group))
-    {
-        runs.push(PartRun {
-            first: face,
-            object,
-            group,
-        });
-    }
 }
 
 /// The general path, through `tobj`.
@@ -376,37 +340,6 @@ fn keywords(text: &str) -> impl Iterator<Item = (usize, &str)> {
         .filter_map(|(i, line)| line.split_whitespace().next().map(|kw| (i + 1, kw)))
 }
 
-/// One `f` or `l` record: its one-based line, whether it is a polyline, and the object and group
-/// (indices into [`Records::objects`] and [`Records::groups`]) in force there.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Record {
-    pub line: usize,
-    pub polyline: bool,
-    pub object: u32,
-    pub group: u32,
-}
-
-/// The elements tobj returns (each `f` or `l` record, in order) and the object and group names.
-#[derive(Debug, PartialEq)]
-pub(super) struct Records {
-    pub elements: Vec<Record>,
-    /// Names of `o` statements; index 0 is the unnamed part before the first.
-    pub objects: Vec<String>,
-    /// Names of `g` statements, likewise.
-    pub groups: Vec<String>,
-}
-
-impl Records {
-    /// No element yet, the unnamed object and group in force.
-    pub fn new() -> Self {
-        Self {
-            elements: Vec::new(),
-            objects: vec![UNNAMED.to_owned()],
-            groups: vec![UNNAMED.to_owned()],
-        }
-    }
-}
-
 fn element_lines(text: &str) -> Records {
     // Bytes, not `str::lines` and `split_whitespace`: this runs on every file, and a scan of
     // bytes takes a fraction of the time on a million-face file.
@@ -452,38 +385,6 @@ fn element_lines(text: &str) -> Records {
         }
     }
     records
-}
-
-/// The name of the faces before a file's first `o` (or `g`).
-const UNNAMED: &str = "unnamed";
-
-/// The parts of the kept faces (objects, or groups when the file has no `o`): the names, and
-/// for each face its part; both empty when the file names neither. Parts of the same name are
-/// one part, and names without faces are dropped.
-fn parts(records: &Records, runs: &[PartRun], faces: usize) -> (Vec<String>, Vec<u32>) {
-    let by_object = records.objects.len() > 1;
-    if !by_object && records.groups.len() <= 1 {
-        return (Vec::new(), Vec::new());
-    }
-    let mut names: Vec<String> = Vec::new();
-    let mut out = Vec::with_capacity(faces);
-    for (k, r) in runs.iter().enumerate() {
-        let end = runs.get(k + 1).map_or(faces, |next| next.first);
-        let name = if by_object {
-            &records.objects[r.object as usize]
-        } else {
-            &records.groups[r.group as usize]
-        };
-        let part = match names.iter().position(|n| n == name) {
-            Some(i) => i as u32,
-            None => {
-                names.push(name.clone());
-                (names.len() - 1) as u32
-            }
-        };
-        out.resize(end, part);
-    }
-    (names, out)
 }
 
 /// Finds the line `tobj` rejected, by re-checking the lines of the kind its error names.

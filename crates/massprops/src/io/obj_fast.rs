@@ -15,7 +15,7 @@
 
 use nalgebra::Point3;
 
-use super::obj::{Parsed, PartRun, Records, extend_runs};
+use super::obj_parsed::{Parsed, PartRun, Records, extend_runs};
 use crate::mesh::weld_exact;
 
 /// The fast path met a line it does not read; the general reader takes the file.
