@@ -12,8 +12,8 @@
 
 use nalgebra::Vector3;
 
-use crate::analysis::{Defect, Warning};
 use crate::error::MeshError;
+use crate::warning::{Defect, Warning};
 use crate::{MassProperties, PolyMesh};
 
 /// Relative slack for round-off: a thin plate has I₁ + I₂ = I₃ exactly, and summed integrals

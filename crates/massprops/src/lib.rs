@@ -54,11 +54,12 @@ pub mod shapes;
 pub mod shell;
 pub mod solid;
 mod units;
+mod warning;
 
 // The face of the crate: what a caller reaches for. The layers beneath (the integrals, the
 // eigensolver, the defect pass, the diagnostics, the approximations, the readers) are public
 // modules of their own.
-pub use analysis::{Analysis, Defect, MassSpec, Method, Warning, analyze, analyze_with};
+pub use analysis::{Analysis, MassSpec, Method, analyze, analyze_with};
 pub use composite::{
     Composite, Fill, IntegratedPart, MaterialEntry, Part, PartProperties, composite,
 };
@@ -71,6 +72,7 @@ pub use mesh::PolyMesh;
 pub use principal::PrincipalInertia;
 pub use properties::MassProperties;
 pub use units::{LengthUnit, UnknownUnit};
+pub use warning::{Defect, Warning};
 
 /// Mass properties of the solid bounded by `mesh` at uniform `density` (volume method).
 ///

@@ -10,7 +10,7 @@ use nalgebra::Point3;
 
 use super::{Builder, Cleaned, UnionFind, face_volume, input_faces};
 use crate::MeshError;
-use crate::analysis::{Defect, Warning};
+use crate::warning::{Defect, Warning};
 
 /// Merges boundary vertices within `tolerance` and reports what that closed.
 pub(super) fn close(

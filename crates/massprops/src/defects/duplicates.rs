@@ -10,9 +10,9 @@ use nalgebra::{Point3, Vector3};
 
 use super::shells::Part;
 use super::{Builder, Cleaned, face_volume, input_faces};
-use crate::analysis::{Defect, Warning};
 use crate::diagnostics::face_shape;
 use crate::integrals::mirtich::newell_normal;
+use crate::warning::{Defect, Warning};
 
 /// Removes duplicates; returns whether any face was removed.
 pub(super) fn remove(

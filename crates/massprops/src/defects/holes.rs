@@ -11,8 +11,8 @@ use nalgebra::{Point3, Vector3};
 use super::shells::Part;
 use super::{Builder, CAP, Cleaned, fan_volume, input_faces};
 use crate::MeshError;
-use crate::analysis::{Defect, Warning};
 use crate::defects::Holes;
+use crate::warning::{Defect, Warning};
 
 /// Caps every boundary loop (or refuses, per `holes`).
 /// `surface` is the file's surface area, which the caps' area is given as a fraction of. Each

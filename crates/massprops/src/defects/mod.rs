@@ -31,10 +31,10 @@ use std::borrow::Cow;
 
 use nalgebra::{Point3, Vector3};
 
-use crate::analysis::{Defect, Warning};
 use crate::diagnostics::EXAMPLES;
 use crate::edges::EdgeTable;
 use crate::properties::positive;
+use crate::warning::{Defect, Warning};
 use crate::{MeshError, PolyMesh};
 
 pub use shells::{Orientation, Shell};

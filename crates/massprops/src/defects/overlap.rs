@@ -16,8 +16,8 @@ use nalgebra::Point3;
 
 use super::shells::Part;
 use crate::PolyMesh;
-use crate::analysis::{Defect, Warning};
 use crate::diagnostics::EXAMPLES;
+use crate::warning::{Defect, Warning};
 
 /// Independent jitterings of the grid.
 const REPLICATES: usize = 4;

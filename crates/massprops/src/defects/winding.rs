@@ -11,8 +11,8 @@ use nalgebra::Point3;
 
 use super::shells::Part;
 use super::{Builder, Cleaned, face_volume, input_faces};
-use crate::analysis::{Defect, Warning};
 use crate::diagnostics::EXAMPLES;
+use crate::warning::{Defect, Warning};
 
 /// Turns the faces that disagree with their shell; returns whether any was turned.
 pub(super) fn reorient(work: &mut Cleaned<'_>, parts: &[Part], reference: Point3<f64>) -> bool {
