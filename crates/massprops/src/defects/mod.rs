@@ -183,7 +183,7 @@ pub(crate) fn clean<'a>(
     } else {
         overlap::Relations::none(parts.len())
     };
-    work.shells = shells::describe(&work, &parts, &volumes, &relations);
+    work.shells = shells::describe(&work, &parts, &volumes, |s| relations.depth(s));
     if uses_volume {
         orient(&mut work, &parts, &volumes, &solids, &relations)?;
     }

@@ -11,7 +11,6 @@
 use nalgebra::{Point3, Vector3};
 
 use super::AUTO_WELD_RATIO;
-use super::overlap::Relations;
 use super::{CAP, Cleaned, UnionFind, face_volume};
 use crate::PolyMesh;
 use crate::edges::{EdgeTable, HalfEdge};
@@ -235,12 +234,13 @@ pub(crate) fn solids(mesh: &PolyMesh, parts: &[Part], volumes: &[f64]) -> Vec<bo
         .collect()
 }
 
-/// The public description of each shell.
+/// The public description of each shell; `depth(s)` is how many closed shells hold shell `s`,
+/// when known.
 pub(crate) fn describe(
     work: &Cleaned<'_>,
     parts: &[Part],
     volumes: &[f64],
-    relations: &Relations,
+    depth: impl Fn(usize) -> Option<usize>,
 ) -> Vec<Shell> {
     let from_file = |f: u32| work.origin.as_ref().is_none_or(|o| o[f as usize] != CAP);
     parts
@@ -260,7 +260,7 @@ pub(crate) fn describe(
                 } else {
                     Orientation::Outward
                 },
-                depth: relations.depth(s),
+                depth: depth(s),
             }
         })
         .collect()
