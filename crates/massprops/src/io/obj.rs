@@ -536,29 +536,19 @@ mod tests {
                 format!("{}", i + 1)
             }
         };
+        // A record of `n` numbers, counted as element `kind` (v, vt, vn).
+        let mut numbers = |keyword: &str, n: usize, kind: usize| {
+            text.push_str(keyword);
+            for &k in &pick[..n] {
+                text.push(' ');
+                text.push_str(&number(k));
+            }
+            counts[kind] += 1;
+        };
         match kind {
-            0..=3 => {
-                text.push_str(&format!(
-                    "v {} {} {}",
-                    number(pick[0]),
-                    number(pick[1]),
-                    number(pick[2])
-                ));
-                counts[0] += 1;
-            }
-            4 => {
-                text.push_str(&format!("vt {} {}", number(pick[0]), number(pick[1])));
-                counts[1] += 1;
-            }
-            5 => {
-                text.push_str(&format!(
-                    "vn {} {} {}",
-                    number(pick[0]),
-                    number(pick[1]),
-                    number(pick[2])
-                ));
-                counts[2] += 1;
-            }
+            0..=3 => numbers("v", 3, 0),
+            4 => numbers("vt", 2, 1),
+            5 => numbers("vn", 3, 2),
             6 => text.push_str(
                 [
                     "o part",
