@@ -6,12 +6,14 @@
 //! - [`input`]: the one input path, a file and the mass and repair flags → a body;
 //! - [`wording`]: how faces, lines and lists are written, for every front end's words;
 //! - [`platform`]: what the system tells about the process (its memory);
+//! - [`batch`]: the batch table, one row per file whatever it holds (the Python package's);
 //! - [`cli`]: the `props`, `simulate` and `export` commands and their reports;
 //! - [`lab`]: the app's headless model (specimens, commands, loader, bodies of parts, picking);
 //! - `gui` (feature `gui`, default on): the desktop app drawing the lab with eframe and three-d.
 //!
 //! `ARCHITECTURE.md` gives the allowed dependencies of each folder.
 
+pub mod batch;
 pub mod cli;
 pub mod export;
 pub mod findings;

@@ -476,25 +476,7 @@ fn warnings(
     w
 }
 
-/// A code's place in [`ORDER`].
+/// A code's place in [`Defect::CODES`].
 fn rank(code: &str) -> Option<usize> {
-    ORDER.iter().position(|&c| c == code)
+    Defect::CODES.iter().position(|&c| c == code)
 }
-
-/// The order warnings are listed in.
-const ORDER: [&str; 14] = [
-    "duplicate_faces",
-    "opposite_duplicate_faces",
-    "overlapping_shells",
-    "self_overlapping_shell",
-    "nested_shell",
-    "cracks_closed",
-    "holes_capped",
-    "nonplanar_faces",
-    "two_corner_faces",
-    "stl_triangle_count",
-    "inconsistent_winding",
-    "flipped",
-    "degenerate_faces",
-    "nonmanifold_edges",
-];

@@ -193,6 +193,33 @@ pub enum MeshError {
     },
 }
 
+impl MeshError {
+    /// A stable snake_case identifier of the problem, for machine-readable output (the Python
+    /// package's batch table): the variant's name, that of the error inside for an error placed in
+    /// a file or a part.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            MeshError::Empty => "empty",
+            MeshError::NonFiniteVertex { .. } => "non_finite_vertex",
+            MeshError::IndexOutOfRange { .. } => "index_out_of_range",
+            MeshError::TooFewCorners { .. } => "too_few_corners",
+            MeshError::TooLarge { .. } => "too_large",
+            MeshError::ZeroVolume { .. } => "zero_volume",
+            MeshError::InvalidParameter { .. } => "invalid_parameter",
+            MeshError::OutOfRange { .. } => "out_of_range",
+            MeshError::OpenMesh { .. } => "open_mesh",
+            MeshError::CapsTooLarge { .. } => "caps_too_large",
+            MeshError::VoidTooLarge { .. } => "void_too_large",
+            MeshError::Impossible { .. } => "impossible",
+            MeshError::ZeroArea => "zero_area",
+            MeshError::Io { .. } => "io",
+            MeshError::UnsupportedFormat { .. } => "unsupported_format",
+            MeshError::Malformed { .. } => "malformed",
+            MeshError::InPart { source, .. } | MeshError::InFile { source, .. } => source.kind(),
+        }
+    }
+}
+
 /// ", around faces 3, 7 (counting from 0)", or nothing for no faces.
 fn examples(faces: &[usize]) -> String {
     if faces.is_empty() {

@@ -146,6 +146,25 @@ pub enum Defect {
 }
 
 impl Defect {
+    /// Every code [`Defect::code`] gives, in the order warnings are listed in (an analysis's
+    /// `warnings` and every report).
+    pub const CODES: [&'static str; 14] = [
+        "duplicate_faces",
+        "opposite_duplicate_faces",
+        "overlapping_shells",
+        "self_overlapping_shell",
+        "nested_shell",
+        "cracks_closed",
+        "holes_capped",
+        "nonplanar_faces",
+        "two_corner_faces",
+        "stl_triangle_count",
+        "inconsistent_winding",
+        "flipped",
+        "degenerate_faces",
+        "nonmanifold_edges",
+    ];
+
     /// A stable snake_case identifier, for machine-readable output: `duplicate_faces`,
     /// `opposite_duplicate_faces`, `overlapping_shells`, `self_overlapping_shell`, `nested_shell`, `cracks_closed`,
     /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `stl_triangle_count`,

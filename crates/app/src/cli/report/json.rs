@@ -120,6 +120,30 @@ fn single_json(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> Value {
     })
 }
 
+/// The object of a solid integrated without looking for defects (the Python package's
+/// `check=False`): the keys a single mesh and a body of parts share, with the density and the
+/// volume, `file` null (arrays, not a file) and `warnings` null (not looked for).
+pub fn unchecked(density: f64, volume: f64, flipped: bool, p: &MassProperties) -> Value {
+    let object = json!({
+        "schema_version": SCHEMA_VERSION,
+        "file": null,
+        "method": Method::Volume.name(),
+        "checked": false,
+        "conventions": {
+            "tensor": TENSOR_CONVENTION,
+            "frame": "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin",
+            "units": "lengths in the mesh unit; mass in the unit of density times length^3",
+            "density": "mass per volume",
+            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
+        },
+        "density": density,
+        "volume": volume,
+        "flipped": flipped,
+        "warnings": null,
+    });
+    with_inertia(object, p)
+}
+
 /// The mass, centre of mass, tensors and principal moments and axes: the keys a single mesh and
 /// a body of parts share.
 fn inertia_json(p: &MassProperties) -> Value {

@@ -1,0 +1,33 @@
+"""inertialab: exact mass properties of meshes, with every defect named and its effect on the
+mass, from Python.
+
+- ``mass_properties(vertices, faces, ...)``: one mesh from numpy arrays or a ``trimesh.Trimesh``;
+- ``analyze_file(path, ...)``: an OBJ, STL or body file, as ``inertia-lab props`` reads it;
+- ``measure_table(batch, ...)``: an Arrow table of files in, the batch table out, one row each;
+- ``measure_files(paths, out, ...)``: a folder of files into resumable Parquet shards;
+- ``MassResult``: one body's numbers, ``to_dict()`` (``props --json``'s object) and exports.
+
+Conventions: lengths in the mesh's unit, mass in the unit of density times length³; the inertia
+tensor is about the centre of mass in the mesh's axes, I = ∑ m (|r|² E − r rᵀ), so the
+off-diagonals are −∑ m·x·y; principal moments ascending, principal axes as rows.
+"""
+
+from ._api import Repairs, analyze_file, mass_properties
+from ._files import Summary, measure_files
+from ._native import BATCH_SCHEMA_VERSION, SCHEMA_VERSION, MassResult, MeshError, __version__
+from ._table import batch_schema, measure_table
+
+__all__ = [
+    "BATCH_SCHEMA_VERSION",
+    "MassResult",
+    "MeshError",
+    "Repairs",
+    "SCHEMA_VERSION",
+    "Summary",
+    "__version__",
+    "analyze_file",
+    "batch_schema",
+    "mass_properties",
+    "measure_files",
+    "measure_table",
+]
