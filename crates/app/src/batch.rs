@@ -406,3 +406,107 @@ pub fn columns(rows: &[Row]) -> Vec<Column> {
         .map(|(name, data)| Column { name, data })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CUBE: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+                        f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+    fn row(name: &str, text: &str, request: &Request) -> Row {
+        measure(Path::new(name), Some(text.as_bytes()), request)
+    }
+
+    #[test]
+    fn the_id_is_the_sha256_of_the_bytes() {
+        // FIPS 180-2's first example.
+        assert_eq!(
+            sha256_hex(b"abc"),
+            "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
+        );
+        let r = row("cube.obj", CUBE, &Request::default());
+        assert_eq!(r.id.as_deref(), Some(sha256_hex(CUBE.as_bytes()).as_str()));
+        assert_eq!(r.size_bytes, Some(CUBE.len() as u64));
+    }
+
+    #[test]
+    fn a_closed_cube_is_ok_with_its_numbers() {
+        let request = Request {
+            spec: MassSpec::Density(3.0),
+            ..Request::default()
+        };
+        let r = row("cube.obj", CUBE, &request);
+        assert_eq!(r.status(), Status::Ok);
+        let m = r.outcome.as_ref().expect("numbers");
+        assert!((m.properties.mass - 3.0).abs() < 1e-15);
+        assert!((m.properties.inertia_com[(0, 0)] - 0.5).abs() < 1e-15);
+        assert_eq!(
+            (m.closed, m.shells, m.triangles),
+            (Some(true), Some(1), Some(12))
+        );
+        assert_eq!((r.density, m.largest_effect()), (Some(3.0), None));
+    }
+
+    #[test]
+    fn an_open_cube_warns_with_the_count_and_effect() {
+        let open = CUBE.replace("f 1 4 3 2\n", "");
+        let r = row("open.obj", &open, &Request::default());
+        assert_eq!(r.status(), Status::Warn);
+        let m = r.outcome.as_ref().expect("capped");
+        assert_eq!(m.count_of("holes_capped"), 1);
+        assert_eq!(m.count_of("duplicate_faces"), 0);
+        // The holes_capped effect is minus what the cap adds: the pyramid on the missing face
+        // with its apex at the box centre, 1/3 · 1 · 1/2 of the unit cube.
+        let effect = m.largest_effect().expect("an effect");
+        assert!((effect + 1.0 / 6.0).abs() < 1e-12, "{effect}");
+    }
+
+    #[test]
+    fn failures_are_rows_naming_the_file() {
+        let r = row("broken.obj", "v 0 0 0\nf 1 2 x\n", &Request::default());
+        let f = r.outcome.as_ref().expect_err("malformed");
+        assert_eq!((r.status(), f.kind), (Status::Error, "malformed"));
+        assert!(f.message.starts_with("broken.obj"), "{}", f.message);
+        let sheet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+        let f = row("sheet.obj", sheet, &Request::default())
+            .outcome
+            .expect_err("no volume");
+        assert_eq!(f.kind, "zero_volume");
+        assert!(f.message.starts_with("sheet.obj: "), "{}", f.message);
+        let missing = measure(Path::new("/no/such/file.stl"), None, &Request::default());
+        let f = missing.outcome.as_ref().expect_err("missing");
+        assert_eq!((f.kind, missing.id.as_ref()), ("io", None));
+    }
+
+    #[test]
+    fn every_row_has_every_column_once() {
+        let rows = [
+            row("cube.obj", CUBE, &Request::default()),
+            row("broken.obj", "f 1 2\n", &Request::default()),
+        ];
+        let columns = columns(&rows);
+        let mut names: Vec<&str> = columns.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(
+            names.len(),
+            10 + 3 + 9 + 3 + 4 + 4 + Defect::CODES.len() + 3
+        );
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), columns.len(), "a column named twice");
+        for c in &columns {
+            let len = match &c.data {
+                ColumnData::Float(v) => v.len(),
+                ColumnData::Int(v) => v.len(),
+                ColumnData::Bool(v) => v.len(),
+                ColumnData::Text(v) => v.len(),
+            };
+            assert_eq!(len, 2, "{}", c.name);
+        }
+        let status = columns.iter().find(|c| c.name == "status").expect("status");
+        assert_eq!(
+            status.data,
+            ColumnData::Text(vec![Some("ok".into()), Some("error".into())])
+        );
+    }
+}

@@ -215,9 +215,11 @@ impl MassResult {
     }
 
     /// The body in `format` (`json`, `urdf`, `mjcf`, `sdf`, `unity`, `godot`, `unreal`,
-    /// `rapier`, `gltf`), as `inertia-lab export` writes it: `units` the mesh's length unit,
-    /// `up` its up axis (`y` or `z`), `frame` `com-principal` or `origin` (None: the format's).
-    #[pyo3(signature = (format, *, units="m", up="z", frame=None))]
+    /// `rapier`, `gltf`), as `inertia-lab export` writes it, with its defaults: `units` the
+    /// mesh's length unit (`m`, `cm`, `mm`, `in`, `ft`), `up` its up axis (`y` or `z`), `frame`
+    /// `com-principal` or `origin` (None: the format's). The mass is taken to be in kg: for a
+    /// mesh in millimetres, compute with the density in kg/mm³.
+    #[pyo3(signature = (format, *, units="m", up="y", frame=None))]
     fn export(&self, format: &str, units: &str, up: &str, frame: Option<&str>) -> PyResult<String> {
         let format = match format {
             "json" => Format::Json,
@@ -270,13 +272,13 @@ impl MassResult {
     }
 
     /// MuJoCo MJCF `<inertial>` text (`export("mjcf", …)`).
-    #[pyo3(signature = (*, units="m", up="z", frame=None))]
+    #[pyo3(signature = (*, units="m", up="y", frame=None))]
     fn to_mjcf(&self, units: &str, up: &str, frame: Option<&str>) -> PyResult<String> {
         self.export("mjcf", units, up, frame)
     }
 
     /// URDF `<inertial>` text (`export("urdf", …)`).
-    #[pyo3(signature = (*, units="m", up="z", frame=None))]
+    #[pyo3(signature = (*, units="m", up="y", frame=None))]
     fn to_urdf(&self, units: &str, up: &str, frame: Option<&str>) -> PyResult<String> {
         self.export("urdf", units, up, frame)
     }

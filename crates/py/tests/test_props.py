@@ -1,0 +1,123 @@
+"""The package and `inertia-lab props --json` give the same object for the same file, and the
+arrays of a file give its numbers and warnings."""
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import inertialab as il
+from conftest import ASSETS, REAL, props_binary, props_json
+
+# Defects, one file each: the words and numbers of each warning must be the CLI's.
+CUBE_V = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+CUBE_F = ["1 4 3 2", "5 6 7 8", "1 2 6 5", "2 3 7 6", "3 4 8 7", "4 1 5 8"]
+DEFECTS = {
+    "holes.obj": CUBE_V + "".join(f"f {f}\n" for f in CUBE_F[1:]),
+    "flipped.obj": CUBE_V + "".join(f"f {' '.join(reversed(f.split()))}\n" for f in CUBE_F),
+    "duplicate.obj": CUBE_V + "".join(f"f {f}\n" for f in CUBE_F + CUBE_F[:2]),
+    "two_cubes.obj": CUBE_V
+    + "".join(f"v {x + 0.5} {y} {z}\n" for x, y, z in [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)])
+    + "".join(f"f {f}\n" for f in CUBE_F)
+    + "".join("f " + " ".join(str(int(i) + 8) for i in f.split()) + "\n" for f in CUBE_F),
+}
+
+
+def fixtures():
+    files = sorted(ASSETS.glob("*.obj")) + sorted(ASSETS.glob("*.stl")) + sorted(ASSETS.glob("*.toml"))
+    return files + sorted(REAL.glob("*.stl"))
+
+
+@pytest.mark.parametrize("path", fixtures(), ids=lambda p: p.name)
+def test_every_fixture_is_props_json(path):
+    assert il.analyze_file(path).to_dict() == props_json("test_every_fixture_is_props_json", path)
+
+
+@pytest.mark.parametrize("name", sorted(DEFECTS))
+def test_defects_are_props_json(name, tmp_path):
+    path = tmp_path / name
+    path.write_text(DEFECTS[name])
+    expected = props_json("test_defects_are_props_json", path)
+    assert expected["warnings"], "each of these files has a defect"
+    assert il.analyze_file(path).to_dict() == expected
+
+
+def obj_arrays(path: Path):
+    v, f = [], []
+    for line in path.read_text().splitlines():
+        words = line.split()
+        if words and words[0] == "v":
+            v.append([float(x) for x in words[1:4]])
+        elif words and words[0] == "f":
+            f.append([int(w.split("/")[0]) - 1 for w in words[1:]])
+    return np.array(v), f
+
+
+@pytest.mark.parametrize("name", sorted(DEFECTS))
+def test_arrays_give_the_files_numbers(name, tmp_path):
+    path = tmp_path / name
+    path.write_text(DEFECTS[name])
+    from_file = il.analyze_file(path).to_dict()
+    v, f = obj_arrays(path)
+    from_arrays = il.mass_properties(v, f).to_dict()
+    for key in ("mass", "volume", "center_of_mass", "inertia_com", "principal_moments", "mesh", "shells"):
+        assert from_arrays[key] == from_file[key], key
+    strip = lambda ws: [{k: w[k] for k in ("code", "count", "faces", "effect_on_mass")} for w in ws]
+    assert strip(from_arrays["warnings"]) == strip(from_file["warnings"])
+    assert from_arrays["file"] is None and from_file["file"] == str(path)
+
+
+def test_options_are_props_options(tmp_path):
+    path = tmp_path / "holes.obj"
+    path.write_text(DEFECTS["holes.obj"])
+    name = "test_options_are_props_options"
+    assert il.analyze_file(path, density=7850.0).to_dict() == props_json(name, path, "--density", "7850")
+    assert il.analyze_file(path, mass=2.0, method="shell").to_dict() == props_json(
+        name, path, "--mass", "2", "--method", "shell"
+    )
+    with pytest.raises(il.MeshError) as e:
+        il.analyze_file(path, repairs=il.Repairs(holes="refuse"))
+    assert e.value.kind == "open_mesh" and str(path) in str(e.value)
+
+
+def test_file_errors(tmp_path):
+    with pytest.raises(FileNotFoundError, match="missing.obj"):
+        il.analyze_file(tmp_path / "missing.obj")
+    bad = tmp_path / "bad.obj"
+    bad.write_text("v 0 0 0\nv 1 0 x\nf 1 2 3\n")
+    with pytest.raises(il.MeshError, match="line 2") as e:
+        il.analyze_file(bad)
+    assert e.value.kind == "malformed"
+    other = tmp_path / "notes.txt"
+    other.write_text("hello")
+    with pytest.raises(il.MeshError) as e:
+        il.analyze_file(other)
+    assert e.value.kind == "unsupported_format"
+
+
+def test_exports_are_the_clis(tmp_path):
+    import subprocess
+
+    path = ASSETS / "t_handle.obj"
+    r = il.analyze_file(path, density=2700.0)
+    binary = props_binary("test_exports_are_the_clis")
+    for fmt, text in (("mjcf", r.to_mjcf()), ("urdf", r.to_urdf()), ("sdf", r.export("sdf"))):
+        cli = subprocess.run(
+            [binary, "export", str(path), "--format", fmt, "--density", "2700"],
+            check=True, capture_output=True, text=True,
+        ).stdout
+        assert text == cli, fmt
+    assert f'mass="{r.mass!r}"' in r.to_mjcf() or str(r.mass)[:8] in r.to_mjcf()
+    with pytest.raises(ValueError, match="format"):
+        r.export("step")
+
+
+def test_body_file_parts_and_warnings():
+    r = il.analyze_file(ASSETS / "hammer.toml")
+    d = r.to_dict()
+    assert d["kind"] == "composite" and len(d["parts"]) == 2
+    assert math.isclose(r.mass, sum(p["mass"] for p in d["parts"]), rel_tol=1e-14)
+    assert r.volume is None and r.density is None
+    assert json.loads(r.to_json()) == d
