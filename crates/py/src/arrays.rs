@@ -137,19 +137,20 @@ fn c_slice<'a, T: numpy::Element, D: numpy::ndarray::Dimension>(
 }
 
 impl Views<'_> {
-    /// The corners as u32 triangles when every face is a triangle: in place for uint32, else
-    /// converted (an index below 0 or past the vertices is an error naming its face).
-    pub fn triangles(&self) -> Option<Result<Cow<'_, [[u32; 3]]>, BadArrays>> {
+    /// The corners as u32 when every face is a triangle (three to a triangle, for
+    /// `bytemuck::cast_slice` to `[[u32; 3]]`): in place for uint32, else converted once (an
+    /// index below 0 or past the vertices is an error naming its face).
+    pub fn triangle_corners(&self) -> Option<Result<Cow<'_, [u32]>, BadArrays>> {
         if self.arity != Some(3) {
             return None;
         }
         let n = self.positions.len();
         let owned = |c: Result<Vec<u32>, (usize, i64)>| {
-            c.map(|v| Cow::Owned(triples(v)))
+            c.map(Cow::Owned)
                 .map_err(|(corner, index)| self.bad_index(corner, index))
         };
         Some(match self.corners {
-            Corners::U32(c) => Ok(Cow::Borrowed(bytemuck::cast_slice(c))),
+            Corners::U32(c) => Ok(Cow::Borrowed(c)),
             Corners::I64(c) => owned(convert(c, n)),
             Corners::I32(c) => owned(convert(c, n)),
         })
@@ -236,17 +237,16 @@ impl Views<'_> {
 /// bad index is looked for only when there is one). Err: the first bad corner and its index.
 fn convert<I: Copy + Into<i64>>(corners: &[I], n: usize) -> Result<Vec<u32>, (usize, i64)> {
     let limit = n as u64;
-    let mut bad = false;
-    let out: Vec<u32> = corners
-        .iter()
-        .map(|&i| {
-            let i: i64 = i.into();
-            // A negative index wraps to a huge one: one unsigned comparison finds both.
-            bad |= (i as u64) >= limit;
-            i as u32
-        })
-        .collect();
-    if bad {
+    let mut out = vec![0u32; corners.len()];
+    let mut bad = 0u64;
+    for (o, &i) in out.iter_mut().zip(corners) {
+        let i: i64 = i.into();
+        // A negative index wraps to a huge one: one unsigned comparison finds both. No branch,
+        // so that the loop runs in SIMD lanes.
+        bad |= u64::from((i as u64) >= limit);
+        *o = i as u32;
+    }
+    if bad != 0 {
         let found = corners
             .iter()
             .map(|&i| i.into())
@@ -255,8 +255,4 @@ fn convert<I: Copy + Into<i64>>(corners: &[I], n: usize) -> Result<Vec<u32>, (us
         return Err(found.unwrap_or((0, -1)));
     }
     Ok(out)
-}
-
-fn triples(v: Vec<u32>) -> Vec<[u32; 3]> {
-    v.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
 }

@@ -180,8 +180,10 @@ fn analyze_arrays(
 
 /// The solid of the arrays alone (no copy for triangles; polygons by Mirtich's integrals).
 fn unchecked(v: &arrays::Views<'_>, spec: MassSpec) -> Result<Body, BadArrays> {
-    let solid = match v.triangles() {
-        Some(triangles) => massprops::solid::triangles_solid(v.positions, &triangles?)?,
+    let solid = match v.triangle_corners() {
+        Some(corners) => {
+            massprops::solid::triangles_solid(v.positions, bytemuck::cast_slice(&corners?))?
+        }
         None => massprops::solid::solid_properties(
             &v.mesh()?,
             massprops::integrals::IntegrationPath::Polygon,
