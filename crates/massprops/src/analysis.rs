@@ -302,7 +302,7 @@ pub(crate) fn check_range(size: f64, method: Method, spec: MassSpec) -> Result<(
 }
 
 /// Refuses a solid whose caps make more than `max_share` of its closed surface.
-fn caps_within(warnings: &[Warning], max_share: f64) -> Result<(), MeshError> {
+pub(crate) fn caps_within(warnings: &[Warning], max_share: f64) -> Result<(), MeshError> {
     for w in warnings {
         if let Defect::HolesCapped {
             cap_area_fraction, ..

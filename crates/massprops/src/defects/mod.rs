@@ -171,6 +171,9 @@ pub(crate) fn clean<'a>(
         )?;
     }
     let volumes = shells::volumes(&work.mesh, &parts, reference);
+    if uses_volume {
+        refuse_large_caps(&work, &volumes, repairs.max_cap_share)?;
+    }
     let solids = shells::solids(&work.mesh, &parts, &volumes);
     let relations = if uses_volume {
         overlap::compare(
@@ -188,6 +191,19 @@ pub(crate) fn clean<'a>(
         orient(&mut work, &parts, &volumes, &solids, &relations)?;
     }
     Ok(work)
+}
+
+/// The refusal of a solid whose caps make too much of its surface (`analysis::caps_within`),
+/// made before the shells are compared, the costliest step (a scene of a thousand open shells
+/// spends the whole work budget on it only to be refused). Only when the capped mesh encloses a
+/// volume: one that encloses none is refused later, named a sheet.
+fn refuse_large_caps(work: &Cleaned<'_>, volumes: &[f64], max_share: f64) -> Result<(), MeshError> {
+    let (lo, hi) = work.mesh.bounding_box();
+    let limit = crate::solid::ZERO_VOLUME_RATIO * (hi - lo).norm().powi(3);
+    if volumes.iter().sum::<f64>().abs() > limit {
+        crate::analysis::caps_within(&work.warnings, max_share)?;
+    }
+    Ok(())
 }
 
 /// The crack tolerance for `weld`, or `None` for exact welding.

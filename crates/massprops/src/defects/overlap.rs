@@ -515,11 +515,28 @@ fn self_lengths(a: &Solid, cells: usize, tolerance: f64, seed: u64) -> Option<Se
         return None;
     }
     let lines = grid.lines(seed);
-    let crossings = crossings(a, &lines, &grid);
+    // A shell small enough for one slice (below) is counted first; a big one goes straight to
+    // the crossings, which are found on the pool.
+    if a.faces.len() <= SLICE_FACES && !some_line_folds(a, &lines, &grid) {
+        return None;
+    }
+    let ByLine {
+        mut crossings,
+        starts,
+    } = crossings_by_line(a, &lines, &grid);
     let mut extra = [0.0; REPLICATES];
     let mut seen = false;
     let mut faces = Vec::new();
-    for line in crossings.chunk_by(|p, q| p.0 == q.0) {
+    for bounds in starts.windows(2) {
+        let line = &mut crossings[bounds[0]..bounds[1]];
+        // The winding number passes ±1 only where a line has two crossings of one sign; a line
+        // of one crossing, or of two that cancel, never does (most lines of most shells: they
+        // are left unsorted).
+        if line.len() < 2 || (line.len() == 2 && line[0].2 != line[1].2) {
+            continue;
+        }
+        line.sort_unstable_by(|a, b| a.1.total_cmp(&b.1).then(a.3.cmp(&b.3)));
+        let line = &*line;
         // Down the line from the top: the winding number below a crossing is that above it plus
         // the crossing's sign; |w| − 1 more counts of each stretch where |w| > 1. A crossing
         // with |w| > 1 on either side bounds that stretch.
@@ -555,24 +572,74 @@ fn self_lengths(a: &Solid, cells: usize, tolerance: f64, seed: u64) -> Option<Se
     })
 }
 
-/// Every crossing of the shell's faces with the grid's lines, ordered by line then height.
-fn crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Crossing> {
-    // A big shell in slices of faces on the rayon pool (a scan's one shell is most of the
-    // work); the sort makes the order the same whatever the split.
-    let slices = (solid.faces.len() / 32_768).clamp(1, 64);
-    let found = each(slices, &|k| {
+/// Every crossing of the shell's faces with the grid's lines, grouped by line (a counting sort;
+/// in each line in no order).
+struct ByLine {
+    crossings: Vec<Crossing>,
+    /// Line `l`'s crossings are `crossings[starts[l]..starts[l + 1]]`.
+    starts: Vec<usize>,
+}
+
+fn crossings_by_line(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> ByLine {
+    let found = unordered_crossings(solid, lines, grid);
+    let mut starts = vec![0usize; lines.len() + 1];
+    for c in found.iter().flatten() {
+        starts[c.0 as usize + 1] += 1;
+    }
+    for l in 0..lines.len() {
+        starts[l + 1] += starts[l];
+    }
+    let mut next = starts.clone();
+    let mut crossings = vec![(0, 0.0, 0, 0); starts[lines.len()]];
+    // Slices in order, each in its own order: the same grouping whatever the split.
+    for c in found.into_iter().flatten() {
+        let at = &mut next[c.0 as usize];
+        crossings[*at] = c;
+        *at += 1;
+    }
+    ByLine { crossings, starts }
+}
+
+/// The faces of one slice of a shell whose crossings are found on the pool.
+const SLICE_FACES: usize = 32_768;
+
+/// [`slice_crossings`] of the whole shell: a big shell in slices of faces on the rayon pool (a
+/// scan's one shell is most of the work).
+fn unordered_crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Vec<Crossing>> {
+    let slices = (solid.faces.len() / SLICE_FACES).clamp(1, 64);
+    each(slices, &|k| {
         let faces =
             &solid.faces[k * solid.faces.len() / slices..(k + 1) * solid.faces.len() / slices];
         let slice = Solid { faces, ..*solid };
         slice_crossings(&slice, lines, grid)
-    });
-    let mut out: Vec<Crossing> = found.into_iter().flatten().collect();
+    })
+}
+
+/// Every crossing of the shell's faces with the grid's lines, ordered by line then height.
+fn crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Crossing> {
+    // The sort makes the order the same whatever the split.
+    let mut out: Vec<Crossing> = unordered_crossings(solid, lines, grid)
+        .into_iter()
+        .flatten()
+        .collect();
     out.sort_unstable_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.3.cmp(&b.3)));
     out
 }
 
 /// [`crossings`] of one slice of a shell's faces, unordered.
 fn slice_crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Crossing> {
+    let mut out = Vec::new();
+    visit_crossings(solid, lines, grid, |c| out.push(c));
+    out
+}
+
+/// Calls `found` with each crossing of the solid's faces with the grid's lines, face by face.
+fn visit_crossings(
+    solid: &Solid,
+    lines: &[(f64, f64)],
+    grid: &Grid,
+    mut found: impl FnMut(Crossing),
+) {
     let Grid {
         lo, dx, dy, cells, ..
     } = *grid;
@@ -582,7 +649,6 @@ fn slice_crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Cros
         let last = (((max - origin) / step).floor().max(0.0) as usize).min(cells - 1);
         first..=last
     };
-    let mut out = Vec::new();
     for ([p, q, r], face) in solid.triangles() {
         let twice_area = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
         if twice_area == 0.0 {
@@ -614,13 +680,28 @@ fn slice_crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Cros
                     };
                     if inside {
                         let z = (w0 * p.z + w1 * q.z + w2 * r.z) / twice_area;
-                        out.push((line as u32, z, sign, face));
+                        found((line as u32, z, sign, face));
                     }
                 }
             }
         }
     }
-    out
+}
+
+/// Whether some line crosses the shell twice the same way (two crossings of one sign): only
+/// there can its winding number pass ±1. Counted without storing a crossing, so that the shells
+/// that cannot pass through themselves (most: every line in and out once) cost no allocation
+/// and no sort.
+fn some_line_folds(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> bool {
+    // [inward, outward] crossings of each line, saturating (two is all that matters).
+    let mut counts = vec![[0u8; 2]; lines.len()];
+    let mut folds = false;
+    visit_crossings(solid, lines, grid, |(line, _, sign, _)| {
+        let c = &mut counts[line as usize][usize::from(sign > 0)];
+        *c = c.saturating_add(1);
+        folds |= *c > 1;
+    });
+    folds
 }
 
 /// Lengths along one line inside both shells, inside only the first, inside only the second.
