@@ -64,17 +64,12 @@ def main(
     files: Union[list[str], None] = None,
 ) -> int:
     """Measures the mesh files of ``folder`` (or the list ``files``) into Parquet files in the
-    folder ``out`` on a local Dask cluster of ``workers`` processes; returns the rows written."""
+    folder ``out`` on a local Dask cluster of ``workers`` processes; returns the rows written
+    (those of every Parquet file in ``out``: give a new or empty folder)."""
     import dask.dataframe as dd
     import pyarrow.parquet as pq
     from dask.distributed import Client, LocalCluster
 
-    if __name__ != "__main__":
-        # Imported (a test, a notebook): the worker processes cannot import this file, so its
-        # functions travel by value, as they do when it runs as a script.
-        import cloudpickle
-
-        cloudpickle.register_pickle_by_value(sys.modules[__name__])
     paths = [os.path.abspath(p) for p in (files if files is not None else expand(folder))]
     out = Path(out)
     if not paths:
@@ -87,7 +82,11 @@ def main(
         processes=True,
         dashboard_address=None,
         silence_logs=logging.ERROR,
-    ) as cluster, Client(cluster):
+    ) as cluster, Client(cluster) as client:
+        if __name__ != "__main__":
+            # Imported (a test, a notebook), this file is a module the workers cannot import
+            # (run as a script, its functions travel by value): send it to them.
+            client.upload_file(__file__)
         frame = dd.from_map(measure_chunk, chunks(paths, workers, chunk), meta=meta())
         frame.to_parquet(out, write_index=False, schema=inertialab.batch_schema())
     return sum(pq.ParquetFile(p).metadata.num_rows for p in sorted(out.glob("*.parquet")))

@@ -64,8 +64,9 @@ def main(
 ) -> int:
     """Measures the mesh files of ``folder`` (or the list ``files``) into Parquet files in the
     folder ``out`` on a local Ray of ``workers`` CPUs (one task a CPU, one thread a task);
-    returns the rows written. A Ray already started (``init``, ``ray.init``) is used as it is
-    and left running; else one is started and shut down at the end, error or not."""
+    returns the rows written (those of every Parquet file in ``out``: give a new or empty
+    folder). A Ray already started (``init``, ``ray.init``) is used as it is and left running;
+    else one is started and shut down at the end, error or not."""
     import pyarrow.parquet as pq
     import ray
     import ray.data

@@ -49,7 +49,8 @@ def main(
     files: Union[list[str], None] = None,
 ) -> int:
     """Measures the mesh files of ``folder`` (or the list ``files``) into Parquet files in the
-    folder ``out`` on a local Spark of ``workers`` cores; returns the rows written."""
+    folder ``out`` on a local Spark of ``workers`` cores; returns the rows written
+    (those of every Parquet file in ``out``: give a new or empty folder)."""
     import pyarrow.parquet as pq
 
     paths = [os.path.abspath(p) for p in (files if files is not None else expand(folder))]
@@ -72,6 +73,10 @@ def main(
     )
     try:
         spark.sparkContext.setLogLevel("ERROR")
+        if __name__ != "__main__":
+            # Imported (a test, a notebook), this file is a module the Python workers cannot
+            # import (run as a script, its functions travel by value): send it to them.
+            spark.sparkContext.addPyFile(__file__)
         n = partitions(len(paths), workers)
         # Contiguous slices of the sorted list, as measure_files and the Dask example chunk it.
         frame = spark.createDataFrame([(p,) for p in paths], "path string").repartitionByRange(n, "path")

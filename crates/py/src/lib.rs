@@ -49,6 +49,7 @@ fn options(
     weld_distance: f64,
     holes: &str,
     max_cap_share: f64,
+    overlap_budget: u64,
     threads: Option<usize>,
 ) -> PyResult<Options> {
     let spec = match (density, mass) {
@@ -104,7 +105,7 @@ fn options(
             weld,
             holes,
             max_cap_share,
-            ..Repairs::default()
+            overlap_budget,
         },
         threads: threads::count(threads)?,
     })
@@ -124,7 +125,7 @@ impl Options {
 /// Mass properties of the mesh `vertices` (n, 3) float64 C-contiguous and `faces`; `check`:
 /// the full analysis (weld, diagnostics, defects, warnings) or the integrals alone.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, sizes, density, mass, method, weld, weld_distance, holes, max_cap_share, check, threads))]
+#[pyo3(signature = (vertices, faces, sizes, density, mass, method, weld, weld_distance, holes, max_cap_share, overlap_budget, check, threads))]
 #[allow(clippy::too_many_arguments)]
 fn analyze_arrays(
     py: Python<'_>,
@@ -138,6 +139,7 @@ fn analyze_arrays(
     weld_distance: f64,
     holes: &str,
     max_cap_share: f64,
+    overlap_budget: u64,
     check: bool,
     threads: Option<usize>,
 ) -> PyResult<MassResult> {
@@ -149,6 +151,7 @@ fn analyze_arrays(
         weld_distance,
         holes,
         max_cap_share,
+        overlap_budget,
         threads,
     )?;
     let v = views(&vertices, &faces, sizes.as_ref())?;
@@ -203,7 +206,7 @@ fn unchecked(v: &arrays::Views<'_>, spec: MassSpec) -> Result<Body, BadArrays> {
 
 /// Reads an OBJ, STL or body file with the project's readers and analyses it as `props` does.
 #[pyfunction]
-#[pyo3(signature = (path, density, mass, method, weld, weld_distance, holes, max_cap_share, threads))]
+#[pyo3(signature = (path, density, mass, method, weld, weld_distance, holes, max_cap_share, overlap_budget, threads))]
 #[allow(clippy::too_many_arguments)]
 fn analyze_path(
     py: Python<'_>,
@@ -215,6 +218,7 @@ fn analyze_path(
     weld_distance: f64,
     holes: &str,
     max_cap_share: f64,
+    overlap_budget: u64,
     threads: Option<usize>,
 ) -> PyResult<MassResult> {
     let o = options(
@@ -225,6 +229,7 @@ fn analyze_path(
         weld_distance,
         holes,
         max_cap_share,
+        overlap_budget,
         threads,
     )?;
     if massprops::io::is_body_file(&path) && (density.is_some() || mass.is_some()) {
@@ -260,7 +265,7 @@ fn analyze_path(
 /// each when `densities` has one), as columns: `{name: list}` in the schema's order. Never
 /// raises for a row.
 #[pyfunction]
-#[pyo3(signature = (paths, contents, densities, method, weld, weld_distance, holes, max_cap_share, threads))]
+#[pyo3(signature = (paths, contents, densities, method, weld, weld_distance, holes, max_cap_share, overlap_budget, threads))]
 #[allow(clippy::too_many_arguments)]
 fn measure_rows<'py>(
     py: Python<'py>,
@@ -272,6 +277,7 @@ fn measure_rows<'py>(
     weld_distance: f64,
     holes: &str,
     max_cap_share: f64,
+    overlap_budget: u64,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let o = options(
@@ -282,6 +288,7 @@ fn measure_rows<'py>(
         weld_distance,
         holes,
         max_cap_share,
+        overlap_budget,
         threads,
     )?;
     let bytes: Vec<Option<&[u8]>> = match &contents {
@@ -388,6 +395,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MeshError", m.py().get_type::<threads::MeshError>())?;
     m.add("SCHEMA_VERSION", inertia_lab::cli::report::SCHEMA_VERSION)?;
     m.add("BATCH_SCHEMA_VERSION", batch::SCHEMA_VERSION)?;
+    m.add("OVERLAP_BUDGET", massprops::defects::OVERLAP_BUDGET)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

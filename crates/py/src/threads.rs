@@ -2,8 +2,8 @@
 //!
 //! A pipeline runs one call per worker process or thread, so a call uses **one thread** unless
 //! told otherwise (`threads=`, else `RAYON_NUM_THREADS`): a worker that spawned a pool as large
-//! as the machine would fight its siblings. Each thread count has one rayon pool, made on first
-//! use and kept.
+//! as the machine would fight its siblings. One thread is the caller's own; larger counts have
+//! one rayon pool each, made on first use and kept.
 
 use std::sync::{Arc, Mutex};
 
@@ -39,8 +39,27 @@ pub fn count(threads: Option<usize>) -> PyResult<usize> {
     Ok(n)
 }
 
-/// Runs `work` on the pool of `threads` threads (rayon calls inside it stay on that pool).
+/// Runs `work` on `threads` threads (rayon calls inside it stay on them).
+///
+/// One thread is the calling thread itself, made the only worker of a pool of its own (kept per
+/// thread): no other thread is woken, and two Python threads calling at once run side by side.
+/// More threads share one pool per count in the process.
 pub fn on_threads<T: Send>(threads: usize, work: impl FnOnce() -> T + Send) -> T {
+    if threads == 1 {
+        thread_local! {
+            // rayon leaks the registry of a pool that uses its creating thread (a few hundred
+            // bytes per Python thread that calls, never a thread).
+            static OWN: Option<rayon::ThreadPool> = rayon::ThreadPoolBuilder::new()
+                .num_threads(1)
+                .use_current_thread()
+                .build()
+                .ok();
+        }
+        return OWN.with(|pool| match pool {
+            Some(pool) => pool.install(work),
+            None => work(),
+        });
+    }
     static POOLS: Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>> = Mutex::new(Vec::new());
     let pool = {
         let mut pools = POOLS.lock().unwrap_or_else(|e| e.into_inner());

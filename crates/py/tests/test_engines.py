@@ -28,6 +28,13 @@ pa = pytest.importorskip("pyarrow")
 pq = pytest.importorskip("pyarrow.parquet")
 
 EXAMPLES = REPO / "crates" / "py" / "examples"
+# Ray Data's own DataContext warns about its deprecated fields as it copies itself.
+# PySpark 4.3 warns that pandas 3 is not fully supported (the example does not use pandas).
+pytestmark = [
+    pytest.mark.filterwarnings("ignore::DeprecationWarning:ray.data.context"),
+    pytest.mark.filterwarnings("ignore:PySpark does not yet fully support pandas:FutureWarning"),
+]
+
 # Timings differ from run to run; every other column is the same code's output, bit for bit.
 TIMINGS = {"parse_ms", "compute_ms"}
 # The files that are no body: garbage, nothing, a TOML that is not a body file.
@@ -39,7 +46,7 @@ def needs(test: str, module: str, install: str) -> None:
     try:
         importlib.import_module(module)
     except ImportError as e:
-        skip_or_fail(test, f"{module} is not installed ({e})", install)
+        skip_or_fail(test, f"cannot import {module}: {e}", install)
 
 
 def example(name: str) -> Any:

@@ -121,3 +121,17 @@ def test_body_file_parts_and_warnings():
     assert math.isclose(r.mass, sum(p["mass"] for p in d["parts"]), rel_tol=1e-14)
     assert r.volume is None and r.density is None
     assert json.loads(r.to_json()) == d
+
+
+def test_an_overlap_budget_of_zero_compares_no_shell(tmp_path):
+    path = tmp_path / "two_cubes.obj"
+    path.write_text(DEFECTS["two_cubes.obj"])
+    full = {w["code"]: w for w in il.analyze_file(path).warnings}["overlapping_shells"]
+    assert (full["compared"], full["candidates"]) == (1, 1)
+    assert abs(full["overlap_volume"] - 0.5) < 0.05
+    quick = {w["code"]: w for w in il.analyze_file(path, repairs=il.Repairs(overlap_budget=0)).warnings}
+    cut = quick["overlapping_shells"]
+    assert (cut["compared"], cut["candidates"]) == (0, 1)
+    assert cut["uncompared_bound"] == 1.0
+    with pytest.raises(ValueError, match="overlap_budget"):
+        il.analyze_file(path, repairs=il.Repairs(overlap_budget=-1))

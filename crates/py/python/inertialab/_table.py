@@ -67,7 +67,7 @@ def measure_table(
     densities = _column(batch, density_col) if density_col is not None else None
     if any(p is None for p in paths):
         raise ValueError(f"column {path_col!r} has a null path")
-    weld, weld_distance, holes, cap_share = _repairs(repairs)
+    weld, weld_distance, holes, cap_share, budget = _repairs(repairs)
     columns = _native.measure_rows(
         [str(p) for p in paths],
         contents,
@@ -77,6 +77,7 @@ def measure_table(
         weld_distance,
         holes,
         cap_share,
+        budget,
         _threads(threads),
     )
     schema = batch_schema()
