@@ -170,3 +170,22 @@ def test_repairs():
         il.mass_properties(v, f[2:], repairs={"max_cap_share": 0.01})
     with pytest.raises(ValueError, match="weld"):
         il.mass_properties(v, f, repairs={"weld": -1.0})
+
+
+def test_the_stubs_name_everything_the_native_module_has():
+    import inspect
+    import re
+    from pathlib import Path
+
+    from inertialab import _native
+
+    stub = (Path(il.__file__).parent / "_native.pyi").read_text()
+    declared = set(re.findall(r"^(?:def|class) (\w+)|^(\w+):", stub, re.M))
+    declared = {a or b for a, b in declared}
+    public = {n for n in dir(_native) if not n.startswith("_") or n == "__version__"}
+    assert public == declared, (public - declared, declared - public)
+    methods = {n for n in dir(_native.MassResult) if not n.startswith("_")}
+    body = stub.split("class MassResult", 1)[1].split("\ndef ", 1)[0]
+    assert methods == set(re.findall(r"def (\w+)", body)) - {"__init__"}
+    assert (Path(il.__file__).parent / "py.typed").exists()
+    assert inspect.signature(il.mass_properties).parameters["check"].default is True
