@@ -15,6 +15,7 @@ table gives the overhead with and without it. Not a test: it takes minutes.
 from __future__ import annotations
 
 import argparse
+import hashlib
 import importlib.util
 import os
 import shutil
@@ -37,6 +38,11 @@ def example(name: str) -> Any:
     sys.modules[name] = module
     spec.loader.exec_module(module)
     return module
+
+
+def sha256(path: str) -> str:
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
 
 
 def runners(workers: int) -> dict[str, Callable[[list[str], Path], int]]:
@@ -72,7 +78,7 @@ def main() -> None:
     # The workers of Dask and Ray load the package afresh: a reinstall during the runs (a
     # `cargo test` elsewhere) would compare two builds.
     native = inertialab._native.__file__
-    built = os.stat(native).st_mtime_ns
+    built = sha256(native)
     run = runners(args.workers)
     engines = args.engines.split(",")
     for e in engines:
@@ -105,8 +111,8 @@ def main() -> None:
                 )
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
-    if os.stat(native).st_mtime_ns != built:
-        sys.exit(f"{native} was rebuilt during the runs: the timings compare two builds; run again")
+    if sha256(native) != built:
+        sys.exit(f"{native} changed during the runs: the timings compare two builds; run again")
 
     median = {e: statistics.median(seconds[e]) for e in engines}
     start = {e: statistics.median(fixed[e]) for e in engines}

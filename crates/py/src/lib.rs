@@ -40,18 +40,19 @@ struct Options {
     threads: usize,
 }
 
-#[allow(clippy::too_many_arguments)]
+/// `Repairs` as the Python layer passes it: `(weld, weld_distance, holes, max_cap_share,
+/// overlap_budget)`, `weld` `"auto"`, `"exact"` or `"distance"`.
+#[derive(FromPyObject)]
+struct RepairArgs(String, f64, String, f64, u64);
+
 fn options(
     density: Option<f64>,
     mass: Option<f64>,
     method: &str,
-    weld: &str,
-    weld_distance: f64,
-    holes: &str,
-    max_cap_share: f64,
-    overlap_budget: u64,
+    repairs: RepairArgs,
     threads: Option<usize>,
 ) -> PyResult<Options> {
+    let RepairArgs(weld, weld_distance, holes, max_cap_share, overlap_budget) = repairs;
     let spec = match (density, mass) {
         (Some(_), Some(_)) => {
             return Err(PyValueError::new_err("give a density or a mass, not both"));
@@ -71,7 +72,7 @@ fn options(
             )));
         }
     };
-    let weld = match weld {
+    let weld = match weld.as_str() {
         "auto" => Weld::Auto,
         "exact" => Weld::Exact,
         "distance" if weld_distance.is_finite() && weld_distance > 0.0 => {
@@ -84,7 +85,7 @@ fn options(
             )));
         }
     };
-    let holes = match holes {
+    let holes = match holes.as_str() {
         "cap" => Holes::Cap,
         "refuse" => Holes::Refuse,
         other => {
@@ -125,7 +126,7 @@ impl Options {
 /// Mass properties of the mesh `vertices` (n, 3) float64 C-contiguous and `faces`; `check`:
 /// the full analysis (weld, diagnostics, defects, warnings) or the integrals alone.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, sizes, density, mass, method, weld, weld_distance, holes, max_cap_share, overlap_budget, check, threads))]
+#[pyo3(signature = (vertices, faces, sizes, density, mass, method, repairs, check, threads))]
 #[allow(clippy::too_many_arguments)]
 fn analyze_arrays(
     py: Python<'_>,
@@ -135,25 +136,11 @@ fn analyze_arrays(
     density: Option<f64>,
     mass: Option<f64>,
     method: &str,
-    weld: &str,
-    weld_distance: f64,
-    holes: &str,
-    max_cap_share: f64,
-    overlap_budget: u64,
+    repairs: RepairArgs,
     check: bool,
     threads: Option<usize>,
 ) -> PyResult<MassResult> {
-    let o = options(
-        density,
-        mass,
-        method,
-        weld,
-        weld_distance,
-        holes,
-        max_cap_share,
-        overlap_budget,
-        threads,
-    )?;
+    let o = options(density, mass, method, repairs, threads)?;
     let v = views(&vertices, &faces, sizes.as_ref())?;
     if !check && o.method != Method::Volume {
         return Err(PyValueError::new_err(
@@ -206,32 +193,17 @@ fn unchecked(v: &arrays::Views<'_>, spec: MassSpec) -> Result<Body, BadArrays> {
 
 /// Reads an OBJ, STL or body file with the project's readers and analyses it as `props` does.
 #[pyfunction]
-#[pyo3(signature = (path, density, mass, method, weld, weld_distance, holes, max_cap_share, overlap_budget, threads))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (path, density, mass, method, repairs, threads))]
 fn analyze_path(
     py: Python<'_>,
     path: PathBuf,
     density: Option<f64>,
     mass: Option<f64>,
     method: &str,
-    weld: &str,
-    weld_distance: f64,
-    holes: &str,
-    max_cap_share: f64,
-    overlap_budget: u64,
+    repairs: RepairArgs,
     threads: Option<usize>,
 ) -> PyResult<MassResult> {
-    let o = options(
-        density,
-        mass,
-        method,
-        weld,
-        weld_distance,
-        holes,
-        max_cap_share,
-        overlap_budget,
-        threads,
-    )?;
+    let o = options(density, mass, method, repairs, threads)?;
     if massprops::io::is_body_file(&path) && (density.is_some() || mass.is_some()) {
         return Err(PyValueError::new_err(
             "a body file gives each part's material: density and mass do not apply",
@@ -265,32 +237,17 @@ fn analyze_path(
 /// each when `densities` has one), as columns: `{name: list}` in the schema's order. Never
 /// raises for a row.
 #[pyfunction]
-#[pyo3(signature = (paths, contents, densities, method, weld, weld_distance, holes, max_cap_share, overlap_budget, threads))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (paths, contents, densities, method, repairs, threads))]
 fn measure_rows<'py>(
     py: Python<'py>,
     paths: Vec<PathBuf>,
     contents: Option<Vec<Option<Bound<'py, PyBytes>>>>,
     densities: Option<Vec<Option<f64>>>,
     method: &str,
-    weld: &str,
-    weld_distance: f64,
-    holes: &str,
-    max_cap_share: f64,
-    overlap_budget: u64,
+    repairs: RepairArgs,
     threads: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let o = options(
-        None,
-        None,
-        method,
-        weld,
-        weld_distance,
-        holes,
-        max_cap_share,
-        overlap_budget,
-        threads,
-    )?;
+    let o = options(None, None, method, repairs, threads)?;
     let bytes: Vec<Option<&[u8]>> = match &contents {
         Some(c) => {
             if c.len() != paths.len() {

@@ -165,7 +165,6 @@ def mass_properties(
             raise TypeError("mass_properties needs faces, or a trimesh.Trimesh")
     v = _vertices(vertices)
     f, sizes = _faces(faces)
-    weld, weld_distance, holes, cap_share, budget = _repairs(repairs)
     return _native.analyze_arrays(
         v,
         f,
@@ -173,11 +172,7 @@ def mass_properties(
         None if density is None else float(density),
         None if mass is None else float(mass),
         method,
-        weld,
-        weld_distance,
-        holes,
-        cap_share,
-        budget,
+        _repairs(repairs),
         bool(check),
         _threads(threads),
     )
@@ -199,16 +194,11 @@ def analyze_file(
     Raises ``FileNotFoundError`` / ``OSError`` when the file cannot be read and
     ``inertialab.MeshError`` when it gives no body (``kind`` ``malformed``, ``zero_volume``, …).
     """
-    weld, weld_distance, holes, cap_share, budget = _repairs(repairs)
     return _native.analyze_path(
         os.fspath(path),
         None if density is None else float(density),
         None if mass is None else float(mass),
         method,
-        weld,
-        weld_distance,
-        holes,
-        cap_share,
-        budget,
+        _repairs(repairs),
         _threads(threads),
     )

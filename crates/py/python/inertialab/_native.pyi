@@ -56,11 +56,7 @@ def analyze_arrays(
     density: Optional[float],
     mass: Optional[float],
     method: str,
-    weld: str,
-    weld_distance: float,
-    holes: str,
-    max_cap_share: float,
-    overlap_budget: int,
+    repairs: tuple[str, float, str, float, int],
     check: bool,
     threads: Optional[int],
 ) -> MassResult: ...
@@ -69,11 +65,7 @@ def analyze_path(
     density: Optional[float],
     mass: Optional[float],
     method: str,
-    weld: str,
-    weld_distance: float,
-    holes: str,
-    max_cap_share: float,
-    overlap_budget: int,
+    repairs: tuple[str, float, str, float, int],
     threads: Optional[int],
 ) -> MassResult: ...
 def measure_rows(
@@ -81,11 +73,7 @@ def measure_rows(
     contents: Optional[Sequence[Optional[bytes]]],
     densities: Optional[Sequence[Optional[float]]],
     method: str,
-    weld: str,
-    weld_distance: float,
-    holes: str,
-    max_cap_share: float,
-    overlap_budget: int,
+    repairs: tuple[str, float, str, float, int],
     threads: Optional[int],
 ) -> dict[str, list[Any]]: ...
 def batch_schema() -> list[tuple[str, str]]: ...

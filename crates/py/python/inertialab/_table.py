@@ -67,17 +67,12 @@ def measure_table(
     densities = _column(batch, density_col) if density_col is not None else None
     if any(p is None for p in paths):
         raise ValueError(f"column {path_col!r} has a null path")
-    weld, weld_distance, holes, cap_share, budget = _repairs(repairs)
     columns = _native.measure_rows(
         [str(p) for p in paths],
         contents,
         None if densities is None else [None if d is None else float(d) for d in densities],
         method,
-        weld,
-        weld_distance,
-        holes,
-        cap_share,
-        budget,
+        _repairs(repairs),
         _threads(threads),
     )
     schema = batch_schema()
