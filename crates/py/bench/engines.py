@@ -3,7 +3,7 @@ same files and the same number of cores, end to end (the engine started and stop
 the Parquet written), runs alternating, the median and range printed as a Markdown table.
 
     python crates/py/bench/engines.py [FOLDER] [--limit N] [--runs 3] [--workers 2]
-        [--engines measure_files,dask,ray]
+        [--engines measure_files,dask,ray]    (spark too, when pyspark and Java are there)
 
 FOLDER defaults to /tmp/survey/pb (the meshes of the pybullet_data wheel). The goal is an
 engine within 15 % of ``measure_files``: the work is the same native call on the same chunks,
@@ -55,7 +55,10 @@ def runners(workers: int) -> dict[str, Callable[[list[str], Path], int]]:
     def ray(paths: list[str], out: Path) -> int:
         return example("ray_batch").main(None, out, workers=workers, files=paths)
 
-    return {"measure_files": files, "dask": dask, "ray": ray}
+    def spark(paths: list[str], out: Path) -> int:  # not by default: pyspark and Java
+        return example("spark_batch").main(None, out, workers=workers, files=paths)
+
+    return {"measure_files": files, "dask": dask, "ray": ray, "spark": spark}
 
 
 def main() -> None:
@@ -79,6 +82,9 @@ def main() -> None:
     # `cargo test` elsewhere) would compare two builds.
     native = inertialab._native.__file__
     built = sha256(native)
+    # An engine may change this process's environment for the processes started after it
+    # (Dask's nanny does, in the process that runs it): printed at the end.
+    environment = dict(os.environ)
     run = runners(args.workers)
     engines = args.engines.split(",")
     for e in engines:
@@ -111,6 +117,9 @@ def main() -> None:
                 )
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
+    changed = {k: v for k, v in os.environ.items() if environment.get(k) != v}
+    if changed:
+        print(f"(the engines set in this process: {changed})", file=sys.stderr)
     if sha256(native) != built:
         sys.exit(f"{native} changed during the runs: the timings compare two builds; run again")
 

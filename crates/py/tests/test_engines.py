@@ -2,10 +2,8 @@
 ``measure_files``' rows, one per file, on a folder of the repository's real meshes, body files
 and broken files.
 
-Select them with ``-k dask`` or ``-k ray``. Without Dask or Ray a test prints ``SKIPPED …`` and
-passes, except under ``CI=true``, where it fails. The Spark example is checked when pyspark and
-Java are there (``-k spark``); it is optional everywhere, CI included: pyspark is not in
-requirements.txt.
+Select them with ``-k dask``, ``-k ray`` or ``-k spark``. Without Dask, Ray, pyspark or a Java
+runtime a test prints ``SKIPPED …`` and passes, except under ``CI``, where it fails.
 """
 
 from __future__ import annotations
@@ -222,13 +220,13 @@ def test_ray_relative_paths_and_one_file_a_block(meshes, reference, request, tmp
 
 
 def test_spark_matches_measure_files(meshes, reference, tmp_path):
-    # Optional everywhere (pyspark is not in requirements.txt): a plain skip, CI included.
+    name = "test_spark_matches_measure_files"
     try:
         import pyspark  # noqa: F401
     except ImportError:
-        pytest.skip("SKIPPED test_spark_matches_measure_files: pyspark is not installed (pip install pyspark)")
+        skip_or_fail(name, "pyspark is not installed", "pip install pyspark==4.3.0")
     if shutil.which("java") is None and not os.environ.get("JAVA_HOME"):
-        pytest.skip("SKIPPED test_spark_matches_measure_files: no Java runtime (install a JDK 17 or later)")
+        skip_or_fail(name, "no Java runtime (Spark 4 needs 17 or later)", "apt-get install openjdk-17-jre-headless")
     spark_batch = example("spark_batch")
     out = tmp_path / "out"
     n = spark_batch.main(meshes, out, workers=2)
