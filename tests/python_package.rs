@@ -152,4 +152,6 @@ fn the_package_builds_installs_and_passes_its_tests() {
         pytest.status.success(),
         "the Python tests failed:\n{report}"
     );
+    let summary = report.lines().last().unwrap_or_default();
+    let _ = writeln!(std::io::stderr(), "{TEST}: pytest {summary}");
 }
