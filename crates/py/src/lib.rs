@@ -4,10 +4,10 @@
 //! (`python/inertialab/`) check and convert their arguments and build the Arrow tables; this
 //! crate does the work with the GIL released.
 //!
-//! - [`arrays`]: numpy arrays → meshes, in place where the dtype and layout allow;
-//! - [`result`]: `MassResult`, one body's numbers with `to_dict()` (`props --json`'s object) and
+//! - `arrays`: numpy arrays → meshes, in place where the dtype and layout allow;
+//! - `result`: `MassResult`, one body's numbers with `to_dict()` (`props --json`'s object) and
 //!   the exports;
-//! - [`threads`]: how many threads a call uses (one by default, `threads=` or
+//! - `threads`: how many threads a call uses (one by default, `threads=` or
 //!   `RAYON_NUM_THREADS`), and the errors raised in Python;
 //! - here: the module's functions.
 
