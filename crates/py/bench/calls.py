@@ -111,7 +111,7 @@ def trimesh_files(files, workers):
 
 
 def folder(files_dir, runs, workers=2):
-    files = il._files.expand(files_dir)
+    files = il.mesh_files(files_dir)
     mb = sum(os.path.getsize(p) for p in files) / 1e6
     budgets = {
         f"inertialab measure_files, {workers} workers": il.Repairs(),

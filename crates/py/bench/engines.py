@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 import inertialab
-from inertialab._files import expand
+from inertialab import mesh_files
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -70,7 +70,7 @@ def main() -> None:
     parser.add_argument("--engines", default="measure_files,dask,ray")
     args = parser.parse_args()
 
-    paths = [os.path.abspath(p) for p in expand(args.folder)][: args.limit]
+    paths = [os.path.abspath(p) for p in mesh_files(args.folder)][: args.limit]
     if not paths:
         sys.exit(f"no .obj, .stl or .toml file in {args.folder}")
     megabytes = sum(os.path.getsize(p) for p in paths) / 1e6

@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Any, Union
 
 import inertialab
-from inertialab._files import expand
+from inertialab import mesh_files
 
 
 def measure_chunk(paths: list[str]) -> Any:
@@ -71,7 +71,7 @@ def main(
     import pyarrow.parquet as pq
     from dask.distributed import Client, LocalCluster
 
-    paths = [os.path.abspath(p) for p in (files if files is not None else expand(folder))]
+    paths = [os.path.abspath(p) for p in (files if files is not None else mesh_files(folder))]
     out = Path(out)
     if not paths:
         # from_map needs at least one partition; an empty folder is an empty result.

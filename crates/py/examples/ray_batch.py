@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Union
 
 import inertialab
-from inertialab._files import expand
+from inertialab import mesh_files
 
 
 def blocks(files: int, cpus: int) -> int:
@@ -71,7 +71,7 @@ def main(
     import ray
     import ray.data
 
-    paths = [os.path.abspath(p) for p in (files if files is not None else expand(folder))]
+    paths = [os.path.abspath(p) for p in (files if files is not None else mesh_files(folder))]
     out = Path(out)
     if not paths:
         out.mkdir(parents=True, exist_ok=True)

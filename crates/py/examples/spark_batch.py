@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any, Iterator, Union
 
 import inertialab
-from inertialab._files import expand
+from inertialab import mesh_files
 
 
 def measure_batches(batches: Iterator[Any]) -> Iterator[Any]:
@@ -53,7 +53,7 @@ def main(
     (those of every Parquet file in ``out``: give a new or empty folder)."""
     import pyarrow.parquet as pq
 
-    paths = [os.path.abspath(p) for p in (files if files is not None else expand(folder))]
+    paths = [os.path.abspath(p) for p in (files if files is not None else mesh_files(folder))]
     out = Path(out)
     if not paths:
         out.mkdir(parents=True, exist_ok=True)

@@ -105,7 +105,7 @@ def test_bytes_and_densities(folder):
 def test_measure_files_writes_every_file_once(folder, tmp_path_factory):
     out = tmp_path_factory.mktemp("out")
     summary = il.measure_files(folder, out, workers=2, progress=False, shard_rows=3)
-    files = il._files.expand(folder)
+    files = il.mesh_files(folder)
     table = pq.read_table(out)
     assert table.num_rows == len(files) == summary.files
     assert sorted(table.column("path").to_pylist()) == sorted(files)
@@ -141,9 +141,20 @@ def test_resume_after_a_killed_run_writes_no_id_twice(folder, tmp_path_factory):
     assert len(whole) == 2, "two shards renamed before the kill"
     assert len(list(out.glob(".part-*.tmp"))) == 1, "the third was left under its temporary name"
     summary = il.measure_files(folder, out, workers=2, progress=False)
-    files = il._files.expand(folder)
+    files = il.mesh_files(folder)
     assert summary.skipped == 4
     table = pq.read_table(out)
     ids = [i for i in table.column("id").to_pylist() if i is not None]
     assert len(ids) == len(set(ids)), "an id written twice"
     assert sorted(table.column("path").to_pylist()) == sorted(files)
+
+
+def test_mesh_files_of_a_folder_a_glob_and_a_list(folder):
+    (folder / "sub").mkdir()
+    (folder / "sub" / "deep.STL").write_bytes(b"")
+    (folder / "readme.txt").write_text("not a mesh")
+    found = il.mesh_files(folder)
+    assert found == sorted(found) and str(folder / "sub" / "deep.STL") in found
+    assert not any(p.endswith(".txt") for p in found)
+    assert il.mesh_files(str(folder / "**" / "*.STL")) == [str(folder / "sub" / "deep.STL")]
+    assert il.mesh_files([folder / "b.obj", folder / "a.obj"]) == [str(folder / "b.obj"), str(folder / "a.obj")]

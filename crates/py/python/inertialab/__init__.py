@@ -5,6 +5,7 @@ mass, from Python.
 - ``analyze_file(path, ...)``: an OBJ, STL or body file, as ``inertia-lab props`` reads it;
 - ``measure_table(batch, ...)``: an Arrow table of files in, the batch table out, one row each;
 - ``measure_files(paths, out, ...)``: a folder of files into resumable Parquet shards;
+- ``mesh_files(folder_or_glob)``: the files ``measure_files`` would measure, for an engine;
 - ``MassResult``: one body's numbers, ``to_dict()`` (``props --json``'s object) and exports.
 
 Conventions: lengths in the mesh's unit, mass in the unit of density times length³; the inertia
@@ -13,7 +14,7 @@ off-diagonals are −∑ m·x·y; principal moments ascending, principal axes as
 """
 
 from ._api import Repairs, analyze_file, mass_properties
-from ._files import Summary, measure_files
+from ._files import Summary, measure_files, mesh_files
 from ._native import BATCH_SCHEMA_VERSION, SCHEMA_VERSION, MassResult, MeshError, __version__
 from ._table import batch_schema, measure_table
 
@@ -30,4 +31,5 @@ __all__ = [
     "mass_properties",
     "measure_files",
     "measure_table",
+    "mesh_files",
 ]

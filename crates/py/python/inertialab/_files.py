@@ -56,7 +56,7 @@ class Summary:
         )
 
 
-def expand(paths_or_glob: Union[str, os.PathLike[str], Iterable[Union[str, os.PathLike[str]]]]) -> list[str]:
+def mesh_files(paths_or_glob: Union[str, os.PathLike[str], Iterable[Union[str, os.PathLike[str]]]]) -> list[str]:
     """The files of a folder (searched for .obj, .stl and .toml), a glob pattern (``**``
     recursive) or a list of paths, sorted for folders and globs, as given for lists."""
     if isinstance(paths_or_glob, (str, os.PathLike)):
@@ -122,7 +122,7 @@ def measure_files(
         raise ValueError(f"shard_rows must be at least 1, not {shard_rows}")
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    files = expand(paths_or_glob)
+    files = mesh_files(paths_or_glob)
     todo = files
     skipped = 0
     if resume and files:
