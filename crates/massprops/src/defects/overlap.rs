@@ -535,7 +535,7 @@ fn self_lengths(a: &Solid, cells: usize, tolerance: f64, seed: u64) -> Option<Se
         if line.len() < 2 || (line.len() == 2 && line[0].2 != line[1].2) {
             continue;
         }
-        line.sort_unstable_by(|a, b| a.1.total_cmp(&b.1).then(a.3.cmp(&b.3)));
+        sort_by_height(line);
         let line = &*line;
         // Down the line from the top: the winding number below a crossing is that above it plus
         // the crossing's sign; |w| − 1 more counts of each stretch where |w| > 1. A crossing
@@ -615,15 +615,23 @@ fn unordered_crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<
     })
 }
 
-/// Every crossing of the shell's faces with the grid's lines, ordered by line then height.
+/// Every crossing of the shell's faces with the grid's lines, ordered by line, then height, then
+/// face: grouped by line by a counting sort, then each line's few crossings sorted.
 fn crossings(solid: &Solid, lines: &[(f64, f64)], grid: &Grid) -> Vec<Crossing> {
-    // The sort makes the order the same whatever the split.
-    let mut out: Vec<Crossing> = unordered_crossings(solid, lines, grid)
-        .into_iter()
-        .flatten()
-        .collect();
-    out.sort_unstable_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)).then(a.3.cmp(&b.3)));
-    out
+    let ByLine {
+        mut crossings,
+        starts,
+    } = crossings_by_line(solid, lines, grid);
+    for bounds in starts.windows(2) {
+        sort_by_height(&mut crossings[bounds[0]..bounds[1]]);
+    }
+    crossings
+}
+
+/// One line's crossings in order of height, ties by face: the same order whatever the split of
+/// the faces.
+fn sort_by_height(line: &mut [Crossing]) {
+    line.sort_unstable_by(|a, b| a.1.total_cmp(&b.1).then(a.3.cmp(&b.3)));
 }
 
 /// [`crossings`] of one slice of a shell's faces, unordered.
