@@ -12,7 +12,7 @@
 //! [`FINE_CELLS`] on a side, whose crossings also name the faces that bound the doubly counted
 //! volume.
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::shells::Part;
 use crate::PolyMesh;
@@ -217,6 +217,146 @@ impl Solid<'_> {
     }
 }
 
+/// Shells of at most this many faces are first tested by their face planes (each plane against
+/// every vertex of the shell or of the other: quadratic, so only for small shells, the pieces of
+/// a convex decomposition), which settles most pairs and selves without casting a line.
+const PLANES_UP_TO: usize = 256;
+
+/// How far a vertex may lie past a plane and still count as on it, relative to the tolerance on
+/// lengths: far below any length the lines could measure.
+const PLANE_SLACK: f64 = 1e-3;
+
+impl Solid<'_> {
+    /// The shell's vertices, each once.
+    fn points(&self) -> Vec<Point3<f64>> {
+        let mut ids: Vec<u32> = self
+            .faces
+            .iter()
+            .flat_map(|&f| self.mesh.face(f as usize).iter().copied())
+            .collect();
+        ids.sort_unstable();
+        ids.dedup();
+        ids.into_iter()
+            .map(|i| self.mesh.positions()[i as usize])
+            .collect()
+    }
+
+    /// Each face's plane, a unit normal (Newell's) and a point on it; faces without area left out.
+    fn planes(&self) -> Vec<(Vector3<f64>, Point3<f64>)> {
+        let at = |i: u32| self.mesh.positions()[i as usize];
+        self.faces
+            .iter()
+            .filter_map(|&f| {
+                let face = self.mesh.face(f as usize);
+                let mut normal = Vector3::zeros();
+                for (k, &i) in face.iter().enumerate() {
+                    let (p, q) = (at(i), at(face[(k + 1) % face.len()]));
+                    normal += Vector3::new(
+                        (p.y - q.y) * (p.z + q.z),
+                        (p.z - q.z) * (p.x + q.x),
+                        (p.x - q.x) * (p.y + q.y),
+                    );
+                }
+                normal.try_normalize(0.0).map(|n| (n, at(face[0])))
+            })
+            .collect()
+    }
+}
+
+/// Whether any of `points` lies more than `slack` above the plane, and any more than `slack`
+/// below it.
+fn sides(plane: &(Vector3<f64>, Point3<f64>), points: &[Point3<f64>], slack: f64) -> (bool, bool) {
+    let (n, o) = plane;
+    let (mut above, mut below) = (false, false);
+    for p in points {
+        let d = n.dot(&(p - o));
+        above |= d > slack;
+        below |= d < -slack;
+    }
+    (above, below)
+}
+
+/// Whether a plane of one of `a`'s faces has all of `a`'s vertices on one side and all of
+/// `b`'s on the other: the solids (each within the hull of its vertices) then share no volume.
+fn separated(a: &Solid, b: &Solid, slack: f64) -> bool {
+    let (pa, pb) = (a.points(), b.points());
+    a.planes().iter().any(|plane| {
+        let (a_above, a_below) = sides(plane, &pa, slack);
+        let (b_above, b_below) = sides(plane, &pb, slack);
+        (!a_above && !b_below) || (!a_below && !b_above)
+    })
+}
+
+/// Whether the shell is the boundary of a convex body, covered once: every vertex on one side
+/// of every face's plane (so every face lies on the boundary of the polytope those sides
+/// bound), and a line through the vertices' centroid, inside it, crossed so that the winding
+/// number there is ±1 (a surface wrapped twice round the polytope would give ±2). Such a shell
+/// never passes through itself.
+fn convex_once(a: &Solid, slack: f64) -> bool {
+    let points = a.points();
+    let planes = a.planes();
+    // For each plane, +1 when the vertices are on or below it, −1 when on or above.
+    let mut inner = Vec::with_capacity(planes.len());
+    for plane in &planes {
+        match sides(plane, &points, slack) {
+            (true, true) => return false,
+            (false, _) => inner.push(1.0),
+            (true, false) => inner.push(-1.0),
+        }
+    }
+    if points.is_empty() {
+        return false;
+    }
+    let centroid =
+        Point3::from(points.iter().map(|p| p.coords).sum::<Vector3<f64>>() / points.len() as f64);
+    // The centroid's vertical line may run along an edge (a symmetric body's triangulated
+    // faces): two more points near it, inside by every plane, are tried.
+    let extent = a.hi - a.lo;
+    [(0.0, 0.0), (0.0137, 0.0291), (-0.0219, 0.0173)]
+        .into_iter()
+        .map(|(u, v)| centroid + Vector3::new(u * extent.x, v * extent.y, 0.0))
+        .filter(|c| {
+            planes
+                .iter()
+                .zip(&inner)
+                .all(|((n, o), side)| side * n.dot(&(c - o)) < -slack)
+        })
+        .find_map(|c| winding_at(a, c))
+        .is_some_and(|w| w.abs() == 1)
+}
+
+/// The winding number of the shell about `c`, by the vertical line through it (the crossings
+/// above `c`, each ±1 as in [`slice_crossings`]); `None` when the line meets an edge or a face
+/// at `c` itself, where the count would be ambiguous.
+fn winding_at(solid: &Solid, c: Point3<f64>) -> Option<i32> {
+    let mut w = 0;
+    for ([p, q, r], _) in solid.triangles() {
+        let twice_area = (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
+        if twice_area == 0.0 {
+            continue;
+        }
+        let edge =
+            |a: Point3<f64>, b: Point3<f64>| (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        let (w0, w1, w2) = (edge(q, r), edge(r, p), edge(p, q));
+        let sign = twice_area.signum();
+        let (s0, s1, s2) = (w0 * sign, w1 * sign, w2 * sign);
+        if s0 < 0.0 || s1 < 0.0 || s2 < 0.0 {
+            continue;
+        }
+        if s0 == 0.0 || s1 == 0.0 || s2 == 0.0 {
+            return None;
+        }
+        let z = (w0 * p.z + w1 * q.z + w2 * r.z) / twice_area;
+        if z == c.z {
+            return None;
+        }
+        if z > c.z {
+            w += sign as i32;
+        }
+    }
+    Some(w)
+}
+
 /// Compares the pairs of closed shells whose bounding boxes meet, in order, as long as the work
 /// fits in `budget` (work units: a pair costs the triangles of both shells and the lines of its
 /// grid). What is
@@ -411,6 +551,17 @@ struct Probe {
 type Crossing = (u32, f64, i8, u32);
 
 fn probe(a: &Solid, b: &Solid, tolerance: f64, seed: u64) -> Probe {
+    let small = a.faces.len() <= PLANES_UP_TO && b.faces.len() <= PLANES_UP_TO;
+    let slack = PLANE_SLACK * tolerance;
+    if small && (separated(a, b, slack) || separated(b, a, slack)) {
+        return Probe {
+            a_inside_b: false,
+            b_inside_a: false,
+            overlap_seen: false,
+            volume: 0.0,
+            uncertainty: 0.0,
+        };
+    }
     let lo = a.lo.sup(&b.lo);
     let hi = a.hi.inf(&b.hi);
     let grid = Grid::new(lo, hi, CELLS);
@@ -498,6 +649,9 @@ impl Grid {
 /// or more along a line), with one standard error and the faces bounding it; `None` when no line
 /// of the coarse grid finds any. `shell` is left 0 for the caller.
 fn probe_self(a: &Solid, tolerance: f64, seed: u64) -> Option<SelfOverlap> {
+    if a.faces.len() <= PLANES_UP_TO && convex_once(a, PLANE_SLACK * tolerance) {
+        return None;
+    }
     let coarse = self_lengths(a, CELLS, tolerance, seed ^ 0x5E1F_0000_0000_0000)?;
     let fine = self_lengths(a, FINE_CELLS, tolerance, seed ^ 0x5E1F_F000_0000_0000);
     // The fine grid measures; it finds nothing only where the coarse grid's find was round-off.
@@ -771,5 +925,59 @@ impl SplitMix {
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
         z ^= z >> 31;
         (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes;
+
+    fn whole(mesh: &PolyMesh, faces: &[u32]) -> (Point3<f64>, Point3<f64>) {
+        bounds(mesh, faces)
+    }
+
+    #[test]
+    fn a_convex_shell_covered_once_is_told_from_one_covered_twice() {
+        let cube = shapes::cube().triangulated().build();
+        let faces: Vec<u32> = (0..cube.face_count() as u32).collect();
+        let once = solid(&cube, &faces, whole(&cube, &faces));
+        assert_eq!(winding_at(&once, Point3::new(0.1, 0.2, 0.05)), Some(1));
+        assert!(convex_once(&once, 1e-12));
+        // The same faces twice: convex by every plane, but the winding number inside is 2.
+        let doubled: Vec<u32> = faces.iter().chain(&faces).copied().collect();
+        let twice = solid(&cube, &doubled, whole(&cube, &doubled));
+        assert_eq!(winding_at(&twice, Point3::new(0.1, 0.2, 0.05)), Some(2));
+        assert!(!convex_once(&twice, 1e-12));
+        // Inward-wound: −1, still once.
+        let flipped = cube.flipped();
+        let inward = solid(&flipped, &faces, whole(&flipped, &faces));
+        assert_eq!(winding_at(&inward, Point3::new(0.1, 0.2, 0.05)), Some(-1));
+        // A line along the cube's diagonal edges meets two triangles' shared edge: no answer.
+        assert_eq!(winding_at(&once, Point3::new(0.0, 0.0, 0.0)), None);
+        // The L-bracket is not convex.
+        let bracket = shapes::l_bracket().build();
+        let all: Vec<u32> = (0..bracket.face_count() as u32).collect();
+        assert!(!convex_once(
+            &solid(&bracket, &all, whole(&bracket, &all)),
+            1e-12
+        ));
+    }
+
+    #[test]
+    fn a_face_plane_separates_boxes_that_touch_but_not_boxes_that_overlap() {
+        let pair = |dx: f64| {
+            let mut b = shapes::cube();
+            b.append(&shapes::cube().transformed(&nalgebra::Isometry3::translation(dx, 0.3, 0.0)));
+            b.build()
+        };
+        for (dx, apart) in [(1.0, true), (1.5, true), (0.9, false)] {
+            let mesh = pair(dx);
+            let (first, second): (Vec<u32>, Vec<u32>) = ((0..6).collect(), (6..12).collect());
+            let a = solid(&mesh, &first, whole(&mesh, &first));
+            let b = solid(&mesh, &second, whole(&mesh, &second));
+            assert_eq!(separated(&a, &b, 1e-12), apart, "dx {dx}");
+            assert_eq!(separated(&b, &a, 1e-12), apart, "dx {dx}");
+        }
     }
 }
