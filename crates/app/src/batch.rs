@@ -17,7 +17,7 @@ use massprops::{Analysis, Composite, Defect, MassProperties, MassSpec, MeshError
 use sha2::{Digest, Sha256};
 
 use crate::export::quaternion_wxyz;
-use crate::input::{InputError, Request, Resolved, Source, resolve};
+use crate::input::{InputError, Request, Resolved, Source, resolve, resolve_mesh};
 
 /// Version of the batch table's columns; bumped on any incompatible change.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -222,14 +222,8 @@ pub fn measure(path: &Path, bytes: Option<&[u8]>, request: &Request) -> Row {
 fn body_of(path: &Path, bytes: &[u8], request: &Request) -> (Result<Measured, Failure>, f64, f64) {
     if massprops::io::is_body_file(path) {
         let start = Instant::now();
-        let resolved = resolve(Source::Bytes(bytes, path), request);
-        let compute = ms(start);
-        let outcome = match resolved {
-            Ok(Resolved::Parts(parts)) => Ok(Measured::of_parts(&parts.composite)),
-            Ok(Resolved::Mesh { analysis, .. }) => Ok(Measured::of_mesh(&analysis)),
-            Err(e) => Err(input_failure(&e)),
-        };
-        return (outcome, 0.0, compute);
+        let outcome = measured(resolve(Source::Bytes(bytes, path), request));
+        return (outcome, 0.0, ms(start));
     }
     let start = Instant::now();
     let file = massprops::parse_mesh(bytes, path);
@@ -239,16 +233,17 @@ fn body_of(path: &Path, bytes: &[u8], request: &Request) -> (Result<Measured, Fa
         Err(e) => return (Err(failure(&e)), parse, 0.0),
     };
     let start = Instant::now();
-    let outcome = file
-        .analyze(request.method, request.spec, &request.repairs)
-        .map(|a| Measured::of_mesh(&a))
-        .map_err(|source| {
-            input_failure(&InputError::Mesh {
-                path: path.to_path_buf(),
-                source,
-            })
-        });
+    let outcome = measured(resolve_mesh(path, file, request));
     (outcome, parse, ms(start))
+}
+
+/// The numbers of a resolved body, or why there are none.
+fn measured(resolved: Result<Resolved, InputError>) -> Result<Measured, Failure> {
+    match resolved {
+        Ok(Resolved::Parts(parts)) => Ok(Measured::of_parts(&parts.composite)),
+        Ok(Resolved::Mesh { analysis, .. }) => Ok(Measured::of_mesh(&analysis)),
+        Err(e) => Err(input_failure(&e)),
+    }
 }
 
 fn failure(e: &MeshError) -> Failure {

@@ -155,10 +155,6 @@ impl Source<'_> {
 /// no part of the file, or a total mass is given for parts.
 pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputError> {
     let path = source.path();
-    let at = |source: MeshError| InputError::Mesh {
-        path: path.to_path_buf(),
-        source,
-    };
     if massprops::io::is_body_file(path) {
         let body = match source {
             Source::Path(p) | Source::Reported(p, _) => BodyFile::read(p),
@@ -173,12 +169,28 @@ pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputE
         .map_err(InputError::Read)?;
         return body_file_parts(&body, request).map(Resolved::Parts);
     }
-    let mut file = match source {
+    let file = match source {
         Source::Path(p) => massprops::load_mesh(p),
         Source::Reported(p, progress) => massprops::load_mesh_reporting(p, progress),
         Source::Bytes(bytes, p) => massprops::parse_mesh(bytes, p),
     }
     .map_err(InputError::Read)?;
+    resolve_mesh(path, file, request)
+}
+
+/// [`resolve`] of a mesh file already read from `path`: scaled, then its parts or the one body.
+///
+/// # Errors
+/// As [`resolve`], after reading.
+pub fn resolve_mesh(
+    path: &Path,
+    mut file: MeshFile,
+    request: &Request,
+) -> Result<Resolved, InputError> {
+    let at = |source: MeshError| InputError::Mesh {
+        path: path.to_path_buf(),
+        source,
+    };
     if request.scale != 1.0 {
         file.mesh = file.mesh.map_positions(|p| p * request.scale).map_err(at)?;
     }
