@@ -138,13 +138,54 @@ pub enum Source<'a> {
     Bytes(&'a [u8], &'a Path),
     /// Read the file, reporting the fraction read (the app's progress bar).
     Reported(&'a Path, &'a dyn Fn(f32)),
+    /// The file of this name in a set given by their bytes; a body file's meshes come from the
+    /// same set.
+    Set(&'a FileSet, &'a Path),
 }
 
 impl Source<'_> {
     fn path(&self) -> &Path {
         match self {
-            Source::Path(p) | Source::Bytes(_, p) | Source::Reported(p, _) => p,
+            Source::Path(p) | Source::Bytes(_, p) | Source::Reported(p, _) | Source::Set(_, p) => p,
         }
+    }
+}
+
+/// Files given by their bytes, not by a path: what a browser hands over when files are dropped
+/// on the page or picked (it gives names, never folders). A body file arrives with its meshes.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FileSet {
+    files: Vec<(PathBuf, Arc<[u8]>)>,
+}
+
+impl FileSet {
+    /// Adds a file (a later file of the same name replaces an earlier one).
+    pub fn add(&mut self, name: impl Into<PathBuf>, bytes: impl Into<Arc<[u8]>>) {
+        let name = name.into();
+        self.files.retain(|(n, _)| *n != name);
+        self.files.push((name, bytes.into()));
+    }
+
+    /// The names, in the order added.
+    pub fn names(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|(n, _)| n.as_path())
+    }
+
+    /// The bytes of `path`: the file of that name, or else the one whose name is its last
+    /// component (a body file's `meshes/head.obj` is the dropped `head.obj`).
+    pub fn get(&self, path: &Path) -> Option<&[u8]> {
+        let exact = self.files.iter().find(|(n, _)| n == path);
+        let by_name = || {
+            let name = path.file_name()?;
+            self.files.iter().find(|(n, _)| n.file_name() == Some(name))
+        };
+        exact.or_else(by_name).map(|(_, b)| &b[..])
+    }
+
+    /// The file that says what the body is: the first body file, else the first file.
+    pub fn main(&self) -> Option<&Path> {
+        let body = self.names().find(|n| massprops::io::is_body_file(n));
+        body.or_else(|| self.names().next())
     }
 }
 
@@ -156,23 +197,46 @@ impl Source<'_> {
 pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputError> {
     let path = source.path();
     if massprops::io::is_body_file(path) {
-        let body = match source {
-            Source::Path(p) | Source::Reported(p, _) => BodyFile::read(p),
-            Source::Bytes(bytes, p) => std::str::from_utf8(bytes)
+        let parse = |bytes: &[u8], p: &Path| {
+            std::str::from_utf8(bytes)
                 .map_err(|e| MeshError::Malformed {
                     path: p.to_path_buf(),
                     line: None,
                     message: format!("not UTF-8 text: {e}"),
                 })
-                .and_then(|text| BodyFile::parse(text, p)),
+                .and_then(|text| BodyFile::parse(text, p))
+        };
+        let (body, loaded) = match source {
+            Source::Path(p) | Source::Reported(p, _) => {
+                BodyFile::read(p).and_then(|body| body.load().map(|parts| (body, parts)))
+            }
+            Source::Bytes(bytes, p) => {
+                parse(bytes, p).and_then(|body| body.load().map(|parts| (body, parts)))
+            }
+            Source::Set(set, p) => set
+                .get(p)
+                .ok_or_else(|| missing(p))
+                .and_then(|bytes| parse(bytes, p))
+                .and_then(|body| {
+                    let read = |mesh: &Path| {
+                        set.get(mesh)
+                            .map(|bytes| massprops::parse_mesh(bytes, mesh))
+                            .transpose()
+                    };
+                    body.load_with(&read).map(|parts| (body, parts))
+                }),
         }
         .map_err(InputError::Read)?;
-        return body_file_parts(&body, request).map(Resolved::Parts);
+        return body_file_parts(&body, loaded, request).map(Resolved::Parts);
     }
     let file = match source {
         Source::Path(p) => massprops::load_mesh(p),
         Source::Reported(p, progress) => massprops::load_mesh_reporting(p, progress),
         Source::Bytes(bytes, p) => massprops::parse_mesh(bytes, p),
+        Source::Set(set, p) => set
+            .get(p)
+            .ok_or_else(|| missing(p))
+            .and_then(|bytes| massprops::parse_mesh(bytes, p)),
     }
     .map_err(InputError::Read)?;
     resolve_mesh(path, file, request)
@@ -206,13 +270,28 @@ pub fn resolve_mesh(
     })
 }
 
-/// A body file's parts, integrated and summed.
-fn body_file_parts(body: &BodyFile, request: &Request) -> Result<Parts, InputError> {
+/// A file a [`FileSet`] does not hold, said as the file system says it.
+fn missing(path: &Path) -> MeshError {
+    MeshError::Io {
+        path: path.to_path_buf(),
+        source: Arc::new(std::io::Error::new(
+            std::io::ErrorKind::NotFound,
+            "not among the files given",
+        )),
+    }
+}
+
+/// A body file's parts (`loaded`: their meshes, as [`BodyFile::load`] gives them), integrated
+/// and summed.
+fn body_file_parts(
+    body: &BodyFile,
+    loaded: Vec<massprops::composite::Part>,
+    request: &Request,
+) -> Result<Parts, InputError> {
     let at = |source: MeshError| InputError::Mesh {
         path: body.path.clone(),
         source,
     };
-    let loaded = body.load().map_err(InputError::Read)?;
     let entries = body.in_metres().parts;
     let parts = entries
         .into_iter()
@@ -298,4 +377,63 @@ fn integrate(
         parts: resolved,
         composite,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_file_set_finds_files_by_path_or_name_and_opens_the_body_file() {
+        let mut set = FileSet::default();
+        set.add("head.obj", b"a".to_vec());
+        set.add("hammer.toml", b"b".to_vec());
+        set.add("meshes/head.obj", b"c".to_vec());
+        set.add("hammer.toml", b"d".to_vec());
+        assert_eq!(set.get(Path::new("meshes/head.obj")), Some(&b"c"[..]));
+        assert_eq!(set.get(Path::new("head.obj")), Some(&b"a"[..]));
+        // A body file's folder is not the browser's: the name alone finds it.
+        assert_eq!(set.get(Path::new("parts/head.obj")), Some(&b"a"[..]));
+        assert_eq!(set.get(Path::new("hammer.toml")), Some(&b"d"[..]));
+        assert_eq!(set.get(Path::new("handle.obj")), None);
+        assert_eq!(set.names().count(), 3);
+        assert_eq!(set.main(), Some(Path::new("hammer.toml")));
+        let mut meshes = FileSet::default();
+        meshes.add("b.stl", b"".to_vec());
+        meshes.add("a.obj", b"".to_vec());
+        assert_eq!(meshes.main(), Some(Path::new("b.stl")));
+        assert_eq!(FileSet::default().main(), None);
+    }
+
+    #[test]
+    fn a_mesh_from_a_set_is_the_mesh_from_its_bytes() {
+        let text = massprops::shapes::to_obj(
+            "cube",
+            "",
+            &massprops::shapes::cuboid(
+                nalgebra::Vector3::new(2.0, 2.0, 2.0),
+                nalgebra::Point3::origin(),
+            ),
+        );
+        let mut set = FileSet::default();
+        set.add("cube.obj", text.as_bytes().to_vec());
+        let request = Request::default();
+        let from_set = resolve(Source::Set(&set, Path::new("cube.obj")), &request).expect("set");
+        let from_bytes = resolve(
+            Source::Bytes(text.as_bytes(), Path::new("cube.obj")),
+            &request,
+        )
+        .expect("bytes");
+        let mass = |r: &Resolved| match r {
+            Resolved::Mesh { analysis, .. } => analysis.properties.mass,
+            Resolved::Parts(_) => panic!("one mesh"),
+        };
+        assert_eq!(mass(&from_set), 8.0);
+        assert_eq!(mass(&from_set), mass(&from_bytes));
+        let missing = resolve(Source::Set(&set, Path::new("torus.obj")), &request);
+        assert!(
+            matches!(&missing, Err(InputError::Read(MeshError::Io { path, .. })) if path.ends_with("torus.obj")),
+            "{missing:?}"
+        );
+    }
 }

@@ -22,7 +22,7 @@ struct Cli {
     command: Option<Command>,
     #[cfg(feature = "gui")]
     #[command(flatten)]
-    gui: inertia_lab::gui::GuiArgs,
+    gui: inertia_lab::gui::platform::GuiArgs,
 }
 
 #[derive(Subcommand, Debug)]
@@ -63,8 +63,8 @@ fn main() -> ExitCode {
 
 #[cfg(feature = "gui")]
 fn app(cli: &Cli) -> Result<(), CliError> {
-    use inertia_lab::gui::RunError;
-    inertia_lab::gui::run(&cli.gui).map_err(|e| match e {
+    use inertia_lab::gui::platform::RunError;
+    inertia_lab::gui::platform::run(&cli.gui).map_err(|e| match e {
         RunError::Usage(text) => CliError::Usage(text),
         other => CliError::Runtime(other.to_string()),
     })

@@ -3,7 +3,9 @@
 //! through a grid of pixels, and the resident memory then; each printed as one line before the
 //! window closes.
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::platform::Instant;
 
 use crate::lab::Lab;
 
@@ -82,7 +84,7 @@ impl Bench {
         let mean = t.iter().sum::<f64>() / t.len() as f64;
         let mean_of = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64;
         let (ui_mean, cpu_mean) = (mean_of(&self.ui_times), mean_of(&self.cpu_times));
-        println!(
+        crate::platform::print(&format!(
             "frames {} ({} triangles, {} samples of history, plots {}): mean {:.1} ms \
              ({:.1} fps), p50 {:.1} ms, p90 {:.1} ms, p99 {:.1} ms, max {:.1} ms; \
              building the UI {:.2} ms, whole frame's work {:.2} ms",
@@ -98,14 +100,14 @@ impl Bench {
             pct(100.0),
             ui_mean,
             cpu_mean
-        );
+        ));
         picking(lab, view);
         if let Some(m) = crate::platform::memory() {
-            println!(
+            crate::platform::print(&format!(
                 "resident memory {:.1} MB (peak {:.1} MB)",
                 m.resident_kib as f64 / 1024.0,
                 m.peak_kib as f64 / 1024.0
-            );
+            ));
         }
         true
     }
@@ -128,11 +130,11 @@ fn picking(lab: &Lab, view: &mut View3d) {
     let primary = lab.primary();
     let hits = rays.iter().filter(|r| primary.pick(r).is_some()).count();
     let per_ray = start.elapsed().as_secs_f64() / rays.len() as f64;
-    println!(
+    crate::platform::print(&format!(
         "picking ({} triangles): {:.1} µs per ray ({} of {} rays hit)",
         primary.body().mesh.triangles.len(),
         per_ray * 1e6,
         hits,
         rays.len()
-    );
+    ));
 }

@@ -6,7 +6,9 @@
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::platform::Instant;
 
 /// Frames drawn before the picture: the window maps, the mesh is uploaded, shaders compile.
 const WARM_UP_FRAMES: usize = 10;

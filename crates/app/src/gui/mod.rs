@@ -1,29 +1,30 @@
-//! The desktop app: eframe glue around the model ([`Lab`]), the panels and the 3D view. Each
-//! frame: gather input (shortcuts, dropped files) and the panels' intents as [`Command`]s, apply
-//! them in one place, advance the simulation by the frame clock, repaint only while something
-//! moves. Settings persist through eframe's storage; GPU resources live only in the 3D scene.
+//! The app, on the desktop and in a browser: eframe glue around the model ([`Lab`]), the
+//! panels and the 3D view. Each frame: gather input (shortcuts, dropped files) and the panels'
+//! intents as [`Command`]s, apply them in one place, advance the simulation by the frame clock,
+//! repaint only while something moves. Settings persist through eframe's storage; GPU resources
+//! live only in the 3D scene. What differs between the two targets is [`platform`].
 
 use std::path::PathBuf;
-use std::sync::{Arc, Mutex};
-use std::time::Instant;
+use std::sync::Arc;
 
-use clap::Args;
 use egui::Key;
 
 mod bench;
 pub mod capture;
-pub mod dialogs;
+pub mod link;
 pub mod panels;
+pub mod platform;
 pub mod view3d;
 pub mod warnings;
 
-use crate::lab::settings::{AppSettings, InertiaSource};
-use crate::lab::{Command, Lab, Message, Variant};
+use crate::lab::settings::InertiaSource;
+use crate::lab::{Command, Lab, Message};
+use crate::platform::Instant;
 use bench::Bench;
-use dialogs::{Dialog, DialogPurpose};
 use panels::PanelState;
+use platform::{Chosen, Dialog, DialogPurpose};
 use view3d::View3d;
-use view3d::scene::Scene;
+use view3d::scene::{Scene, SceneSlot};
 
 /// Default width of the side panel (points): the mass-properties table fits, and at 1280×800
 /// the 3D toolbar and the plot controls still fit in one row beside it.
@@ -32,71 +33,19 @@ const SIDE_PANEL_WIDTH: f32 = 340.0;
 /// Default width of the momentum-sphere panel beside the 3D view (points).
 const SPHERE_PANEL_WIDTH: f32 = 250.0;
 
-/// Key under which the settings are stored.
+/// Key under which the settings are stored (eframe's storage: a file on the desktop, the page's
+/// local storage in a browser).
 const SETTINGS_KEY: &str = "inertia-lab-settings";
-
-/// Arguments of the app (no subcommand).
-#[derive(Args, Debug, Default)]
-pub struct GuiArgs {
-    /// Mesh to open (.obj or .stl); the built-in T-handle when absent.
-    pub file: Option<PathBuf>,
-    /// Render N frames continuously with default settings, print frame-time percentiles, exit.
-    #[arg(long, value_name = "N")]
-    pub bench_frames: Option<usize>,
-    /// With --bench-frames: simulate this many seconds first so the plots hold that much history.
-    #[arg(
-        long,
-        value_name = "SECONDS",
-        default_value_t = 0.0,
-        requires = "bench_frames"
-    )]
-    pub bench_history: f64,
-    /// With --bench-frames: collapse the plot panel (to measure what the plots cost).
-    #[arg(long, requires = "bench_frames")]
-    pub bench_no_plots: bool,
-    /// With --bench-frames: compare N copies (1 to 3: bounding-box inertia, point-mass inertia,
-    /// textbook model), drawn as ghosts with their plot curves (to measure what they cost).
-    #[arg(long, value_name = "N", requires = "bench_frames", value_parser = clap::value_parser!(u8).range(1..=3))]
-    pub bench_ghosts: Option<u8>,
-    /// With a robot description (URDF or MJCF): show this link as the body.
-    #[arg(long, value_name = "NAME", requires = "file")]
-    pub link: Option<String>,
-    /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
-    /// settings, after --after simulated seconds, paused there.
-    #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
-    pub screenshot: Option<PathBuf>,
-    /// With --screenshot: simulated seconds to run first.
-    #[arg(
-        long,
-        value_name = "SECONDS",
-        default_value_t = 0.0,
-        requires = "screenshot",
-        allow_negative_numbers = true
-    )]
-    pub after: f64,
-}
-
-/// Why the app could not run.
-#[derive(Debug, thiserror::Error)]
-pub enum RunError {
-    /// The arguments are out of range.
-    #[error("{0}")]
-    Usage(String),
-    /// No window or GL context could be created (no display, no OpenGL 3).
-    #[error("cannot start the app: {0}")]
-    Start(#[from] eframe::Error),
-    /// `--screenshot` could not be taken or written.
-    #[error("{0}")]
-    Screenshot(String),
-}
 
 /// The app.
 pub struct LabApp {
     lab: Lab,
     view: View3d,
     panels: PanelState,
-    scene: Option<Arc<Mutex<Scene>>>,
+    scene: Option<SceneSlot>,
     dialog: Option<Dialog>,
+    /// The title last given to the window or page.
+    title: String,
     bench: Option<Bench>,
     capture: Option<capture::Capture>,
     recording: Option<capture::Recording>,
@@ -117,7 +66,7 @@ impl LabApp {
     /// # Errors
     /// The built-in body cannot be set up (a bug).
     pub fn new(
-        settings: AppSettings,
+        settings: crate::lab::settings::AppSettings,
         gl: Option<Arc<three_d::context::Context>>,
         ctx: &egui::Context,
     ) -> Result<Self, crate::lab::LabError> {
@@ -125,9 +74,9 @@ impl LabApp {
         let repaint = ctx.clone();
         lab.set_waker(move || repaint.request_repaint());
         let scene = match gl.map(Scene::new) {
-            Some(Ok(scene)) => Some(Arc::new(Mutex::new(scene))),
+            Some(Ok(scene)) => Some(SceneSlot::install(scene)),
             Some(Err(e)) => {
-                eprintln!("inertia-lab: {e}; the 3D view is disabled");
+                crate::platform::print_error(&format!("inertia-lab: {e}; the 3D view is disabled"));
                 None
             }
             None => None,
@@ -138,6 +87,7 @@ impl LabApp {
             panels: PanelState::default(),
             scene,
             dialog: None,
+            title: String::new(),
             bench: None,
             capture: None,
             recording: None,
@@ -164,23 +114,7 @@ impl LabApp {
         let ctx = ui.ctx().clone();
         let mut commands = Vec::new();
         self.shortcuts(&ctx, &mut commands);
-        let dropped: Vec<PathBuf> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path().to_path_buf())
-                .collect()
-        });
-        // A mesh dropped on a body made of parts joins it as a part; anything else (a mesh on a
-        // single mesh, a body file) replaces the body.
-        let parts = self.lab.primary().body().composition.is_some();
-        commands.extend(dropped.into_iter().take(1).map(|path| {
-            if parts && !massprops::io::is_body_file(&path) {
-                Command::AddPart(path)
-            } else {
-                Command::LoadFile(path)
-            }
-        }));
+        self.take_dropped(&ctx);
         self.poll_dialog(&mut commands);
         self.panels.dialog_open = self.dialog.is_some();
         self.lab.frame(Instant::now());
@@ -244,7 +178,7 @@ impl LabApp {
             self.view.show(
                 ui,
                 &self.lab,
-                self.scene.as_ref(),
+                self.scene,
                 view3d::overlay::Selection {
                     warning: self.panels.selected_warning,
                     part: self.panels.selected_part,
@@ -272,6 +206,7 @@ impl LabApp {
             let repaint = ctx.clone();
             self.dialog = Some(Dialog::open(purpose, move || repaint.request_repaint()));
         }
+        self.show_status(&ctx);
         self.record(&ctx, &mut commands);
         if draft != *self.lab.settings() {
             // Before the panels' commands, so that "Reset settings" in the same frame wins.
@@ -288,12 +223,56 @@ impl LabApp {
         }
     }
 
+    /// Files dropped on the window or page, as the answer of a dialog that has closed (in a
+    /// browser their bytes are read first, which takes a moment). A mesh dropped on a body made
+    /// of parts joins it as a part; anything else (a mesh on a single mesh, a body file)
+    /// replaces the body.
+    fn take_dropped(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        if dropped.is_empty() || self.dialog.is_some() {
+            return;
+        }
+        let names: Vec<&std::path::Path> = dropped.iter().map(|f| f.path()).collect();
+        let body_file = names.iter().any(|n| massprops::io::is_body_file(n));
+        let purpose = if self.lab.primary().body().composition.is_some() && !body_file {
+            DialogPurpose::AddPart
+        } else {
+            DialogPurpose::OpenMesh
+        };
+        let repaint = ctx.clone();
+        self.dialog = Some(Dialog::dropped(purpose, dropped, move || {
+            repaint.request_repaint();
+        }));
+    }
+
+    /// The window's or page's title names the body; the page also publishes its figures.
+    fn show_status(&mut self, ctx: &egui::Context) {
+        let primary = self.lab.primary();
+        let title = format!("Inertia Lab — {}", primary.body().name);
+        if title != self.title {
+            platform::set_title(ctx, &title);
+            self.title = title;
+        }
+        let exact = primary.properties(InertiaSource::Exact);
+        let body = primary.sim().body();
+        let view = self.view.rect().unwrap_or(egui::Rect::NOTHING);
+        platform::publish(&platform::Figures {
+            mass: exact.mass,
+            volume: exact.mass / primary.density(),
+            omega: body.omega_world().norm(),
+            momentum: body.angular_momentum().norm(),
+            specimens: self.lab.specimens().len(),
+            loading: self.lab.loading().is_some(),
+            view: [view.left(), view.top(), view.width(), view.height()],
+        });
+    }
+
     /// Starts, advances and ends the Record button's recording; its outcome becomes a message.
     fn record(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
         let now = Instant::now();
         if std::mem::take(&mut self.panels.record_request) && self.recording.is_none() {
-            let stamp = std::time::SystemTime::now()
-                .duration_since(std::time::UNIX_EPOCH)
+            let stamp = crate::platform::SystemTime::now()
+                .duration_since(crate::platform::UNIX_EPOCH)
                 .map_or(0, |d| d.as_secs());
             let dir = PathBuf::from(format!("inertia-lab-recording-{stamp}"));
             match capture::Recording::start(dir, self.panels.record_seconds, now) {
@@ -320,18 +299,21 @@ impl LabApp {
         };
         let purpose = self.dialog.take().map(|d| d.purpose);
         commands.push(match (purpose, answer) {
-            (Some(DialogPurpose::OpenMesh), Some(path)) => Command::LoadFile(path),
-            (Some(DialogPurpose::SaveCsv), Some(path)) => Command::ExportCsv {
+            (Some(DialogPurpose::OpenMesh), Some(Chosen::Path(path))) => Command::LoadFile(path),
+            (Some(DialogPurpose::OpenMesh), Some(Chosen::Files(files))) => {
+                Command::LoadFiles(files)
+            }
+            (Some(DialogPurpose::SaveCsv), Some(Chosen::Path(path))) => Command::ExportCsv {
                 specimen: crate::lab::PRIMARY,
                 path,
             },
-            (Some(DialogPurpose::AddPart), Some(path)) => Command::AddPart(path),
-            (Some(DialogPurpose::SaveBody), Some(path)) => Command::SaveBody(path),
-            // rfd reports a cancel and a missing XDG desktop portal alike.
+            (Some(DialogPurpose::AddPart), Some(Chosen::Path(path))) => Command::AddPart(path),
+            (Some(DialogPurpose::AddPart), Some(Chosen::Files(files))) => {
+                Command::AddPartFiles(files)
+            }
+            (Some(DialogPurpose::SaveBody), Some(Chosen::Path(path))) => Command::SaveBody(path),
             _ => Command::Notify(Message {
-                text: "no file chosen (if no dialog appeared, this desktop has no file-dialog \
-                       portal: type a path or drop the file on the window)"
-                    .to_owned(),
+                text: platform::NO_FILE_CHOSEN.to_owned(),
                 error: false,
             }),
         });
@@ -389,115 +371,4 @@ impl eframe::App for LabApp {
             eframe::set_value(storage, SETTINGS_KEY, self.lab.settings());
         }
     }
-}
-
-/// Opens the window and runs the app until it is closed.
-///
-/// # Errors
-/// No window or GL context could be created (no display, no OpenGL 3); `--after` is not a
-/// finite number ≥ 0; the screenshot could not be written.
-pub fn run(args: &GuiArgs) -> Result<(), RunError> {
-    if !(args.after.is_finite() && args.after >= 0.0) {
-        return Err(RunError::Usage(format!(
-            "--after must be a finite number of seconds ≥ 0, got {}",
-            args.after
-        )));
-    }
-    let bench = args
-        .bench_frames
-        .map(|frames| Bench::new(frames, args.bench_no_plots));
-    let outcome = capture::Outcome::default();
-    let capture = args
-        .screenshot
-        .clone()
-        .map(|path| capture::Capture::new(path, Arc::clone(&outcome)));
-    let scripted = bench.is_some() || capture.is_some();
-    let options = eframe::NativeOptions {
-        renderer: eframe::Renderer::Glow,
-        // Without a depth buffer the 3D occlusion is wrong (stack notes).
-        depth_buffer: 24,
-        // MSAA more than doubles frame time on software GL (llvmpipe).
-        multisampling: 0,
-        glow_options: egui_glow::GlowConfiguration {
-            vsync: bench.is_none(),
-            ..Default::default()
-        },
-        viewport: egui::ViewportBuilder::default()
-            .with_title("Inertia Lab")
-            .with_inner_size([1280.0, 800.0])
-            .with_min_inner_size([640.0, 480.0])
-            .with_drag_and_drop(true),
-        persist_window: !scripted,
-        ..Default::default()
-    };
-    let file = args.file.clone();
-    let link = args.link.clone();
-    let (history, after) = (args.bench_history, args.after);
-    let capture_outcome = Arc::clone(&outcome);
-    let ghosts = [
-        Variant::Source(InertiaSource::BoundingBox),
-        Variant::Source(InertiaSource::PointMasses),
-        Variant::Model(rbcore::RotationModel::Textbook),
-    ]
-    .into_iter()
-    .take(args.bench_ghosts.map_or(0, usize::from))
-    .collect::<Vec<_>>();
-    eframe::run_native(
-        "inertia-lab",
-        options,
-        Box::new(move |cc| {
-            let settings = match (scripted, cc.storage) {
-                (false, Some(storage)) => {
-                    eframe::get_value(storage, SETTINGS_KEY).unwrap_or_default()
-                }
-                _ => AppSettings::default(),
-            };
-            let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
-            if let Some(path) = file {
-                app.command(Command::LoadFile(path));
-                if scripted || link.is_some() {
-                    // Every measured frame, and the picture, must show the mesh.
-                    app.lab.wait_for_load();
-                }
-                if let Some(name) = &link {
-                    app.command(app.lab.link_named(name));
-                }
-            }
-            if bench.is_some() {
-                if !ghosts.is_empty() {
-                    app.command(Command::Compare(ghosts));
-                }
-                if history > 0.0 {
-                    app.lab.advance_for(history);
-                }
-                app.bench = bench;
-            }
-            if capture.is_some() {
-                // A file that did not load must not give a picture of the default body.
-                if let Some(m) = app.lab.message().filter(|m| m.error) {
-                    if let Ok(mut slot) = capture_outcome.lock() {
-                        *slot = Some(Err(m.text.clone()));
-                    }
-                    cc.egui_ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-                    return Ok(Box::new(app));
-                }
-                app.lab.advance_for(after);
-                // The picture shows the state at exactly `after` seconds.
-                app.command(Command::TogglePause);
-                app.capture = capture;
-            }
-            Ok(Box::new(app))
-        }),
-    )?;
-    if args.screenshot.is_some() {
-        let result = outcome.lock().ok().and_then(|mut slot| slot.take());
-        return match result {
-            Some(Ok(())) => Ok(()),
-            Some(Err(e)) => Err(RunError::Screenshot(e)),
-            None => Err(RunError::Screenshot(
-                "the window closed before the screenshot was taken".to_owned(),
-            )),
-        };
-    }
-    Ok(())
 }

@@ -6,7 +6,9 @@
 //! rbcore's catch-up cap, which runs at most its number of steps and reports the rest as
 //! dropped, so the app can say how much simulated time it skipped.
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::platform::Instant;
 
 /// Measures frame gaps and scales them by the time scale.
 #[derive(Debug, Clone, Default)]

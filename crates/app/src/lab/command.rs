@@ -26,6 +26,9 @@ pub enum Command {
     ResetSettings,
     /// Load a mesh file on the worker thread; it replaces every specimen's body.
     LoadFile(PathBuf),
+    /// Load files given by their bytes (the browser's): a body file with its meshes, or a mesh;
+    /// it replaces every specimen's body.
+    LoadFiles(crate::input::FileSet),
     /// Load a built-in sample by label.
     LoadSample(String),
     /// Write a specimen's plot history as CSV.
@@ -76,6 +79,9 @@ pub enum Command {
     /// Add a mesh file as a new part at the origin, of water's density (a single-mesh body
     /// becomes its first part, whole).
     AddPart(PathBuf),
+    /// Add each mesh of files given by their bytes (the browser's) as a new part, as
+    /// [`Command::AddPart`].
+    AddPartFiles(crate::input::FileSet),
     /// Change one part's settings (material, void, thin wall, placement, name) and whether it
     /// is drawn; the motion goes on with p and L kept.
     EditPart {

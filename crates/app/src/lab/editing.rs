@@ -12,6 +12,7 @@ use super::Lab;
 use super::body::{EditEffect, LoadedBody};
 use super::error::LabError;
 use super::parts::{self, PartModel};
+use crate::input::FileSet;
 
 impl Lab {
     /// [`Command::SplitIntoParts`](super::Command::SplitIntoParts).
@@ -25,10 +26,22 @@ impl Lab {
 
     /// [`Command::AddPart`](super::Command::AddPart).
     pub(super) fn add_part(&mut self, path: &Path) -> Result<(), LabError> {
+        let part = parts::from_mesh_file(path)?;
+        self.add_parts(vec![part], path.display().to_string())
+    }
+
+    /// [`Command::AddPartFiles`](super::Command::AddPartFiles).
+    pub(super) fn add_part_files(&mut self, files: &FileSet) -> Result<(), LabError> {
+        let names: Vec<String> = files.names().map(|p| p.display().to_string()).collect();
+        self.add_parts(parts::from_files(files)?, names.join(", "))
+    }
+
+    /// The body's parts and `new` ones (`what`: their files, for the message).
+    fn add_parts(&mut self, new: Vec<PartModel>, what: String) -> Result<(), LabError> {
         let mut parts = self.current_parts(true)?;
-        parts.extend(parts::from_mesh_file(path)?);
+        parts.extend(new);
         self.rebody(parts)?;
-        self.info(format!("added {}", path.display()));
+        self.info(format!("added {what}"));
         Ok(())
     }
 
@@ -74,6 +87,16 @@ impl Lab {
         let written = parts::save(&parts, path)?;
         self.info(format!("saved {} ({written})", path.display()));
         Ok(())
+    }
+
+    /// What [`Command::SaveBody`](super::Command::SaveBody) at `path` would write, (path, text)
+    /// each, the body file last; for a front end that saves files itself (a browser's
+    /// downloads).
+    ///
+    /// # Errors
+    /// The body cannot be made of parts (a robot's).
+    pub fn body_files(&self, path: &Path) -> Result<Vec<(std::path::PathBuf, String)>, LabError> {
+        Ok(parts::body_files(&self.current_parts(true)?, path))
     }
 
     /// The body's parts: its own, or for a single mesh at the current density, the whole mesh

@@ -139,6 +139,12 @@ pub enum LabError {
     /// A poke without a direction.
     #[error("poke: the view ray has no direction")]
     NoPokeDirection,
+    /// A robot description among files given by their bytes (its meshes are named by paths).
+    #[error(
+        "{}: a robot description needs its meshes where it names them; open it in the desktop app",
+        .0.display()
+    )]
+    RobotFromFiles(PathBuf),
     /// The loader thread ended without a result.
     #[error("{}: the loader stopped unexpectedly", .0.display())]
     LoaderStopped(PathBuf),

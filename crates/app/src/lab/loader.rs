@@ -3,14 +3,14 @@
 //! UI.
 
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{Receiver, TryRecvError, channel};
-use std::thread;
+use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
 
 use super::body::LoadedBody;
 use super::error::LabError;
 use super::parts::from_resolved;
 use super::robot::{self, RobotModel};
-use crate::input::{self, Request, Resolved, Source};
+use crate::input::{self, FileSet, Request, Resolved, Source};
+use crate::platform;
 
 /// What the worker reports.
 #[derive(Debug)]
@@ -46,20 +46,50 @@ impl Loading {
     /// Starts loading `path` on a worker thread; `wake` is called after each report (the UI
     /// passes a repaint request).
     pub fn start(path: PathBuf, wake: impl Fn() + Send + 'static) -> Self {
-        let (tx, rx) = channel();
         let p = path.clone();
-        thread::spawn(move || {
+        Self::spawn(path, wake, move |send| {
+            if robot::is_description(&p) {
+                send(LoadEvent::Progress("reading and auditing the robot", None));
+                robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
+            } else {
+                let report = |f: f32| reading(send, f);
+                load(&p, Source::Reported(&p, &report), send).map(Loaded::Body)
+            }
+        })
+    }
+
+    /// Starts loading files given by their bytes (the browser's): the body file among them with
+    /// its meshes, else the first mesh. A robot description is refused: its meshes are named
+    /// by paths a set of files cannot resolve.
+    pub fn start_files(files: FileSet, wake: impl Fn() + Send + 'static) -> Self {
+        let path = files.main().map(Path::to_path_buf).unwrap_or_default();
+        let p = path.clone();
+        Self::spawn(path, wake, move |send| {
+            if robot::is_description(&p) {
+                return Err(LabError::RobotFromFiles(p));
+            }
+            send(LoadEvent::Progress(
+                "checking the mesh and its mass properties",
+                None,
+            ));
+            load(&p, Source::Set(&files, &p), send).map(Loaded::Body)
+        })
+    }
+
+    /// Runs `job` off the UI thread (the platform's way), reporting through the channel.
+    fn spawn(
+        path: PathBuf,
+        wake: impl Fn() + Send + 'static,
+        job: impl FnOnce(&dyn Fn(LoadEvent)) -> Result<Loaded, LabError> + Send + 'static,
+    ) -> Self {
+        let (tx, rx): (Sender<LoadEvent>, _) = channel();
+        platform::spawn(move || {
             let send = |e: LoadEvent| {
                 // The receiver is gone only if the app closed or started another load.
                 let _ = tx.send(e);
                 wake();
             };
-            let result = if robot::is_description(&p) {
-                send(LoadEvent::Progress("reading and auditing the robot", None));
-                robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
-            } else {
-                load(&p, &|stage, f| send(LoadEvent::Progress(stage, f))).map(Loaded::Body)
-            };
+            let result = job(&send);
             send(LoadEvent::Done(Box::new(result)));
         });
         Self {
@@ -72,6 +102,7 @@ impl Loading {
 
     /// Drains the reports; returns the result once the worker is done.
     pub fn poll(&mut self) -> Option<Result<Loaded, LabError>> {
+        platform::run_spawned();
         loop {
             match self.events.try_recv() {
                 Ok(LoadEvent::Progress(stage, f)) => {
@@ -88,23 +119,25 @@ impl Loading {
     }
 }
 
-/// Reads, parses and analyses a mesh file, reporting progress.
-fn load(path: &Path, progress: &dyn Fn(&'static str, Option<f32>)) -> Result<LoadedBody, LabError> {
+/// The reading stage's report: its fraction, then the analysis that follows it.
+fn reading(send: &dyn Fn(LoadEvent), f: f32) {
+    send(if f < 1.0 {
+        LoadEvent::Progress("reading", Some(f))
+    } else {
+        LoadEvent::Progress("checking the mesh and its mass properties", None)
+    });
+}
+
+/// Parses and analyses the mesh or body file `path` from `source`, reporting progress.
+fn load(path: &Path, source: Source<'_>, send: &dyn Fn(LoadEvent)) -> Result<LoadedBody, LabError> {
     let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
     // The one input path every command takes, at density 1 with the default repairs (the lab
-    // rescales mass and size live); the file is read in blocks, never whole.
-    let reading = |f: f32| {
-        if f < 1.0 {
-            progress("reading", Some(f));
-        } else {
-            progress("checking the mesh and its mass properties", None);
-        }
-    };
-    let resolved = input::resolve(Source::Reported(path, &reading), &Request::default())?;
-    progress("picking index", None);
+    // rescales mass and size live); a file on disk is read in blocks, never whole.
+    let resolved = input::resolve(source, &Request::default())?;
+    send(LoadEvent::Progress("picking index", None));
     match resolved {
         Resolved::Mesh { file, analysis } => Ok(LoadedBody::analysed(
             &name,
@@ -127,7 +160,7 @@ mod tests {
                     Loaded::Body(b) | Loaded::Robot(_, b) => b,
                 });
             }
-            thread::sleep(std::time::Duration::from_millis(5));
+            std::thread::sleep(std::time::Duration::from_millis(5));
         }
         Err(LabError::LoaderStopped("timed out".into()))
     }
@@ -142,7 +175,13 @@ mod tests {
         let torus = massprops::shapes::torus(1.0, 0.3, 400, 200).triangulated();
         std::fs::write(&path, massprops::shapes::to_obj("torus", "", &torus)).expect("write");
         let events = std::cell::RefCell::new(Vec::new());
-        let body = load(&path, &|stage, f| events.borrow_mut().push((stage, f))).expect("loads");
+        let send = |e: LoadEvent| {
+            if let LoadEvent::Progress(stage, f) = e {
+                events.borrow_mut().push((stage, f));
+            }
+        };
+        let report = |f: f32| reading(&send, f);
+        let body = load(&path, Source::Reported(&path, &report), &send).expect("loads");
         std::fs::remove_dir_all(&dir).ok();
         let events = events.into_inner();
         let reading: Vec<f32> = events

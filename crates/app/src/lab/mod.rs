@@ -27,7 +27,9 @@ pub mod specimen;
 mod tests;
 
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::platform::Instant;
 
 use body::LoadedBody;
 use clock::FrameClock;
@@ -167,22 +169,20 @@ impl Lab {
                 let waker = self.waker.clone();
                 self.loading = Some(Loading::start(path, move || (waker.0)()));
             }
+            Command::LoadFiles(files) => {
+                let waker = self.waker.clone();
+                self.loading = Some(Loading::start_files(files, move || (waker.0)()));
+            }
             Command::LoadSample(label) => {
                 let body = LoadedBody::sample(&label)?;
                 self.install(body)?;
             }
             Command::ExportCsv { specimen, path } => {
-                let history = self.specimen(specimen)?.history();
-                let write = || -> std::io::Result<()> {
-                    let mut out = std::io::BufWriter::new(std::fs::File::create(&path)?);
-                    history.write_csv(&mut out)?;
-                    std::io::Write::flush(&mut out)
-                };
-                write().map_err(|e| LabError::Write {
+                let (csv, n) = self.csv(specimen)?;
+                crate::platform::write_file(&path, &csv).map_err(|e| LabError::Write {
                     path: path.clone(),
                     message: e.to_string(),
                 })?;
-                let n = history.samples().len();
                 self.info(format!("wrote {n} samples to {}", path.display()));
             }
             Command::Poke {
@@ -224,6 +224,7 @@ impl Lab {
             Command::DismissMessage => self.message = None,
             Command::SplitIntoParts => self.split_into_parts()?,
             Command::AddPart(path) => self.add_part(&path)?,
+            Command::AddPartFiles(files) => self.add_part_files(&files)?,
             Command::EditPart {
                 index,
                 entry,
@@ -570,6 +571,21 @@ impl Lab {
     pub fn loading(&self) -> Option<&Loading> {
         self.loading.as_ref()
     }
+
+    /// A specimen's plot history as CSV ([`crate::timeseries`]'s columns), and its number of
+    /// samples: what [`Command::ExportCsv`] writes.
+    ///
+    /// # Errors
+    /// No such specimen.
+    pub fn csv(&self, specimen: SpecimenId) -> Result<(Vec<u8>, usize), LabError> {
+        let history = self.specimen(specimen)?.history();
+        let mut csv = Vec::new();
+        history
+            .write_csv(&mut csv)
+            .expect("writing to memory cannot fail");
+        Ok((csv, history.samples().len()))
+    }
+
     /// Whether anything moves without input (the app repaints continuously only then).
     pub fn is_animating(&self) -> bool {
         !self.is_paused()

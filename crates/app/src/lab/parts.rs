@@ -14,7 +14,7 @@ use massprops::{
 use nalgebra::Isometry3;
 
 use super::error::LabError;
-use crate::input::{self, Request, Resolved, Source};
+use crate::input::{self, FileSet, Request, Resolved, Source};
 
 /// One part: what the user set, and what was integrated once.
 #[derive(Debug, Clone)]
@@ -200,15 +200,27 @@ pub fn entry_for(name: &str, mesh: &Path, object: Option<&str>) -> PartEntry {
 }
 
 /// A mesh file as one new part (all of it), named after the file, of water's density.
-pub fn from_mesh_file(path: &Path) -> Result<Vec<PartModel>, LabError> {
-    let file = massprops::load_mesh(path)?;
+pub fn from_mesh_file(path: &Path) -> Result<PartModel, LabError> {
+    from_mesh(path, massprops::load_mesh(path)?)
+}
+
+/// Each file of `files` (meshes given by their bytes) as a new part, as [`from_mesh_file`].
+pub fn from_files(files: &FileSet) -> Result<Vec<PartModel>, LabError> {
+    files
+        .names()
+        .map(|path| {
+            let bytes = files.get(path).unwrap_or_default();
+            from_mesh(path, massprops::parse_mesh(bytes, path)?)
+        })
+        .collect()
+}
+
+/// The mesh `file` read from `path` as one new part, named after the file.
+fn from_mesh(path: &Path, file: MeshFile) -> Result<PartModel, LabError> {
     let name = path
         .file_stem()
         .map_or_else(|| "part".to_owned(), |s| s.to_string_lossy().into_owned());
-    Ok(vec![PartModel::new(
-        entry_for(&name, path, None),
-        file.mesh,
-    )?])
+    PartModel::new(entry_for(&name, path, None), file.mesh)
 }
 
 /// A single-mesh body's parts, each of `density`: the named parts of `file` (read from `path`,
@@ -260,14 +272,28 @@ pub fn from_single(
     Ok(parts)
 }
 
-/// Writes `parts` as a body file at `path`; a part whose mesh file is not on disk (a sample's, a
-/// connected shell's) gets its own OBJ beside the body file. Returns what was written, in words.
+/// Writes `parts` as a body file at `path`, with the meshes [`body_files`] adds. Returns what
+/// was written, in words.
 pub fn save(parts: &[PartModel], path: &Path) -> Result<String, LabError> {
+    let files = body_files(parts, path);
+    for (target, text) in &files {
+        crate::platform::write_file(target, text.as_bytes()).map_err(|e| LabError::Write {
+            path: target.clone(),
+            message: e.to_string(),
+        })?;
+    }
+    Ok(saved_words(parts.len(), &files))
+}
+
+/// What a save of `parts` as a body file at `path` writes, (path, text) each, the body file
+/// last: a part whose mesh file is not on disk (a sample's, a connected shell's, one given by
+/// its bytes) gets its own OBJ beside the body file.
+pub fn body_files(parts: &[PartModel], path: &Path) -> Vec<(PathBuf, String)> {
     let folder = path.parent().unwrap_or(Path::new(""));
     let stem = path
         .file_stem()
         .map_or_else(|| "body".to_owned(), |s| s.to_string_lossy().into_owned());
-    let mut written: Vec<String> = Vec::new();
+    let mut files: Vec<(PathBuf, String)> = Vec::new();
     let mut saved = parts.to_vec();
     let referenced: Vec<PathBuf> = parts.iter().map(|p| p.entry.mesh.clone()).collect();
     for part in &mut saved {
@@ -277,35 +303,33 @@ pub fn save(parts: &[PartModel], path: &Path) -> Result<String, LabError> {
         // A name of its own: two parts may slug alike ("Part.1", "Part_1"), and a file another
         // part reads must not be overwritten.
         let base = format!("{stem}-{}", slug(&part.entry.name));
-        let file_name = (1..)
+        let target = (1..)
             .map(|k| match k {
-                1 => format!("{base}.obj"),
-                k => format!("{base}-{k}.obj"),
+                1 => folder.join(format!("{base}.obj")),
+                k => folder.join(format!("{base}-{k}.obj")),
             })
-            .find(|n| !written.contains(n) && !referenced.contains(&folder.join(n)))
+            .find(|t| !files.iter().any(|(f, _)| f == t) && !referenced.contains(t))
             .unwrap_or_default();
-        let target = folder.join(&file_name);
-        std::fs::write(&target, obj_text(&part.entry.name, &part.mesh)).map_err(|e| {
-            LabError::Write {
-                path: target.clone(),
-                message: e.to_string(),
-            }
-        })?;
+        files.push((target.clone(), obj_text(&part.entry.name, &part.mesh)));
         part.entry.mesh = target;
         part.entry.object = None;
         part.piece = false;
-        written.push(file_name);
     }
-    let text = to_body_file(&saved, path).to_toml();
-    std::fs::write(path, text).map_err(|e| LabError::Write {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    })?;
-    Ok(if written.is_empty() {
-        format!("{} parts", parts.len())
+    files.push((path.to_path_buf(), to_body_file(&saved, path).to_toml()));
+    files
+}
+
+/// What a save wrote, in words: the number of parts and the meshes written beside the body.
+pub fn saved_words(parts: usize, files: &[(PathBuf, String)]) -> String {
+    let meshes: Vec<String> = files[..files.len().saturating_sub(1)]
+        .iter()
+        .filter_map(|(p, _)| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    if meshes.is_empty() {
+        format!("{parts} parts")
     } else {
-        format!("{} parts; meshes {}", parts.len(), written.join(", "))
-    })
+        format!("{parts} parts; meshes {}", meshes.join(", "))
+    }
 }
 
 /// A file-name-safe form of a part's name.

@@ -3,7 +3,9 @@
 //! The [`super::Lab`] holds one or more of them; each changes only through the lab's commands.
 
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::platform::Instant;
 
 use massprops::MassProperties;
 

@@ -788,3 +788,87 @@ fn a_robot_link_spins_beside_a_copy_with_its_stated_inertia() {
         Command::Notify(Message { error: true, .. })
     ));
 }
+
+/// The workspace's sample files, by name, as a browser hands them over (bytes, no folder).
+fn given(names: &[&str]) -> crate::input::FileSet {
+    let mut files = crate::input::FileSet::default();
+    for name in names {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../../assets")
+            .join(name);
+        files.add(*name, std::fs::read(&path).expect("asset"));
+    }
+    files
+}
+
+#[test]
+fn a_body_file_given_with_its_meshes_loads_as_from_its_folder() {
+    let mut from_disk = lab();
+    let folder = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    from_disk.apply(Command::LoadFile(folder.join("hammer.toml")));
+    from_disk.wait_for_load();
+    let mut from_bytes = lab();
+    // The mesh first: the body file is what is opened, whatever the order.
+    from_bytes.apply(Command::LoadFiles(given(&["hammer.obj", "hammer.toml"])));
+    from_bytes.wait_for_load();
+    assert!(
+        from_bytes.message().is_none_or(|m| !m.error),
+        "{:?}",
+        from_bytes.message()
+    );
+    let (a, b) = (from_disk.primary(), from_bytes.primary());
+    assert_eq!(b.body().name, "hammer.toml");
+    assert_eq!(
+        b.body().composition.as_ref().map(|c| c.parts.len()),
+        Some(2)
+    );
+    let exact = InertiaSource::Exact;
+    assert_eq!(a.properties(exact).mass, b.properties(exact).mass);
+    assert_eq!(
+        a.properties(exact).inertia_com,
+        b.properties(exact).inertia_com
+    );
+    assert_eq!(
+        a.properties(exact).center_of_mass,
+        b.properties(exact).center_of_mass
+    );
+}
+
+#[test]
+fn a_body_file_without_its_meshes_names_the_missing_one() {
+    let mut lab = lab();
+    lab.apply(Command::LoadFiles(given(&["hammer.toml"])));
+    lab.wait_for_load();
+    let m = lab.message().expect("a message");
+    assert!(m.error && m.text.contains("hammer.obj"), "{}", m.text);
+    assert_eq!(lab.primary().body().name, "T-handle");
+}
+
+#[test]
+fn meshes_given_by_their_bytes_join_a_body_of_parts() {
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+    let before = lab.primary().properties(InertiaSource::Exact).mass;
+    lab.apply(Command::AddPartFiles(given(&["cube.obj", "torus.obj"])));
+    assert!(
+        lab.message().is_some_and(|m| !m.error),
+        "{:?}",
+        lab.message()
+    );
+    let parts = lab.current_parts(true).expect("parts");
+    let names: Vec<&str> = parts.iter().map(|p| p.entry.name.as_str()).collect();
+    assert_eq!(names[2..], ["cube", "torus"]);
+    // Water: the unit cube alone adds 1000 kg.
+    let after = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!(after > before + 999.0, "{before} → {after}");
+    // Saved as a browser saves (a download each), every mesh given by bytes gets its own OBJ.
+    let files = lab
+        .body_files(std::path::Path::new("hammer-plus.toml"))
+        .expect("files");
+    let names: Vec<String> = files.iter().map(|(p, _)| p.display().to_string()).collect();
+    assert_eq!(names.last().map(String::as_str), Some("hammer-plus.toml"));
+    assert!(
+        names.contains(&"hammer-plus-cube.obj".to_owned()),
+        "{names:?}"
+    );
+}

@@ -2,7 +2,7 @@
 //! view toggles, the plot panel and the F1 help. Each reads the model, edits the frame's one
 //! settings draft and records [`Command`]s; none changes the model itself.
 
-use super::dialogs::DialogPurpose;
+use super::platform::DialogPurpose;
 use crate::lab::{Command, Lab};
 
 pub mod compare;

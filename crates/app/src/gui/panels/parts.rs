@@ -10,7 +10,7 @@ use massprops::materials::MATERIALS;
 use massprops::{MaterialEntry, PartEntry};
 
 use super::{PanelState, number};
-use crate::gui::dialogs::DialogPurpose;
+use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::part_color;
 use crate::lab::{Command, Lab};
 
@@ -105,7 +105,8 @@ fn add_part_buttons(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Ve
         state.dialog_request = Some(DialogPurpose::AddPart);
     }
     let path = state.path.trim();
-    if !path.is_empty()
+    if platform::READS_PATHS
+        && !path.is_empty()
         && ui
             .button("Add the Path's mesh")
             .on_hover_text(path.to_owned())

@@ -7,7 +7,7 @@ use egui::Color32;
 use egui_plot::{Legend, Line, LineStyle, Plot, PlotPoints};
 
 use super::{PanelState, number};
-use crate::gui::dialogs::DialogPurpose;
+use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::history::History;
 use crate::lab::settings::AppSettings;
@@ -93,6 +93,9 @@ pub fn show(
             .clicked()
         {
             state.dialog_request = Some(DialogPurpose::SaveCsv);
+        }
+        if !platform::RECORDS {
+            return;
         }
         ui.separator();
         match state.recording {

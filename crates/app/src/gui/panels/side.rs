@@ -8,7 +8,7 @@ use egui::{Color32, RichText};
 use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
 use super::{PanelState, number};
-use crate::gui::dialogs::DialogPurpose;
+use crate::gui::platform::{self, DialogPurpose};
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassSpec};
 use crate::lab::{Command, Lab};
@@ -76,18 +76,20 @@ fn body_section(
                 {
                     state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
-                ui.label("or drop an OBJ/STL, a body .toml or a robot .urdf/.xml on the window");
+                ui.label(platform::DROP_HINT);
             });
-            ui.horizontal(|ui| {
-                let l = ui.label("Path");
-                let edit = ui
-                    .add(egui::TextEdit::singleline(&mut state.path).desired_width(150.0))
-                    .labelled_by(l.id);
-                let enter = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-                if (ui.button("Load").clicked() || enter) && !state.path.trim().is_empty() {
-                    commands.push(Command::LoadFile(PathBuf::from(state.path.trim())));
-                }
-            });
+            if platform::READS_PATHS {
+                ui.horizontal(|ui| {
+                    let l = ui.label("Path");
+                    let edit = ui
+                        .add(egui::TextEdit::singleline(&mut state.path).desired_width(150.0))
+                        .labelled_by(l.id);
+                    let enter = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                    if (ui.button("Load").clicked() || enter) && !state.path.trim().is_empty() {
+                        commands.push(Command::LoadFile(PathBuf::from(state.path.trim())));
+                    }
+                });
+            }
             ui.horizontal_wrapped(|ui| {
                 ui.label("Samples:");
                 for (label, ..) in SAMPLES {

@@ -6,8 +6,7 @@ pub mod convert;
 pub mod overlay;
 pub mod scene;
 
-use std::sync::{Arc, Mutex};
-use std::time::Instant;
+use std::sync::Arc;
 
 use egui::{Color32, PointerButton, Sense, Stroke};
 use nalgebra::{Matrix4, Point3, Vector3};
@@ -16,9 +15,10 @@ use self::camera::OrbitCamera;
 use crate::lab::geometry::WIREFRAME_MAX_EDGES;
 use crate::lab::settings::GhostLayout;
 use crate::lab::{Command, Lab, PRIMARY};
+use crate::platform::Instant;
 use convert::FrameParams;
 use overlay::{Overlay, Selection};
-use scene::Scene;
+use scene::SceneSlot;
 
 /// What a primary-button drag is doing.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,6 +43,8 @@ pub struct View3d {
     framed: Option<(u64, usize, GhostLayout)>,
     /// Centre of mass the camera last followed: the target moves with the body by the change.
     followed: Option<Point3<f64>>,
+    /// Where the view was last drawn (points).
+    shown: Option<egui::Rect>,
 }
 
 /// The one-line hint under the view.
@@ -118,12 +120,17 @@ impl View3d {
         self.followed = Some(com);
     }
 
+    /// Where the view was last drawn (points), once it has been.
+    pub fn rect(&self) -> Option<egui::Rect> {
+        self.shown
+    }
+
     /// Shows the view in the remaining space of `ui`.
     pub fn show(
         &mut self,
         ui: &mut egui::Ui,
         lab: &Lab,
-        scene: Option<&Arc<Mutex<Scene>>>,
+        scene: Option<SceneSlot>,
         selection: Selection,
         commands: &mut Vec<Command>,
     ) {
@@ -140,6 +147,7 @@ impl View3d {
         let hint_height = ui.text_style_height(&egui::TextStyle::Small) + 6.0;
         let mut rect = ui.available_rect_before_wrap();
         rect.max.y -= hint_height;
+        self.shown = Some(rect);
         let response = ui
             .allocate_rect(rect, Sense::click_and_drag())
             .on_hover_cursor(egui::CursorIcon::Crosshair);
@@ -148,9 +156,7 @@ impl View3d {
         let (origin, params) = self.frame_params(lab);
         match scene {
             Some(scene) => {
-                if let Ok(mut s) = scene.lock()
-                    && s.generation() != Some(lab.generation())
-                {
+                if scene.with(|s| s.generation()) != Some(Some(lab.generation())) {
                     let body = lab.primary().body();
                     let colors = triangle_colors(body);
                     let cpu = match &body.drawn {
@@ -164,13 +170,10 @@ impl View3d {
                         }
                         None => convert::cpu_mesh(&body.mesh, &origin, &colors),
                     };
-                    s.set_mesh(lab.generation(), &cpu);
+                    scene.with(|s| s.set_mesh(lab.generation(), &cpu));
                 }
-                let scene = Arc::clone(scene);
                 let callback = egui_glow::CallbackFn::new(move |info, _painter| {
-                    if let Ok(mut s) = scene.lock() {
-                        s.paint(&info, &params);
-                    }
+                    scene.with(|s| s.paint(&info, &params));
                 });
                 ui.painter().add(egui::PaintCallback {
                     rect,

@@ -3,7 +3,7 @@
 //! ω and L arrows, the poke's ΔL and the string with its force. Plain f64 geometry (tested
 //! without a GPU); `view3d` projects it with the camera and paints it with egui.
 
-use std::time::Instant;
+use crate::platform::Instant;
 
 use egui::{Align2, Color32};
 use nalgebra::{Point3, Vector3};

@@ -2,6 +2,7 @@
 //! and the lights. Everything here lives on the GL thread inside the paint callback (or a
 //! headless EGL context in tests); the rest of the app never touches GPU resources.
 
+use std::cell::RefCell;
 use std::sync::Arc;
 
 use three_d::{
@@ -13,6 +14,31 @@ use super::convert::FrameParams;
 
 /// Background of the 3D view.
 pub const BACKGROUND: [f32; 3] = [0.09, 0.10, 0.12];
+
+thread_local! {
+    /// The scene of the GL context this thread paints with (see [`SceneSlot`]).
+    static SCENE: RefCell<Option<Scene>> = const { RefCell::new(None) };
+}
+
+/// The scene of this thread's GL context: eframe builds the UI and runs its paint callbacks on
+/// one thread, and a browser's GL handles may not cross threads (a WebGL context is not
+/// `Send`), so the scene lives in a thread-local slot rather than behind a lock. The handle is
+/// what a paint callback captures.
+#[derive(Debug, Clone, Copy)]
+pub struct SceneSlot(());
+
+impl SceneSlot {
+    /// Makes `scene` this thread's (replacing any before it).
+    pub fn install(scene: Scene) -> Self {
+        SCENE.set(Some(scene));
+        Self(())
+    }
+
+    /// Runs `f` on this thread's scene; `None` on a thread that has none.
+    pub fn with<R>(self, f: impl FnOnce(&mut Scene) -> R) -> Option<R> {
+        SCENE.with_borrow_mut(|scene| scene.as_mut().map(f))
+    }
+}
 
 /// The body's GPU mesh and the lights.
 pub struct Scene {

@@ -1,13 +1,32 @@
-//! What the system tells about the process, where it differs between systems: today, the
-//! resident memory (Linux's `/proc/self/status`; `None` elsewhere). The benchmarks print it.
+//! The desktop's side of [`platform`](super): work runs on threads of its own, and the process's
+//! memory is read from Linux's `/proc/self/status` (`None` elsewhere; the benchmarks print it).
 
-/// Resident memory of this process, in KiB: now and at its peak.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Memory {
-    /// Resident now (`VmRSS`).
-    pub resident_kib: u64,
-    /// The most resident so far (`VmHWM`).
-    pub peak_kib: u64,
+use super::Memory;
+
+/// Runs `job` on a thread of its own (a load, while the UI goes on drawing).
+pub fn spawn(job: impl FnOnce() + Send + 'static) {
+    std::thread::spawn(job);
+}
+
+/// Nothing to do on the desktop: [`spawn`]ed work runs by itself. (The web runs it here.)
+pub fn run_spawned() {}
+
+/// Writes `bytes` to the file at `path`.
+///
+/// # Errors
+/// The system's, as it says it.
+pub fn write_file(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    std::fs::write(path, bytes)
+}
+
+/// A line on standard output (a benchmark's table).
+pub fn print(line: &str) {
+    println!("{line}");
+}
+
+/// A line on standard error.
+pub fn print_error(line: &str) {
+    eprintln!("{line}");
 }
 
 /// This process's memory, where the system says.

@@ -1,0 +1,276 @@
+//! The desktop's side of the GUI's [`platform`](super): a window of its own (`run`, with the
+//! command line's arguments), and native file dialogs through the XDG desktop portal (`rfd`),
+//! which block until closed, so each runs on its own thread; the GUI polls for the answer and
+//! turns it into a lab command.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, TryRecvError, channel};
+use std::thread;
+
+use clap::Args;
+
+use super::{Chosen, DialogPurpose, Figures};
+use crate::gui::bench::Bench;
+use crate::gui::{LabApp, SETTINGS_KEY, capture};
+use crate::lab::settings::{AppSettings, InertiaSource};
+use crate::lab::{Command, Variant};
+
+/// What the side panel says may be dropped.
+pub const DROP_HINT: &str = "or drop an OBJ/STL, a body .toml or a robot .urdf/.xml on the window";
+
+/// What a closed dialog that chose nothing says: rfd reports a cancel and a missing XDG desktop
+/// portal alike.
+pub const NO_FILE_CHOSEN: &str = "no file chosen (if no dialog appeared, this desktop has no \
+                                  file-dialog portal: type a path or drop the file on the window)";
+
+/// Paths may be typed: the side panel's Path field reads the file named there.
+pub const READS_PATHS: bool = true;
+
+/// The Record button's numbered PNG files are written in a folder of their own.
+pub const RECORDS: bool = true;
+
+/// The window's title.
+pub fn set_title(ctx: &egui::Context, title: &str) {
+    ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
+}
+
+/// Nothing: a window shows its figures in its panels alone. (A page also gives them to scripts.)
+pub fn publish(_: &Figures) {}
+
+/// A native file dialog running on its own thread (they block until closed).
+#[derive(Debug)]
+pub struct Dialog {
+    /// What the chosen file is for.
+    pub purpose: DialogPurpose,
+    answer: Receiver<Option<Chosen>>,
+}
+
+impl Dialog {
+    /// Opens the dialog for `purpose`.
+    pub fn open(purpose: DialogPurpose, wake: impl Fn() + Send + 'static) -> Self {
+        let (tx, rx) = channel();
+        thread::spawn(move || {
+            let dialog = rfd::FileDialog::new();
+            let path = match purpose {
+                DialogPurpose::OpenMesh => dialog
+                    .add_filter(
+                        "Meshes, bodies and robots (OBJ, STL, TOML, URDF, MJCF)",
+                        &[
+                            "obj", "stl", "toml", "urdf", "xml", "OBJ", "STL", "TOML", "URDF",
+                            "XML",
+                        ],
+                    )
+                    .pick_file(),
+                DialogPurpose::AddPart => dialog
+                    .add_filter("Meshes (OBJ, STL)", &["obj", "stl", "OBJ", "STL"])
+                    .pick_file(),
+                DialogPurpose::SaveBody => dialog
+                    .add_filter("Body files", &["toml"])
+                    .set_file_name("body.toml")
+                    .save_file(),
+                DialogPurpose::SaveCsv => dialog
+                    .add_filter("CSV", &["csv"])
+                    .set_file_name("inertia-lab.csv")
+                    .save_file(),
+            };
+            let _ = tx.send(path.map(Chosen::Path));
+            wake();
+        });
+        Self {
+            purpose,
+            answer: rx,
+        }
+    }
+
+    /// Files dropped on the window, as the answer of a dialog for `purpose`: the first one's
+    /// path.
+    pub fn dropped(
+        purpose: DialogPurpose,
+        files: Vec<egui::DroppedFileHandle>,
+        wake: impl Fn() + Send + 'static,
+    ) -> Self {
+        let (tx, rx) = channel();
+        let _ = tx.send(files.first().map(|f| Chosen::Path(f.path().to_path_buf())));
+        wake();
+        Self {
+            purpose,
+            answer: rx,
+        }
+    }
+
+    /// `Some(answer)` once closed (`None` inside: cancelled, or no dialog service available).
+    pub fn poll(&self) -> Option<Option<Chosen>> {
+        match self.answer.try_recv() {
+            Ok(answer) => Some(answer),
+            Err(TryRecvError::Empty) => None,
+            Err(TryRecvError::Disconnected) => Some(None),
+        }
+    }
+}
+
+/// Arguments of the app (no subcommand).
+#[derive(Args, Debug, Default)]
+pub struct GuiArgs {
+    /// Mesh to open (.obj or .stl); the built-in T-handle when absent.
+    pub file: Option<PathBuf>,
+    /// Render N frames continuously with default settings, print frame-time percentiles, exit.
+    #[arg(long, value_name = "N")]
+    pub bench_frames: Option<usize>,
+    /// With --bench-frames: simulate this many seconds first so the plots hold that much history.
+    #[arg(
+        long,
+        value_name = "SECONDS",
+        default_value_t = 0.0,
+        requires = "bench_frames"
+    )]
+    pub bench_history: f64,
+    /// With --bench-frames: collapse the plot panel (to measure what the plots cost).
+    #[arg(long, requires = "bench_frames")]
+    pub bench_no_plots: bool,
+    /// With --bench-frames: compare N copies (1 to 3: bounding-box inertia, point-mass inertia,
+    /// textbook model), drawn as ghosts with their plot curves (to measure what they cost).
+    #[arg(long, value_name = "N", requires = "bench_frames", value_parser = clap::value_parser!(u8).range(1..=3))]
+    pub bench_ghosts: Option<u8>,
+    /// With a robot description (URDF or MJCF): show this link as the body.
+    #[arg(long, value_name = "NAME", requires = "file")]
+    pub link: Option<String>,
+    /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
+    /// settings, after --after simulated seconds, paused there.
+    #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
+    pub screenshot: Option<PathBuf>,
+    /// With --screenshot: simulated seconds to run first.
+    #[arg(
+        long,
+        value_name = "SECONDS",
+        default_value_t = 0.0,
+        requires = "screenshot",
+        allow_negative_numbers = true
+    )]
+    pub after: f64,
+}
+
+/// Why the app could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// The arguments are out of range.
+    #[error("{0}")]
+    Usage(String),
+    /// No window or GL context could be created (no display, no OpenGL 3).
+    #[error("cannot start the app: {0}")]
+    Start(#[from] eframe::Error),
+    /// `--screenshot` could not be taken or written.
+    #[error("{0}")]
+    Screenshot(String),
+}
+
+/// Opens the window and runs the app until it is closed.
+///
+/// # Errors
+/// No window or GL context could be created (no display, no OpenGL 3); `--after` is not a
+/// finite number ≥ 0; the screenshot could not be written.
+pub fn run(args: &GuiArgs) -> Result<(), RunError> {
+    if !(args.after.is_finite() && args.after >= 0.0) {
+        return Err(RunError::Usage(format!(
+            "--after must be a finite number of seconds ≥ 0, got {}",
+            args.after
+        )));
+    }
+    let bench = args
+        .bench_frames
+        .map(|frames| Bench::new(frames, args.bench_no_plots));
+    let outcome = capture::Outcome::default();
+    let capture = args
+        .screenshot
+        .clone()
+        .map(|path| capture::Capture::new(path, Arc::clone(&outcome)));
+    let scripted = bench.is_some() || capture.is_some();
+    let options = eframe::NativeOptions {
+        renderer: eframe::Renderer::Glow,
+        // Without a depth buffer the 3D occlusion is wrong (stack notes).
+        depth_buffer: 24,
+        // MSAA more than doubles frame time on software GL (llvmpipe).
+        multisampling: 0,
+        glow_options: egui_glow::GlowConfiguration {
+            vsync: bench.is_none(),
+            ..Default::default()
+        },
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Inertia Lab")
+            .with_inner_size([1280.0, 800.0])
+            .with_min_inner_size([640.0, 480.0])
+            .with_drag_and_drop(true),
+        persist_window: !scripted,
+        ..Default::default()
+    };
+    let file = args.file.clone();
+    let link = args.link.clone();
+    let (history, after) = (args.bench_history, args.after);
+    let capture_outcome = Arc::clone(&outcome);
+    let ghosts = [
+        Variant::Source(InertiaSource::BoundingBox),
+        Variant::Source(InertiaSource::PointMasses),
+        Variant::Model(rbcore::RotationModel::Textbook),
+    ]
+    .into_iter()
+    .take(args.bench_ghosts.map_or(0, usize::from))
+    .collect::<Vec<_>>();
+    eframe::run_native(
+        "inertia-lab",
+        options,
+        Box::new(move |cc| {
+            let settings = match (scripted, cc.storage) {
+                (false, Some(storage)) => {
+                    eframe::get_value(storage, SETTINGS_KEY).unwrap_or_default()
+                }
+                _ => AppSettings::default(),
+            };
+            let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
+            if let Some(path) = file {
+                app.command(Command::LoadFile(path));
+                if scripted || link.is_some() {
+                    // Every measured frame, and the picture, must show the mesh.
+                    app.lab.wait_for_load();
+                }
+                if let Some(name) = &link {
+                    app.command(app.lab.link_named(name));
+                }
+            }
+            if bench.is_some() {
+                if !ghosts.is_empty() {
+                    app.command(Command::Compare(ghosts));
+                }
+                if history > 0.0 {
+                    app.lab.advance_for(history);
+                }
+                app.bench = bench;
+            }
+            if capture.is_some() {
+                // A file that did not load must not give a picture of the default body.
+                if let Some(m) = app.lab.message().filter(|m| m.error) {
+                    if let Ok(mut slot) = capture_outcome.lock() {
+                        *slot = Some(Err(m.text.clone()));
+                    }
+                    cc.egui_ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                    return Ok(Box::new(app));
+                }
+                app.lab.advance_for(after);
+                // The picture shows the state at exactly `after` seconds.
+                app.command(Command::TogglePause);
+                app.capture = capture;
+            }
+            Ok(Box::new(app))
+        }),
+    )?;
+    if args.screenshot.is_some() {
+        let result = outcome.lock().ok().and_then(|mut slot| slot.take());
+        return match result {
+            Some(Ok(())) => Ok(()),
+            Some(Err(e)) => Err(RunError::Screenshot(e)),
+            None => Err(RunError::Screenshot(
+                "the window closed before the screenshot was taken".to_owned(),
+            )),
+        };
+    }
+    Ok(())
+}

@@ -1,0 +1,222 @@
+//! The browser's side of the GUI's [`platform`](super) (wasm32): the app starts on the page's
+//! canvas with eframe's web runner and the scene its address names ([`crate::gui::link`]);
+//! files come in through the browser's file picker (several at once, so that a body file
+//! arrives with its meshes) with their bytes; a save "dialog" answers at once with the name to
+//! download; the page's title names the body, and the canvas carries the figures scripts read
+//! ([`publish`]: README's "The lab in a browser" lists them).
+
+use std::cell::{Cell, RefCell};
+use std::path::PathBuf;
+use std::rc::Rc;
+
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+use super::{Chosen, DialogPurpose, Figures};
+use crate::gui::bench::Bench;
+use crate::gui::{LabApp, SETTINGS_KEY, link};
+use crate::input::FileSet;
+use crate::lab::settings::AppSettings;
+use crate::lab::{Command, Message};
+
+/// What the side panel says may be dropped.
+pub const DROP_HINT: &str = "or drop an OBJ/STL, or a body .toml with its meshes, on the page";
+
+/// What a closed picker that chose nothing says (or a drop of files the browser could not read,
+/// which the console names).
+pub const NO_FILE_CHOSEN: &str = "no file chosen";
+
+/// A page has no paths to type: files come from the picker or a drop.
+pub const READS_PATHS: bool = false;
+
+/// A recording's hundreds of pictures would be as many downloads: the page does not record.
+pub const RECORDS: bool = false;
+
+/// The id of the canvas the app draws on (`web/index.html`).
+pub const CANVAS_ID: &str = "inertia-lab";
+
+/// Starts the app on the page's canvas with the scene its address names; an error is shown in
+/// the page (the element `#error`) and the console.
+pub fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        crate::platform::print_error(&format!("inertia-lab panicked: {info}"));
+        show_error(&format!("Inertia Lab stopped: {info}"));
+    }));
+    wasm_bindgen_futures::spawn_local(async {
+        if let Err(e) = run().await {
+            let text = e.as_string().unwrap_or_else(|| format!("{e:?}"));
+            crate::platform::print_error(&format!("inertia-lab: {text}"));
+            show_error(&format!("Inertia Lab could not start: {text}"));
+        }
+    });
+}
+
+async fn run() -> Result<(), JsValue> {
+    let document = document().ok_or("no document")?;
+    let canvas: web_sys::HtmlCanvasElement = document
+        .get_element_by_id(CANVAS_ID)
+        .ok_or_else(|| format!("the page has no canvas with id {CANVAS_ID:?}"))?
+        .dyn_into()?;
+    let query = web_sys::window().ok_or("no window")?.location().search()?;
+    let scene = link::parse(&query);
+    let options = eframe::WebOptions {
+        // Without a depth buffer the 3D occlusion is wrong (stack notes).
+        depth_buffer: 24,
+        ..Default::default()
+    };
+    eframe::WebRunner::new()
+        .start(
+            canvas,
+            options,
+            Box::new(move |cc| {
+                // A measured run uses default settings and must not replace the user's.
+                let settings = match (scene.bench_frames, cc.storage) {
+                    (None, Some(storage)) => {
+                        eframe::get_value(storage, SETTINGS_KEY).unwrap_or_default()
+                    }
+                    _ => AppSettings::default(),
+                };
+                let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
+                for command in scene.commands {
+                    app.command(command);
+                }
+                if !scene.problems.is_empty() {
+                    app.command(Command::Notify(Message {
+                        text: format!("the link: {}", scene.problems.join("; ")),
+                        error: true,
+                    }));
+                }
+                app.bench = scene.bench_frames.map(|n| Bench::new(n, false));
+                Ok(Box::new(app))
+            }),
+        )
+        .await
+}
+
+fn document() -> Option<web_sys::Document> {
+    web_sys::window()?.document()
+}
+
+/// Shows `text` in the page's `#error` element (the canvas may be what failed).
+fn show_error(text: &str) {
+    if let Some(element) = document().and_then(|d| d.get_element_by_id("error")) {
+        element.set_text_content(Some(text));
+        let _ = element.set_attribute("style", "display:block");
+    }
+}
+
+/// The page's title.
+pub fn set_title(_: &egui::Context, title: &str) {
+    if let Some(document) = document() {
+        document.set_title(title);
+    }
+}
+
+thread_local! {
+    /// Frames built so far (published as `data-frames`).
+    static FRAMES: Cell<u64> = const { Cell::new(0) };
+}
+
+/// Puts `figures` on the canvas's data attributes, with the number of frames built; the first
+/// frame also records when it was built (`data-first-frame-ms`, milliseconds since navigation).
+pub fn publish(figures: &Figures) {
+    let frames = FRAMES.get() + 1;
+    FRAMES.set(frames);
+    let Some(canvas) = document().and_then(|d| d.get_element_by_id(CANVAS_ID)) else {
+        return;
+    };
+    if frames == 1
+        && let Some(performance) = web_sys::window().and_then(|w| w.performance())
+    {
+        let _ = canvas.set_attribute("data-first-frame-ms", &format!("{:.1}", performance.now()));
+    }
+    let [left, top, width, height] = figures.view;
+    for (name, value) in [
+        ("data-mass", format!("{:e}", figures.mass)),
+        ("data-volume", format!("{:e}", figures.volume)),
+        ("data-omega", format!("{:e}", figures.omega)),
+        ("data-momentum", format!("{:e}", figures.momentum)),
+        ("data-specimens", figures.specimens.to_string()),
+        ("data-loading", figures.loading.to_string()),
+        ("data-view", format!("{left} {top} {width} {height}")),
+        ("data-frames", frames.to_string()),
+    ] {
+        let _ = canvas.set_attribute(name, &value);
+    }
+}
+
+/// A browser's file picker (for opening) or the name of the download (for saving). The picker
+/// runs as a future on the page's event loop; the GUI polls for its answer.
+#[derive(Debug)]
+pub struct Dialog {
+    /// What the chosen files are for.
+    pub purpose: DialogPurpose,
+    answer: Rc<RefCell<Option<Option<Chosen>>>>,
+}
+
+impl Dialog {
+    /// Opens the picker for `purpose`, or answers at once with the name to download.
+    pub fn open(purpose: DialogPurpose, wake: impl Fn() + 'static) -> Self {
+        let answer = Rc::new(RefCell::new(None));
+        let download = |name: &str| Some(Some(Chosen::Path(PathBuf::from(name))));
+        match purpose {
+            DialogPurpose::SaveCsv => *answer.borrow_mut() = download("inertia-lab.csv"),
+            DialogPurpose::SaveBody => *answer.borrow_mut() = download("body.toml"),
+            DialogPurpose::OpenMesh | DialogPurpose::AddPart => {
+                let slot = Rc::clone(&answer);
+                let dialog = rfd::AsyncFileDialog::new();
+                let dialog = if purpose == DialogPurpose::OpenMesh {
+                    dialog.add_filter(
+                        "Meshes and bodies (OBJ, STL, TOML with its meshes)",
+                        &["obj", "stl", "toml"],
+                    )
+                } else {
+                    dialog.add_filter("Meshes (OBJ, STL)", &["obj", "stl"])
+                };
+                wasm_bindgen_futures::spawn_local(async move {
+                    let picked = dialog.pick_files().await;
+                    let mut files = FileSet::default();
+                    for handle in picked.unwrap_or_default() {
+                        files.add(handle.file_name(), handle.read().await);
+                    }
+                    let chosen = files.main().is_some().then_some(Chosen::Files(files));
+                    *slot.borrow_mut() = Some(chosen);
+                    wake();
+                });
+            }
+        }
+        Self { purpose, answer }
+    }
+
+    /// Files dropped on the page, as the answer of a dialog for `purpose` once the browser has
+    /// read their bytes (all of them: a body file with its meshes).
+    pub fn dropped(
+        purpose: DialogPurpose,
+        dropped: Vec<egui::DroppedFileHandle>,
+        wake: impl Fn() + 'static,
+    ) -> Self {
+        let answer = Rc::new(RefCell::new(None));
+        let slot = Rc::clone(&answer);
+        wasm_bindgen_futures::spawn_local(async move {
+            let mut files = FileSet::default();
+            let mut failed = Vec::new();
+            for file in &dropped {
+                match file.bytes_async().await {
+                    Ok(bytes) => files.add(file.path(), bytes),
+                    Err(e) => failed.push(format!("{}: {e}", file.path().display())),
+                }
+            }
+            for line in &failed {
+                crate::platform::print_error(&format!("inertia-lab: cannot read {line}"));
+            }
+            *slot.borrow_mut() = Some(files.main().is_some().then_some(Chosen::Files(files)));
+            wake();
+        });
+        Self { purpose, answer }
+    }
+
+    /// `Some(answer)` once closed (`None` inside: cancelled).
+    pub fn poll(&self) -> Option<Option<Chosen>> {
+        self.answer.borrow_mut().take()
+    }
+}

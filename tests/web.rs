@@ -1,0 +1,306 @@
+//! The lab in a browser: `web/build.sh` builds the site (Debian's wasm32 toolchain and
+//! wasm-bindgen), this test serves it on 127.0.0.1 and drives headless Chromium through
+//! puppeteer-core (`tests/web/drive.mjs`, which reports what it saw as JSON). It checks that the
+//! page runs with no console error; draws the body and the plots (pixels of a screenshot, saved
+//! as `target/web-test/page-*.png` for a person to look at); keeps |L| while nothing acts and
+//! changes it with a click or a tap on the body; opens the scene a link names; loads a mesh
+//! through the file picker and a body file with its meshes dropped on the page, each with the
+//! mass `props` computes for the same files; and names the body in the page's title.
+//!
+//! Without Chromium, Node.js, the web toolchain or the npm registry it prints a SKIPPED line (a
+//! failure under `CI`; `.ci/run` installs them all).
+
+mod common;
+
+use std::io::{BufRead, BufReader, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use common::{on_path, root, skip};
+
+/// The puppeteer-core the driver uses (24: the last line that runs on Node.js 20).
+const PUPPETEER: &str = "puppeteer-core@24.43.1";
+
+const TEST: &str = "web_page_runs_the_lab";
+
+#[test]
+fn web_page_runs_the_lab() {
+    let chromium = Path::new("/usr/bin/chromium");
+    if !chromium.is_file() {
+        skip(
+            TEST,
+            "Chromium is not installed",
+            "apt-get install chromium",
+        );
+        return;
+    }
+    if !on_path("node") || !on_path("npm") {
+        skip(
+            TEST,
+            "Node.js is not installed",
+            "apt-get install nodejs npm",
+        );
+        return;
+    }
+    let build = root().join("web/build.sh");
+    let check = Command::new(&build)
+        .arg("--check")
+        .output()
+        .expect("web/build.sh runs");
+    if check.status.code() == Some(3) {
+        let said = String::from_utf8_lossy(&check.stderr);
+        let mut lines = said.lines().map(|l| l.trim_start_matches("web/build.sh: "));
+        let missing = lines.next().unwrap_or("the web toolchain");
+        let install = lines.next().unwrap_or("see README");
+        skip(TEST, missing, install);
+        return;
+    }
+    let work = root().join("target/web-test");
+    let site = work.join("site");
+    std::fs::create_dir_all(&work).expect("target/web-test");
+    let built = Command::new(&build)
+        .arg(&site)
+        // The test process's library path (the test toolchain's) is not the web compiler's.
+        .env_remove("LD_LIBRARY_PATH")
+        .output()
+        .expect("web/build.sh runs");
+    assert!(
+        built.status.success(),
+        "web/build.sh failed:\n{}",
+        String::from_utf8_lossy(&built.stderr)
+    );
+    let driver = work.join("driver");
+    if !driver.join("node_modules/puppeteer-core").is_dir() {
+        let npm = Command::new("npm")
+            .args(["install", "--no-audit", "--no-fund", "--prefix"])
+            .arg(&driver)
+            .arg(PUPPETEER)
+            .output()
+            .expect("npm runs");
+        if !npm.status.success() {
+            skip(
+                TEST,
+                &format!(
+                    "npm could not install {PUPPETEER}: {}",
+                    String::from_utf8_lossy(&npm.stderr).trim()
+                ),
+                "network access to the npm registry",
+            );
+            return;
+        }
+    }
+    // Beside its node_modules: an ES module finds its imports from its own folder.
+    let script = driver.join("drive.mjs");
+    std::fs::copy(root().join("tests/web/drive.mjs"), &script).expect("driver copied");
+    let base = serve(site);
+    let picked = root().join("assets/l_bracket.obj");
+    let dropped = [
+        root().join("assets/hammer.toml"),
+        root().join("assets/hammer.obj"),
+    ];
+    let driven = Command::new("node")
+        .arg(&script)
+        .arg(&base)
+        .arg(&work)
+        .arg(&picked)
+        .args(&dropped)
+        .current_dir(&driver)
+        .output()
+        .expect("node runs");
+    assert!(
+        driven.status.success(),
+        "the browser driver failed:\n{}",
+        String::from_utf8_lossy(&driven.stderr)
+    );
+    let seen: serde_json::Value =
+        serde_json::from_slice(&driven.stdout).expect("the driver prints JSON");
+    let s = &seen["scenarios"];
+    let number = |v: &serde_json::Value| -> f64 {
+        v.as_str()
+            .and_then(|t| t.parse().ok())
+            .unwrap_or_else(|| panic!("a number, got {v}"))
+    };
+
+    assert_eq!(seen["errors"], serde_json::json!([]), "console errors");
+
+    // Opened: the T-handle, named in the title, moving.
+    let default = &s["default"];
+    assert_eq!(default["first"]["title"], "Inertia Lab — T-handle");
+    assert!(number(&default["later"]["frames"]) > number(&default["first"]["frames"]) + 10.0);
+    let shot = Screenshot::read(&work.join("page-1280x800.png"));
+    let [left, top, width, height] = view(&default["later"]["view"]);
+    let body = shot.count((left, left + width), (top, top + height), |r, g, b| {
+        r > 90 && i32::from(r) > i32::from(g) + 10 && i32::from(g) > i32::from(b) + 20
+    });
+    let plot = shot.count(
+        (left, shot.width),
+        (top + height, shot.height),
+        |r, g, b| g > 150 && r < 150 && b < 150,
+    );
+    assert!(body > 2000, "the 3D view shows no body ({body} pixels)");
+    assert!(plot > 100, "the plots show no lines ({plot} pixels)");
+
+    // Torque-free, |L| is constant; a click (a tap on a touch screen) on the body pokes it.
+    for name in ["poke", "tap"] {
+        let p = &s[name];
+        let (before, still, after) = (
+            number(&p["before"]["momentum"]),
+            number(&p["still"]["momentum"]),
+            number(&p["after"]["momentum"]),
+        );
+        assert!(
+            (still - before).abs() <= 1e-9 * before,
+            "{name}: |L| drifted from {before} to {still} with nothing acting"
+        );
+        assert!(
+            (after - still).abs() > 1e-3 * still,
+            "{name}: |L| {still} → {after}: the {name} at {} did not poke the body",
+            p["at"]
+        );
+    }
+
+    // A link names the scene; a bad one is said in the page, and the rest runs.
+    assert_eq!(s["link"]["title"], "Inertia Lab — Tennis racket");
+    assert_eq!(s["link"]["specimens"], "2");
+    assert_eq!(s["bad_link"]["title"], "Inertia Lab — T-handle");
+
+    // Files in: the same mass as props at the app's default density (water, 1000 kg/m³).
+    for (name, file) in [("picker", &picked), ("drop", &dropped[0])] {
+        let shown = number(&s[name]["mass"]);
+        let props = props_mass(file);
+        assert!(
+            (shown - props).abs() <= 1e-12 * props,
+            "{name}: the page shows {shown} kg, props {props} kg"
+        );
+    }
+}
+
+/// The 3D view's rectangle in CSS pixels, as the page publishes it.
+fn view(v: &serde_json::Value) -> [usize; 4] {
+    let numbers: Vec<usize> = v
+        .as_str()
+        .expect("data-view")
+        .split(' ')
+        .map(|t| t.parse::<f64>().expect("a number").round() as usize)
+        .collect();
+    [numbers[0], numbers[1], numbers[2], numbers[3]]
+}
+
+/// `props --json --density 1000 FILE`'s mass.
+fn props_mass(file: &Path) -> f64 {
+    let out = common::run(&[
+        "props",
+        "--json",
+        "--density",
+        "1000",
+        file.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    json["mass"].as_f64().expect("mass")
+}
+
+/// Serves the files of `site` on 127.0.0.1 (a port of its own) until the test process ends;
+/// returns the base address.
+fn serve(site: PathBuf) -> String {
+    let listener = TcpListener::bind("127.0.0.1:0").expect("a port on 127.0.0.1");
+    let base = format!("http://{}", listener.local_addr().expect("address"));
+    std::thread::spawn(move || {
+        for stream in listener.incoming().flatten() {
+            let site = site.clone();
+            std::thread::spawn(move || answer(stream, &site));
+        }
+    });
+    base
+}
+
+/// Answers one GET request with a file of `site` (404 for anything else).
+fn answer(mut stream: TcpStream, site: &Path) {
+    let mut request = String::new();
+    let mut reader = BufReader::new(&stream);
+    if reader.read_line(&mut request).is_err() {
+        return;
+    }
+    // The headers, up to the empty line.
+    let mut line = String::new();
+    while reader.read_line(&mut line).is_ok_and(|n| n > 2) {
+        line.clear();
+    }
+    let target = request.split_whitespace().nth(1).unwrap_or("/");
+    let path = target.split('?').next().unwrap_or("/");
+    let name = if path == "/" {
+        "index.html"
+    } else {
+        path.trim_start_matches('/')
+    };
+    let file = (!name.contains("..")).then(|| site.join(name));
+    let (status, kind, body) = match file.and_then(|f| std::fs::read(&f).ok().map(|b| (f, b))) {
+        Some((f, bytes)) => {
+            let kind = match f.extension().and_then(|e| e.to_str()) {
+                Some("html") => "text/html; charset=utf-8",
+                Some("js") => "text/javascript",
+                Some("wasm") => "application/wasm",
+                _ => "application/octet-stream",
+            };
+            ("200 OK", kind, bytes)
+        }
+        None => ("404 Not Found", "text/plain", b"not found".to_vec()),
+    };
+    let head = format!(
+        "HTTP/1.1 {status}\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+        body.len()
+    );
+    let _ = stream.write_all(head.as_bytes());
+    let _ = stream.write_all(&body);
+}
+
+/// A PNG screenshot as RGB.
+struct Screenshot {
+    width: usize,
+    height: usize,
+    rgb: Vec<u8>,
+}
+
+impl Screenshot {
+    fn read(path: &Path) -> Self {
+        let file = std::fs::File::open(path).expect("the screenshot was written");
+        let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+            .read_info()
+            .expect("a PNG");
+        let mut bytes = vec![0; reader.output_buffer_size().expect("size")];
+        let info = reader.next_frame(&mut bytes).expect("pixels");
+        let channels = info.color_type.samples();
+        Self {
+            width: info.width as usize,
+            height: info.height as usize,
+            rgb: bytes
+                .chunks(channels)
+                .flat_map(|p| [p[0], p[1], p[2]])
+                .collect(),
+        }
+    }
+
+    /// Pixels in `[x0, x1) × [y0, y1)` for which `f(r, g, b)` holds.
+    fn count(
+        &self,
+        (x0, x1): (usize, usize),
+        (y0, y1): (usize, usize),
+        f: impl Fn(u8, u8, u8) -> bool,
+    ) -> usize {
+        let mut n = 0;
+        for y in y0..y1.min(self.height) {
+            for x in x0..x1.min(self.width) {
+                let k = 3 * (y * self.width + x);
+                if f(self.rgb[k], self.rgb[k + 1], self.rgb[k + 2]) {
+                    n += 1;
+                }
+            }
+        }
+        n
+    }
+}

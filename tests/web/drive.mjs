@@ -1,0 +1,172 @@
+// Drives the built page in headless Chromium for tests/web.rs, and prints one JSON object of what
+// it saw; the Rust test makes the assertions. puppeteer-core is installed by the test (its
+// version is in tests/web.rs).
+//
+//   node drive.mjs BASE_URL OUT_DIR PICKED_MESH DROPPED_FILE...
+//
+// Every scenario opens a new page; console errors and uncaught exceptions of all pages are
+// collected. The page publishes its figures on the canvas's data-* attributes
+// (crates/app/src/gui/platform/web.rs).
+
+import { readFileSync } from "node:fs";
+import { basename, join } from "node:path";
+import puppeteer from "puppeteer-core";
+
+const [base, out, picked, ...dropped] = process.argv.slice(2);
+const TIMEOUT = 120_000;
+
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+  headless: true,
+  args: [
+    "--no-sandbox",
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+  ],
+});
+
+const result = { errors: [], scenarios: {} };
+
+async function open(name, query, viewport = { width: 1280, height: 800 }) {
+  const page = await browser.newPage();
+  await page.setViewport(viewport);
+  page.on("console", (m) => {
+    if (m.type() === "error") result.errors.push(`${name}: ${m.text()}`);
+  });
+  page.on("pageerror", (e) => result.errors.push(`${name}: ${e.message}`));
+  await page.goto(base + query, { waitUntil: "load", timeout: TIMEOUT });
+  await frames(page, 3);
+  return page;
+}
+
+async function figures(page) {
+  return page.$eval("#inertia-lab", (c) => ({ ...c.dataset, title: document.title }));
+}
+
+async function frames(page, n) {
+  await page.waitForFunction(
+    (n) => Number(document.getElementById("inertia-lab")?.dataset.frames ?? 0) >= n,
+    { timeout: TIMEOUT, polling: 50 },
+    n,
+  );
+}
+
+// Waits until a load has finished and the title names `file`.
+async function loaded(page, file) {
+  await page.waitForFunction(
+    (file) =>
+      document.title === `Inertia Lab — ${file}` &&
+      document.getElementById("inertia-lab").dataset.loading === "false",
+    { timeout: TIMEOUT, polling: 50 },
+    file,
+  );
+  return figures(page);
+}
+
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+// A point on the body: the 3D view's centre (the camera frames the body's centre of mass
+// there) moved by a fraction of the view's height, so that a poke along the view ray has a
+// lever arm about the centre of mass.
+async function offCentre(page) {
+  const [left, top, width, height] = (await figures(page)).view.split(" ").map(Number);
+  return { x: left + width / 2 + 0.04 * height, y: top + height / 2 + 0.03 * height };
+}
+
+// 1. The page as opened: the T-handle, drawn and moving; a screenshot for the pixel checks.
+{
+  const page = await open("default", "/");
+  const first = await figures(page);
+  await sleep(3000);
+  const later = await figures(page);
+  await page.screenshot({ path: join(out, "page-1280x800.png") });
+  result.scenarios.default = { first, later };
+  await page.close();
+}
+
+// 2. A poke: |L| stays while nothing acts (torque-free), and changes with a click on the body.
+for (const [name, viewport, touch] of [
+  ["poke", { width: 1280, height: 800 }, false],
+  // A tablet: 1024 × 768 CSS pixels at 2 device pixels each, touch only.
+  ["tap", { width: 1024, height: 768, deviceScaleFactor: 2, isMobile: true, hasTouch: true }, true],
+]) {
+  const page = await open(name, "/?sample=cube", viewport);
+  await frames(page, 10);
+  const before = await figures(page);
+  await sleep(500);
+  const still = await figures(page);
+  const at = await offCentre(page);
+  if (touch) {
+    await page.touchscreen.tap(at.x, at.y);
+  } else {
+    await page.mouse.click(at.x, at.y);
+  }
+  const clicked = Number((await figures(page)).frames);
+  await frames(page, clicked + 5);
+  const after = await figures(page);
+  result.scenarios[name] = { before, still, after, at };
+  await page.close();
+}
+
+// 3. A link names the scene: sample, spin axis, comparison; a bad key is said, not fatal.
+{
+  const page = await open("link", "/?sample=tennis_racket&spin=2&compare=bbox");
+  result.scenarios.link = await figures(page);
+  await page.close();
+  const bad = await open("bad_link", "/?sample=anvil&spin=7");
+  result.scenarios.bad_link = await figures(bad);
+  await bad.close();
+}
+
+// 4. The file picker ("Open mesh…" in the side panel, rfd's <input type=file>).
+{
+  const page = await open("picker", "/");
+  const [chooser] = await Promise.all([
+    page.waitForFileChooser({ timeout: 30_000 }),
+    page.mouse.click(Number(process.env.OPEN_X ?? 52), Number(process.env.OPEN_Y ?? 62)),
+  ]);
+  await chooser.accept([picked]);
+  result.scenarios.picker = await loaded(page, basename(picked));
+  await page.close();
+}
+
+// 5. Files dropped on the page: a body file with its meshes.
+{
+  const page = await open("drop", "/");
+  const files = dropped.map((p) => [basename(p), readFileSync(p).toString("base64")]);
+  await page.evaluate((files) => {
+    const transfer = new DataTransfer();
+    for (const [name, b64] of files) {
+      const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+      transfer.items.add(new File([bytes], name));
+    }
+    const canvas = document.getElementById("inertia-lab");
+    for (const type of ["dragenter", "dragover", "drop"]) {
+      canvas.dispatchEvent(
+        new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }),
+      );
+    }
+  }, files);
+  const main = files.find(([n]) => n.endsWith(".toml"))?.[0] ?? files[0][0];
+  result.scenarios.drop = await loaded(page, main);
+  await page.close();
+}
+
+// 6. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
+{
+  const page = await open("hidpi", "/?sample=tennis_racket&spin=2", {
+    width: 1280,
+    height: 720,
+    deviceScaleFactor: 1.5,
+  });
+  await sleep(2000);
+  await page.screenshot({ path: join(out, "page-1920x1080.png") });
+  await page.close();
+}
+
+await browser.close();
+console.log(JSON.stringify(result));

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Builds Inertia Lab for the browser: a static folder (index.html, the JS glue, the .wasm) that
+# any static server serves, e.g. `python3 -m http.server -d target/web 8000`.
+#
+#   web/build.sh [OUT]      build into OUT (default target/web)
+#   web/build.sh --check    only check the toolchain (exit 3 and the install line when missing)
+#
+# rustup's toolchains here have no wasm32 standard library; Debian's rustc-web does, and builds
+# one from its source (-Zbuild-std). See shared/notes/web.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+RUSTC_WEB=/usr/bin/rustc
+CARGO_WEB=/usr/bin/cargo
+STD_SOURCE=/usr/lib/rustlib/src/rust/library
+WASM_LD=/usr/lib/llvm-22/bin/wasm-ld
+# The glue generator must be the version of the wasm-bindgen crate in Cargo.lock.
+BINDGEN_VERSION=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
+INSTALL="apt-get install rustc-web cargo-web rust-web-src lld-22 binaryen && cargo install wasm-bindgen-cli --version =$BINDGEN_VERSION"
+
+missing=()
+{ [[ -x $RUSTC_WEB ]] && [[ -x $CARGO_WEB ]]; } || missing+=("Debian's rustc-web and cargo-web")
+[[ -d $STD_SOURCE ]] || missing+=("the standard library's source (rust-web-src)")
+[[ -x $WASM_LD ]] || missing+=("wasm-ld (lld-22)")
+command -v wasm-opt >/dev/null || missing+=("wasm-opt (binaryen)")
+if ! command -v wasm-bindgen >/dev/null; then
+  missing+=("wasm-bindgen-cli $BINDGEN_VERSION")
+elif [[ $(wasm-bindgen --version) != "wasm-bindgen $BINDGEN_VERSION" ]]; then
+  missing+=("wasm-bindgen-cli $BINDGEN_VERSION (found $(wasm-bindgen --version))")
+fi
+if ((${#missing[@]})); then
+  echo "web/build.sh: missing: $(printf '%s; ' "${missing[@]}")" >&2
+  echo "web/build.sh: install with: $INSTALL" >&2
+  exit 3
+fi
+[[ ${1:-} == --check ]] && exit 0
+
+OUT=${1:-target/web}
+# A target folder of its own: another compiler, and Cargo holds the workspace's locked while
+# its tests run (the browser test calls this script).
+WASM_TARGET=target/wasm
+RUSTC=$RUSTC_WEB RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR=$WASM_TARGET \
+  CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER=$WASM_LD \
+  "$CARGO_WEB" build --locked --release -p inertia-lab-web --target wasm32-unknown-unknown \
+  -Zbuild-std=std,panic_abort
+
+BUILT=$WASM_TARGET/wasm32-unknown-unknown/release/inertia_lab_web.wasm
+OPTIMISED=$WASM_TARGET/optimised
+mkdir -p "$OPTIMISED" "$OUT"
+# Before wasm-bindgen, never after: Debian's binaryen rewrites the externref table that
+# wasm-bindgen's output relies on (shared/notes/web.md).
+wasm-opt -O2 "$BUILT" -o "$OPTIMISED/inertia_lab_web.wasm"
+wasm-bindgen --target web --no-typescript --out-dir "$OUT" "$OPTIMISED/inertia_lab_web.wasm"
+cp web/index.html "$OUT/index.html"
+echo "web/build.sh: built $OUT:"
+ls -l "$OUT"
