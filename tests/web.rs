@@ -113,6 +113,8 @@ fn web_page_runs_the_lab() {
         "the browser driver failed:\n{}",
         String::from_utf8_lossy(&driven.stderr)
     );
+    // Kept for a person to read when an assertion below fails.
+    std::fs::write(work.join("seen.json"), &driven.stdout).expect("seen.json");
     let seen: serde_json::Value =
         serde_json::from_slice(&driven.stdout).expect("the driver prints JSON");
     let s = &seen["scenarios"];
@@ -122,6 +124,11 @@ fn web_page_runs_the_lab() {
             .unwrap_or_else(|| panic!("a number, got {v}"))
     };
 
+    assert_eq!(
+        seen["failures"],
+        serde_json::json!([]),
+        "scenarios that failed"
+    );
     assert_eq!(seen["errors"], serde_json::json!([]), "console errors");
 
     // Opened: the T-handle, named in the title, moving.
@@ -187,15 +194,13 @@ fn view(v: &serde_json::Value) -> [usize; 4] {
     [numbers[0], numbers[1], numbers[2], numbers[3]]
 }
 
-/// `props --json --density 1000 FILE`'s mass.
+/// `props --json FILE`'s mass, at the app's density for a mesh (a body file gives its own).
 fn props_mass(file: &Path) -> f64 {
-    let out = common::run(&[
-        "props",
-        "--json",
-        "--density",
-        "1000",
-        file.to_str().expect("utf-8"),
-    ]);
+    let mut args = vec!["props", "--json", file.to_str().expect("utf-8")];
+    if file.extension().is_some_and(|e| e != "toml") {
+        args.extend(["--density", "1000"]);
+    }
+    let out = common::run(&args);
     assert!(
         out.status.success(),
         "{}",

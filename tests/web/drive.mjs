@@ -13,31 +13,60 @@ import { basename, join } from "node:path";
 import puppeteer from "puppeteer-core";
 
 const [base, out, picked, ...dropped] = process.argv.slice(2);
-const TIMEOUT = 120_000;
+const TIMEOUT = 60_000;
+// Where "Open mesh…" is drawn at 1280 × 800 (CSS pixels).
+const OPEN_MESH = { x: 72, y: 84 };
 
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-  headless: true,
-  args: [
-    "--no-sandbox",
-    "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-  ],
-});
+// A browser whose screen has `scale` device pixels per CSS pixel. (Emulating the scale per page,
+// as puppeteer's deviceScaleFactor does, leaves the canvas's device-pixel size unscaled, so the
+// app would draw at the wrong size: a real screen's scale is what a user has.)
+const launch = (scale) =>
+  puppeteer.launch({
+    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+    headless: true,
+    args: [
+      "--no-sandbox",
+      "--use-angle=swiftshader",
+      "--enable-unsafe-swiftshader",
+      "--no-first-run",
+      "--disable-background-networking",
+      "--disable-component-update",
+      "--disable-sync",
+      `--force-device-scale-factor=${scale}`,
+    ],
+  });
+const browsers = { 1: await launch(1), 1.5: await launch(1.5), 2: await launch(2) };
 
-const result = { errors: [], scenarios: {} };
+const result = { errors: [], failures: [], scenarios: {} };
 
-async function open(name, query, viewport = { width: 1280, height: 800 }) {
-  const page = await browser.newPage();
-  await page.setViewport(viewport);
+// Runs one scenario; a failure is recorded with its message and the others still run.
+async function scenario(name, body) {
+  try {
+    await body();
+  } catch (e) {
+    result.failures.push(`${name}: ${e.message}`);
+  }
+}
+
+async function open(name, query, viewport = { width: 1280, height: 800 }, scale = 1) {
+  const page = await browsers[scale].newPage();
+  // deviceScaleFactor 0: the screen's own.
+  await page.setViewport({ ...viewport, deviceScaleFactor: 0 });
   page.on("console", (m) => {
     if (m.type() === "error") result.errors.push(`${name}: ${m.text()}`);
   });
   page.on("pageerror", (e) => result.errors.push(`${name}: ${e.message}`));
+  // A DataTransfer holding files given as [name, base64 bytes] (what a drop or a chooser gives).
+  await page.evaluateOnNewDocument(() => {
+    window.transfer = (files) => {
+      const transfer = new DataTransfer();
+      for (const [name, b64] of files) {
+        const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+        transfer.items.add(new File([bytes], name));
+      }
+      return transfer;
+    };
+  });
   await page.goto(base + query, { waitUntil: "load", timeout: TIMEOUT });
   await frames(page, 3);
   return page;
@@ -55,17 +84,26 @@ async function frames(page, n) {
   );
 }
 
-// Waits until a load has finished and the title names `file`.
+// Waits until a load has finished and the title names `file`; if it does not, the page as it
+// was is saved as failed-<file>.png beside the screenshots.
 async function loaded(page, file) {
-  await page.waitForFunction(
-    (file) =>
-      document.title === `Inertia Lab — ${file}` &&
-      document.getElementById("inertia-lab").dataset.loading === "false",
-    { timeout: TIMEOUT, polling: 50 },
-    file,
-  );
+  try {
+    await page.waitForFunction(
+      (file) =>
+        document.title === `Inertia Lab — ${file}` &&
+        document.getElementById("inertia-lab").dataset.loading === "false",
+      { timeout: TIMEOUT, polling: 50 },
+      file,
+    );
+  } catch (e) {
+    await page.screenshot({ path: join(out, `failed-${file}.png`) });
+    throw e;
+  }
   return figures(page);
 }
+
+// Files as [name, base64 bytes], to be made into File objects in the page by `transfer`.
+const encoded = (paths) => paths.map((p) => [basename(p), readFileSync(p).toString("base64")]);
 
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
@@ -78,7 +116,7 @@ async function offCentre(page) {
 }
 
 // 1. The page as opened: the T-handle, drawn and moving; a screenshot for the pixel checks.
-{
+await scenario("default", async () => {
   const page = await open("default", "/");
   const first = await figures(page);
   await sleep(3000);
@@ -86,87 +124,89 @@ async function offCentre(page) {
   await page.screenshot({ path: join(out, "page-1280x800.png") });
   result.scenarios.default = { first, later };
   await page.close();
-}
+});
 
 // 2. A poke: |L| stays while nothing acts (torque-free), and changes with a click on the body.
-for (const [name, viewport, touch] of [
-  ["poke", { width: 1280, height: 800 }, false],
+for (const [name, viewport, scale, touch] of [
+  ["poke", { width: 1280, height: 800 }, 1, false],
   // A tablet: 1024 × 768 CSS pixels at 2 device pixels each, touch only.
-  ["tap", { width: 1024, height: 768, deviceScaleFactor: 2, isMobile: true, hasTouch: true }, true],
+  ["tap", { width: 1024, height: 768, isMobile: true, hasTouch: true }, 2, true],
 ]) {
-  const page = await open(name, "/?sample=cube", viewport);
-  await frames(page, 10);
-  const before = await figures(page);
-  await sleep(500);
-  const still = await figures(page);
-  const at = await offCentre(page);
-  if (touch) {
-    await page.touchscreen.tap(at.x, at.y);
-  } else {
-    await page.mouse.click(at.x, at.y);
-  }
-  const clicked = Number((await figures(page)).frames);
-  await frames(page, clicked + 5);
-  const after = await figures(page);
-  result.scenarios[name] = { before, still, after, at };
-  await page.close();
+  await scenario(name, async () => {
+    const page = await open(name, "/?sample=cube", viewport, scale);
+    await frames(page, 10);
+    const before = await figures(page);
+    await sleep(500);
+    const still = await figures(page);
+    const at = await offCentre(page);
+    if (touch) {
+      await page.touchscreen.tap(at.x, at.y);
+    } else {
+      await page.mouse.click(at.x, at.y);
+    }
+    const clicked = Number((await figures(page)).frames);
+    await frames(page, clicked + 5);
+    const after = await figures(page);
+    result.scenarios[name] = { before, still, after, at };
+    await page.close();
+  });
 }
 
 // 3. A link names the scene: sample, spin axis, comparison; a bad key is said, not fatal.
-{
+await scenario("link", async () => {
   const page = await open("link", "/?sample=tennis_racket&spin=2&compare=bbox");
   result.scenarios.link = await figures(page);
   await page.close();
   const bad = await open("bad_link", "/?sample=anvil&spin=7");
   result.scenarios.bad_link = await figures(bad);
   await bad.close();
-}
+});
 
-// 4. The file picker ("Open mesh…" in the side panel, rfd's <input type=file>).
-{
+// 4. The file picker ("Open mesh…" at the top of the side panel: rfd's <input type=file>). A
+// headless browser cancels a native file chooser at once, so the input's click is kept from
+// opening one, and the file is put in the input as the chooser would put it (made in the page
+// from its bytes, as the drop below: a file granted by path could not always be read here).
+await scenario("picker", async () => {
   const page = await open("picker", "/");
-  const [chooser] = await Promise.all([
-    page.waitForFileChooser({ timeout: 30_000 }),
-    page.mouse.click(Number(process.env.OPEN_X ?? 52), Number(process.env.OPEN_Y ?? 62)),
-  ]);
-  await chooser.accept([picked]);
+  await page.evaluate(() => {
+    const click = HTMLInputElement.prototype.click;
+    HTMLInputElement.prototype.click = function () {
+      if (this.type !== "file") click.call(this);
+    };
+  });
+  await page.mouse.click(OPEN_MESH.x, OPEN_MESH.y);
+  const input = await page.waitForSelector("#rfd-input", { timeout: TIMEOUT });
+  await input.evaluate((input, files) => {
+    input.files = transfer(files).files;
+    input.dispatchEvent(new Event("change"));
+  }, encoded([picked]));
   result.scenarios.picker = await loaded(page, basename(picked));
   await page.close();
-}
+});
 
 // 5. Files dropped on the page: a body file with its meshes.
-{
+await scenario("drop", async () => {
   const page = await open("drop", "/");
-  const files = dropped.map((p) => [basename(p), readFileSync(p).toString("base64")]);
+  const files = encoded(dropped);
   await page.evaluate((files) => {
-    const transfer = new DataTransfer();
-    for (const [name, b64] of files) {
-      const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-      transfer.items.add(new File([bytes], name));
-    }
+    const dataTransfer = transfer(files);
     const canvas = document.getElementById("inertia-lab");
     for (const type of ["dragenter", "dragover", "drop"]) {
-      canvas.dispatchEvent(
-        new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }),
-      );
+      canvas.dispatchEvent(new DragEvent(type, { dataTransfer, bubbles: true, cancelable: true }));
     }
   }, files);
   const main = files.find(([n]) => n.endsWith(".toml"))?.[0] ?? files[0][0];
   result.scenarios.drop = await loaded(page, main);
   await page.close();
-}
+});
 
 // 6. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
-{
-  const page = await open("hidpi", "/?sample=tennis_racket&spin=2", {
-    width: 1280,
-    height: 720,
-    deviceScaleFactor: 1.5,
-  });
+await scenario("hidpi", async () => {
+  const page = await open("hidpi", "/?sample=tennis_racket&spin=2", { width: 1280, height: 720 }, 1.5);
   await sleep(2000);
   await page.screenshot({ path: join(out, "page-1920x1080.png") });
   await page.close();
-}
+});
 
-await browser.close();
+for (const browser of Object.values(browsers)) await browser.close();
 console.log(JSON.stringify(result));

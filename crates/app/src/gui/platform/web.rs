@@ -177,7 +177,11 @@ impl Dialog {
                     let picked = dialog.pick_files().await;
                     let mut files = FileSet::default();
                     for handle in picked.unwrap_or_default() {
-                        files.add(handle.file_name(), handle.read().await);
+                        let file = handle.inner();
+                        match read(file).await {
+                            Ok(bytes) => files.add(file.name(), bytes),
+                            Err(e) => cannot_read(&file.name(), &e),
+                        }
                     }
                     let chosen = files.main().is_some().then_some(Chosen::Files(files));
                     *slot.borrow_mut() = Some(chosen);
@@ -199,15 +203,11 @@ impl Dialog {
         let slot = Rc::clone(&answer);
         wasm_bindgen_futures::spawn_local(async move {
             let mut files = FileSet::default();
-            let mut failed = Vec::new();
             for file in &dropped {
                 match file.bytes_async().await {
                     Ok(bytes) => files.add(file.path(), bytes),
-                    Err(e) => failed.push(format!("{}: {e}", file.path().display())),
+                    Err(e) => cannot_read(&file.path().display().to_string(), &e),
                 }
-            }
-            for line in &failed {
-                crate::platform::print_error(&format!("inertia-lab: cannot read {line}"));
             }
             *slot.borrow_mut() = Some(files.main().is_some().then_some(Chosen::Files(files)));
             wake();
@@ -219,4 +219,18 @@ impl Dialog {
     pub fn poll(&self) -> Option<Option<Chosen>> {
         self.answer.borrow_mut().take()
     }
+}
+
+/// The bytes of a file the user gave the page (the browser reads it; an error is its words).
+async fn read(file: &web_sys::File) -> Result<Vec<u8>, String> {
+    let buffer = wasm_bindgen_futures::JsFuture::from(file.array_buffer())
+        .await
+        .map_err(|e| e.as_string().unwrap_or_else(|| format!("{e:?}")))?;
+    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
+}
+
+/// A file the browser could not read, said in the console (the dialog then answers with the
+/// files it could read, or that none was chosen).
+fn cannot_read(name: &str, error: &str) {
+    crate::platform::print_error(&format!("inertia-lab: cannot read {name}: {error}"));
 }
