@@ -126,14 +126,15 @@ await scenario("default", async () => {
   await page.close();
 });
 
-// 2. A poke: |L| stays while nothing acts (torque-free), and changes with a click on the body.
+// 2. A poke: |L| stays while nothing acts (torque-free; |ω| does not, the book having three
+// different moments), and changes with a click on the body.
 for (const [name, viewport, scale, touch] of [
   ["poke", { width: 1280, height: 800 }, 1, false],
   // A tablet: 1024 × 768 CSS pixels at 2 device pixels each, touch only.
   ["tap", { width: 1024, height: 768, isMobile: true, hasTouch: true }, 2, true],
 ]) {
   await scenario(name, async () => {
-    const page = await open(name, "/?sample=cube", viewport, scale);
+    const page = await open(name, "/?sample=book", viewport, scale);
     await frames(page, 10);
     const before = await figures(page);
     await sleep(500);
