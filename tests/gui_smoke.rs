@@ -7,12 +7,15 @@
 //! them); without Xvfb or `import` it prints a SKIPPED line (a failure under `CI`).
 
 mod common;
+#[path = "common/image.rs"]
+mod image;
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use common::{on_path, skip};
+use image::{Image, body_pixel, green_line};
 
 /// Kills a child process when dropped, so a failing assertion leaves nothing behind.
 struct Guard(Child);
@@ -22,68 +25,6 @@ impl Drop for Guard {
         let _ = self.0.kill();
         let _ = self.0.wait();
     }
-}
-
-/// A binary PPM (P6) screenshot: width, height, RGB bytes.
-struct Image {
-    width: usize,
-    height: usize,
-    rgb: Vec<u8>,
-}
-
-impl Image {
-    fn read(path: &Path) -> Option<Image> {
-        let bytes = std::fs::read(path).ok()?;
-        // Header: "P6", width, height, max value, each separated by whitespace, then one byte.
-        let mut fields = Vec::new();
-        let mut i = 0;
-        while fields.len() < 4 && i < bytes.len() {
-            while i < bytes.len() && bytes[i].is_ascii_whitespace() {
-                i += 1;
-            }
-            let start = i;
-            while i < bytes.len() && !bytes[i].is_ascii_whitespace() {
-                i += 1;
-            }
-            fields.push(String::from_utf8_lossy(&bytes[start..i]).into_owned());
-        }
-        if fields.first().map(String::as_str) != Some("P6") || fields.get(3)? != "255" {
-            return None;
-        }
-        let width = fields[1].parse().ok()?;
-        let height = fields[2].parse().ok()?;
-        let rgb = bytes.get(i + 1..i + 1 + width * height * 3)?.to_vec();
-        Some(Image { width, height, rgb })
-    }
-
-    /// Pixels in the box `[x0, x1) × [y0, y1)` for which `f(r, g, b)` holds.
-    fn count(
-        &self,
-        (x0, x1): (usize, usize),
-        (y0, y1): (usize, usize),
-        f: impl Fn(u8, u8, u8) -> bool,
-    ) -> usize {
-        let mut n = 0;
-        for y in y0..y1.min(self.height) {
-            for x in x0..x1.min(self.width) {
-                let k = 3 * (y * self.width + x);
-                if f(self.rgb[k], self.rgb[k + 1], self.rgb[k + 2]) {
-                    n += 1;
-                }
-            }
-        }
-        n
-    }
-}
-
-/// The shaded body's tan (albedo 200, 160, 90, lit).
-fn body_pixel(r: u8, g: u8, b: u8) -> bool {
-    r > 90 && i32::from(r) > i32::from(g) + 10 && i32::from(g) > i32::from(b) + 20
-}
-
-/// The green of the ω₂ / Ly plot lines (90, 200, 90).
-fn green_line(r: u8, g: u8, b: u8) -> bool {
-    g > 150 && r < 150 && b < 150
 }
 
 /// Starts Xvfb on a display of this test's own (`offset` apart for each test of the process) and
@@ -162,18 +103,8 @@ fn screenshot_writes_the_apps_own_pixels_and_exits() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let decoder = png::Decoder::new(std::io::BufReader::new(
-        std::fs::File::open(&png).expect("the PNG was written"),
-    ));
-    let mut reader = decoder.read_info().expect("a PNG");
-    let mut bytes = vec![0; reader.output_buffer_size().expect("size")];
-    let info = reader.next_frame(&mut bytes).expect("pixels");
-    assert_eq!((info.width, info.height), (1280, 800));
-    let rgba = Image {
-        width: 1280,
-        height: 800,
-        rgb: bytes.chunks(4).flat_map(|p| [p[0], p[1], p[2]]).collect(),
-    };
+    let rgba = Image::read_png(&png);
+    assert_eq!((rgba.width, rgba.height), (1280, 800));
     let body = rgba.count((370, 1280), (30, 580), body_pixel);
     let plot = rgba.count((370, 1280), (630, 800), green_line);
     assert!(body > 2000, "the 3D view shows no body ({body} pixels)");
@@ -243,7 +174,7 @@ fn window_shows_the_body_and_the_plots_and_survives_a_bad_file() {
         if !shot.success() {
             continue;
         }
-        let Some(img) = Image::read(&ppm) else {
+        let Some(img) = Image::read_ppm(&ppm) else {
             continue;
         };
         // Layout at 1280 × 800: side panel up to x ≈ 360, 3D view above y ≈ 590, plots below.
@@ -466,7 +397,7 @@ fn record_writes_every_picture_it_asks_for() {
             .status()
             .expect("run import");
         if shot.success()
-            && Image::read(&ppm)
+            && Image::read_ppm(&ppm)
                 .is_some_and(|img| img.count((370, 1280), (30, 580), body_pixel) > 2000)
         {
             break;
@@ -502,7 +433,7 @@ fn record_writes_every_picture_it_asks_for() {
             .arg(&ppm)
             .status()
             .expect("run import");
-        boxes = Image::read(&ppm)
+        boxes = Image::read_ppm(&ppm)
             .filter(|_| shot.success())
             .map_or_else(Vec::new, |img| plot_bar_boxes(&img));
         let Some(&(bx, by, bw, bh)) = boxes.len().checked_sub(2).and_then(|k| boxes.get(k)) else {

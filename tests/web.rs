@@ -11,6 +11,8 @@
 //! failure under `CI`; `.ci/run` installs them all).
 
 mod common;
+#[path = "common/image.rs"]
+mod image;
 
 use std::io::{BufRead, BufReader, Write};
 use std::net::{TcpListener, TcpStream};
@@ -18,6 +20,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use common::{on_path, root, skip};
+use image::{Image, body_pixel, green_line};
 
 /// The puppeteer-core the driver uses (24: the last line that runs on Node.js 20).
 const PUPPETEER: &str = "puppeteer-core@24.43.1";
@@ -135,16 +138,10 @@ fn web_page_runs_the_lab() {
     let default = &s["default"];
     assert_eq!(default["first"]["title"], "Inertia Lab — T-handle");
     assert!(number(&default["later"]["frames"]) > number(&default["first"]["frames"]) + 10.0);
-    let shot = Screenshot::read(&work.join("page-1280x800.png"));
+    let shot = Image::read_png(&work.join("page-1280x800.png"));
     let [left, top, width, height] = view(&default["later"]["view"]);
-    let body = shot.count((left, left + width), (top, top + height), |r, g, b| {
-        r > 90 && i32::from(r) > i32::from(g) + 10 && i32::from(g) > i32::from(b) + 20
-    });
-    let plot = shot.count(
-        (left, shot.width),
-        (top + height, shot.height),
-        |r, g, b| g > 150 && r < 150 && b < 150,
-    );
+    let body = shot.count((left, left + width), (top, top + height), body_pixel);
+    let plot = shot.count((left, shot.width), (top + height, shot.height), green_line);
     assert!(body > 2000, "the 3D view shows no body ({body} pixels)");
     assert!(plot > 100, "the plots show no lines ({plot} pixels)");
 
@@ -262,50 +259,4 @@ fn answer(mut stream: TcpStream, site: &Path) {
     );
     let _ = stream.write_all(head.as_bytes());
     let _ = stream.write_all(&body);
-}
-
-/// A PNG screenshot as RGB.
-struct Screenshot {
-    width: usize,
-    height: usize,
-    rgb: Vec<u8>,
-}
-
-impl Screenshot {
-    fn read(path: &Path) -> Self {
-        let file = std::fs::File::open(path).expect("the screenshot was written");
-        let mut reader = png::Decoder::new(std::io::BufReader::new(file))
-            .read_info()
-            .expect("a PNG");
-        let mut bytes = vec![0; reader.output_buffer_size().expect("size")];
-        let info = reader.next_frame(&mut bytes).expect("pixels");
-        let channels = info.color_type.samples();
-        Self {
-            width: info.width as usize,
-            height: info.height as usize,
-            rgb: bytes
-                .chunks(channels)
-                .flat_map(|p| [p[0], p[1], p[2]])
-                .collect(),
-        }
-    }
-
-    /// Pixels in `[x0, x1) × [y0, y1)` for which `f(r, g, b)` holds.
-    fn count(
-        &self,
-        (x0, x1): (usize, usize),
-        (y0, y1): (usize, usize),
-        f: impl Fn(u8, u8, u8) -> bool,
-    ) -> usize {
-        let mut n = 0;
-        for y in y0..y1.min(self.height) {
-            for x in x0..x1.min(self.width) {
-                let k = 3 * (y * self.width + x);
-                if f(self.rgb[k], self.rgb[k + 1], self.rgb[k + 2]) {
-                    n += 1;
-                }
-            }
-        }
-        n
-    }
 }
