@@ -860,7 +860,7 @@ fn meshes_given_by_their_bytes_join_a_body_of_parts() {
     assert_eq!(names[2..], ["cube", "torus"]);
     // Water: the unit cube alone adds 1000 kg.
     let after = lab.primary().properties(InertiaSource::Exact).mass;
-    assert!(after > before + 999.0, "{before} → {after}");
+    assert!(after > before + 999.0, "{before} kg, then {after} kg");
     // Saved as a browser saves (a download each), every mesh given by bytes gets its own OBJ.
     let files = lab
         .body_files(std::path::Path::new("hammer-plus.toml"))
