@@ -4,6 +4,8 @@
 #
 #   web/build.sh [OUT]      build into OUT (default target/web)
 #   web/build.sh --check    only check the toolchain (exit 3 and the install line when missing)
+#   web/build.sh --clippy   lint the code the web build compiles (the platform modules' web sides
+#                           are seen by no desktop build), with warnings as errors
 #
 # rustup's toolchains here have no wasm32 standard library; Debian's rustc-web does, and builds
 # one from its source (-Zbuild-std). See shared/notes/web.md.
@@ -16,7 +18,7 @@ STD_SOURCE=/usr/lib/rustlib/src/rust/library
 WASM_LD=/usr/lib/llvm-22/bin/wasm-ld
 # The glue generator must be the version of the wasm-bindgen crate in Cargo.lock.
 BINDGEN_VERSION=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
-INSTALL="apt-get install rustc-web cargo-web rust-web-src lld-22 binaryen && cargo install wasm-bindgen-cli --version =$BINDGEN_VERSION"
+INSTALL="apt-get install rustc-web cargo-web rust-web-src rust-web-clippy lld-22 binaryen && cargo install wasm-bindgen-cli --version =$BINDGEN_VERSION"
 
 missing=()
 { [[ -x $RUSTC_WEB ]] && [[ -x $CARGO_WEB ]]; } || missing+=("Debian's rustc-web and cargo-web")
@@ -34,6 +36,14 @@ if ((${#missing[@]})); then
   exit 3
 fi
 [[ ${1:-} == --check ]] && exit 0
+if [[ ${1:-} == --clippy ]]; then
+  [[ -x /usr/bin/cargo-clippy ]] || { echo "web/build.sh: missing: Debian's rust-web-clippy" >&2; echo "web/build.sh: install with: $INSTALL" >&2; exit 3; }
+  # Debian's cargo-clippy, not rustup's, which comes first on PATH.
+  PATH=/usr/bin:$PATH RUSTC=$RUSTC_WEB RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR=target/wasm-clippy \
+    "$CARGO_WEB" clippy --locked -p inertia-lab-web -p inertia-lab --lib \
+    --target wasm32-unknown-unknown -Zbuild-std=std,panic_abort -- -D warnings
+  exit
+fi
 
 OUT=${1:-target/web}
 # A target folder of its own: another compiler, and Cargo holds the workspace's locked while
