@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds Inertia Lab for the browser: a static folder (index.html, the JS glue, the .wasm) that
-# any static server serves, e.g. `python3 -m http.server -d target/web 8000`.
+# Builds Inertia Lab for the browser: a static folder (index.html, the JS glue, the .wasm, the
+# worker's script) that any static server serves, e.g. `python3 -m http.server -d target/web 8000`.
 #
 #   web/build.sh [OUT]      build into OUT (default target/web)
 #   web/build.sh --check    only check the toolchain (exit 3 and the install line when missing)
@@ -61,6 +61,6 @@ mkdir -p "$OPTIMISED" "$OUT"
 # wasm-bindgen's output relies on (shared/notes/web.md).
 wasm-opt -O2 "$BUILT" -o "$OPTIMISED/inertia_lab_web.wasm"
 wasm-bindgen --target web --no-typescript --out-dir "$OUT" "$OPTIMISED/inertia_lab_web.wasm"
-cp web/index.html "$OUT/index.html"
+cp web/index.html web/worker.js "$OUT/"
 echo "web/build.sh: built $OUT:"
 ls -l "$OUT"

@@ -189,6 +189,30 @@ impl FileSet {
     }
 }
 
+/// A set crosses to the page's worker as its names and bytes (bytes as one block each, not a
+/// number per byte).
+impl serde::Serialize for FileSet {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(
+            self.files
+                .iter()
+                .map(|(name, bytes)| (name, serde_bytes::Bytes::new(bytes))),
+        )
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for FileSet {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let files: Vec<(PathBuf, serde_bytes::ByteBuf)> = serde::Deserialize::deserialize(d)?;
+        Ok(Self {
+            files: files
+                .into_iter()
+                .map(|(name, bytes)| (name, bytes.into_vec().into()))
+                .collect(),
+        })
+    }
+}
+
 /// Makes `source` into a body as `request` says.
 ///
 /// # Errors

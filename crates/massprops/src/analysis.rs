@@ -15,6 +15,7 @@ use crate::{MeshError, PolyMesh};
 
 /// How the mass is distributed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Method {
     /// A solid of uniform density bounded by a closed mesh (Mirtich 1996). Density in kg/m³.
     Volume,
@@ -65,6 +66,7 @@ pub enum MassSpec {
 /// assert!(a.warnings.is_empty() && !a.flipped);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Analysis {
     /// The method of `properties`.
     pub method: Method,
@@ -273,16 +275,16 @@ pub(crate) fn check_range(size: f64, method: Method, spec: MassSpec) -> Result<(
         // A point: the zero-volume and zero-area checks say what is wrong.
         return Ok(());
     }
-    let out_of = |quantity, estimate: f64, (low, high): (f64, f64), advice| {
+    let out_of = |quantity: &'static str, estimate: f64, (low, high): (f64, f64), advice: &'static str| {
         if (low..=high).contains(&estimate) {
             Ok(())
         } else {
             Err(MeshError::OutOfRange {
-                quantity,
+                quantity: std::borrow::Cow::Borrowed(quantity),
                 estimate,
                 low,
                 high,
-                advice,
+                advice: std::borrow::Cow::Borrowed(advice),
             })
         }
     };

@@ -43,6 +43,7 @@ pub enum Fill {
 
 /// How a part's mass is given, as a body file (and the app) writes it.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum MaterialEntry {
     /// `density = ρ` (kg/m³ with metres).
     Density(f64),
@@ -297,6 +298,7 @@ pub fn combine(parts: &[PartMass]) -> Result<(MassProperties, Vec<Vector3<f64>>)
 /// again. The result is bit for bit what [`analyze_with`] gives for that fill's method and
 /// density.
 #[derive(Debug, Clone)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct IntegratedPart {
     /// The solid at density 1 (volume method), or why it has none.
     solid: Result<Analysis, MeshError>,

@@ -21,6 +21,7 @@ pub const EXAMPLES: usize = 5;
 
 /// What the mesh is made of and what is wrong with it.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeshDiagnostics {
     /// Vertex positions (after welding identical ones).
     pub vertices: usize,

@@ -1,11 +1,13 @@
 //! The one error type of the crate: every way a mesh or a file can be unusable.
 
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 /// Why a mesh, a file or a parameter cannot give mass properties.
 ///
 /// Variants name the problem and where it is (file, line, face, vertex) so a user can fix it.
 #[derive(Debug, Clone, thiserror::Error)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum MeshError {
     /// The mesh has no faces (or no vertices).
     #[error("the mesh is empty: it has no faces")]
@@ -43,7 +45,7 @@ pub enum MeshError {
     #[error("the mesh has {count} {what}; at most 4294967295 are supported")]
     TooLarge {
         /// What overflowed ("vertices", "corners").
-        what: &'static str,
+        what: Cow<'static, str>,
         /// How many there are.
         count: usize,
     },
@@ -64,7 +66,7 @@ pub enum MeshError {
     #[error("invalid {name}: {value} (it must be a finite number greater than zero)")]
     InvalidParameter {
         /// Parameter name.
-        name: &'static str,
+        name: Cow<'static, str>,
         /// The value given.
         value: f64,
     },
@@ -76,7 +78,7 @@ pub enum MeshError {
     )]
     OutOfRange {
         /// "size" (the bounding box's longest side), "mass" or "inertia".
-        quantity: &'static str,
+        quantity: Cow<'static, str>,
         /// Its order of magnitude.
         estimate: f64,
         /// The least accepted.
@@ -84,7 +86,7 @@ pub enum MeshError {
         /// The greatest accepted.
         high: f64,
         /// What would bring it into range.
-        advice: &'static str,
+        advice: Cow<'static, str>,
     },
     /// The mesh has holes and capping them was refused ([`Holes::Refuse`](crate::defects::Holes)).
     #[error(
@@ -163,6 +165,7 @@ pub enum MeshError {
         /// The file.
         path: PathBuf,
         /// What the operating system said (shared, so that an error can be kept and cloned).
+        #[cfg_attr(feature = "serde", serde(with = "io_words"))]
         source: std::sync::Arc<std::io::Error>,
     },
     /// The file extension is not one we can load.
@@ -227,4 +230,20 @@ fn examples(faces: &[usize]) -> String {
     }
     let list: Vec<String> = faces.iter().map(usize::to_string).collect();
     format!(", around faces {} (counting from 0)", list.join(", "))
+}
+
+/// An I/O error as its words on the wire (`io::Error` is not data): what a page's worker read
+/// wrongly reaches the page as the system said it.
+#[cfg(feature = "serde")]
+mod io_words {
+    use std::sync::Arc;
+
+    pub fn serialize<S: serde::Serializer>(e: &Arc<std::io::Error>, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&e.to_string())
+    }
+
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Arc<std::io::Error>, D::Error> {
+        let words: String = serde::Deserialize::deserialize(d)?;
+        Ok(Arc::new(std::io::Error::other(words)))
+    }
 }

@@ -42,6 +42,7 @@ use crate::MeshError;
 /// assert!((mass_properties(&mesh.flipped(), 1.0).unwrap().mass - 1.0 / 6.0).abs() < 1e-15);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PolyMesh {
     positions: Vec<Point3<f64>>,
     indices: Vec<u32>,
@@ -90,13 +91,13 @@ impl PolyMesh {
         }
         if positions.len() > u32::MAX as usize {
             return Err(MeshError::TooLarge {
-                what: "vertices",
+                what: "vertices".into(),
                 count: positions.len(),
             });
         }
         if indices.len() >= u32::MAX as usize {
             return Err(MeshError::TooLarge {
-                what: "corners",
+                what: "corners".into(),
                 count: indices.len(),
             });
         }

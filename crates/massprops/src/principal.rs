@@ -15,6 +15,7 @@ pub const DEGENERACY_TOLERANCE: f64 = 1e-10;
 
 /// Which principal moments coincide (within [`DEGENERACY_TOLERANCE`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Degeneracy {
     /// Three distinct moments: the axes are unique up to sign.
     Distinct,
@@ -40,6 +41,7 @@ impl Degeneracy {
 
 /// Principal moments (ascending) and axes of an inertia tensor.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrincipalInertia {
     /// I₁ ≤ I₂ ≤ I₃.
     pub moments: Vector3<f64>,

@@ -32,6 +32,7 @@ use crate::principal::{Degeneracy, PrincipalInertia, principal_inertia};
 /// assert!((big.inertia_com - expected * 32.0).amax() < 1e-9);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MassProperties {
     /// Mass (kg when lengths are metres and density is kg/m³).
     pub mass: f64,
@@ -152,7 +153,10 @@ pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64, MeshError>
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(MeshError::InvalidParameter { name, value })
+        Err(MeshError::InvalidParameter {
+            name: name.into(),
+            value,
+        })
     }
 }
 

@@ -5,6 +5,7 @@
 /// Something about the mesh that the numbers of an [`Analysis`](crate::Analysis) depend on, or that was repaired
 /// to get them: what ([`Defect`]), how many, where, and how much it changes the mass.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Warning {
     /// What kind of defect, with its own data.
     pub defect: Defect,
@@ -35,6 +36,7 @@ impl Warning {
 /// with a wildcard arm.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Defect {
     /// The same vertex cycle more than once with the same winding: counted once.
     DuplicateFaces,

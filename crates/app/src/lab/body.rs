@@ -21,7 +21,7 @@ use super::samples::{SAMPLE_BODIES, SAMPLE_PART_MESHES, SAMPLES};
 use crate::input::Request;
 
 /// A body made of parts, as loaded: the parts and what they make together.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub struct Composition {
     /// The parts, in order.
     pub parts: Vec<PartModel>,
@@ -62,7 +62,7 @@ impl Composition {
 
 /// A mesh ready for the lab: its triangles, picking index and mass properties at unit density
 /// and scale (the model rescales them live).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub struct LoadedBody {
     /// Shown in the side panel and the messages (the file name, or the sample's label).
     pub name: String,
@@ -99,7 +99,7 @@ pub struct LoadedBody {
 
 /// One link of a robot drawn whole: its name, and its stated and computed inertia placed in the
 /// robot's frame.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct LinkMark {
     /// The link's name.
     pub name: String,

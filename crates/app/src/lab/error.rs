@@ -148,6 +148,9 @@ pub enum LabError {
     /// The loader thread ended without a result.
     #[error("{}: the loader stopped unexpectedly", .0.display())]
     LoaderStopped(PathBuf),
+    /// What went wrong in work done elsewhere (the page's worker), in that place's words.
+    #[error("{0}")]
+    Relayed(String),
 }
 
 impl LabError {

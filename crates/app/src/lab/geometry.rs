@@ -6,7 +6,7 @@ use massprops::PolyMesh;
 use nalgebra::{Point3, Vector3};
 
 /// Triangles and polygon edges of a mesh, in the mesh's own coordinates.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct TriMesh {
     /// Vertex positions (as in the source mesh).
     pub positions: Vec<Point3<f64>>,
@@ -86,7 +86,7 @@ pub const DRAW_BUDGET: usize = 1_000_000;
 /// Rossignac and P. Borrel, "Multi-resolution 3D approximations for rendering complex scenes",
 /// 1993): each cell's vertices become one at their mean, and triangles whose corners fall in
 /// fewer than three cells vanish.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Drawn {
     /// The simplified triangles (no edges).
     pub mesh: TriMesh,

@@ -1,6 +1,7 @@
 //! Loading a body off the UI thread: read (with progress), parse, mass properties and the picking
-//! index run on a worker thread that reports through a channel, so a large mesh never freezes the
-//! UI.
+//! index run away from the UI and report through a channel, so a large mesh never freezes the
+//! UI. A file by its path loads on a thread; files given by their bytes (the browser's) load as
+//! the [`LoadFiles`] job: on a thread on the desktop, in the page's worker in a browser.
 
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
@@ -10,15 +11,69 @@ use super::error::LabError;
 use super::parts::from_resolved;
 use super::robot::{self, RobotModel};
 use crate::input::{self, FileSet, Request, Resolved, Source};
-use crate::platform;
+use crate::platform::{self, Job, JobEvent};
+
+/// Where a load is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Stage {
+    /// Not begun (the page's worker may still be starting).
+    Starting,
+    /// Reading the file (its fraction is measured).
+    Reading,
+    /// Parsing, checking the mesh and integrating it.
+    Checking,
+    /// Building the picking index and what the view draws.
+    PickingIndex,
+    /// Reading and auditing a robot description.
+    Robot,
+}
+
+impl std::fmt::Display for Stage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Stage::Starting => "starting",
+            Stage::Reading => "reading",
+            Stage::Checking => "checking the mesh and its mass properties",
+            Stage::PickingIndex => "picking index",
+            Stage::Robot => "reading and auditing the robot",
+        })
+    }
+}
 
 /// What the worker reports.
 #[derive(Debug)]
 pub enum LoadEvent {
-    /// A stage name and its completed fraction (0 to 1), when the stage can measure one.
-    Progress(&'static str, Option<f32>),
+    /// A stage and its completed fraction (0 to 1), when the stage can measure one.
+    Progress(Stage, Option<f32>),
     /// The result; the worker then exits.
     Done(Box<Result<Loaded, LabError>>),
+}
+
+/// Loading files given by their bytes: the body file among them with its meshes, else the
+/// first mesh. A robot description is refused: its meshes are named by paths a set of files
+/// cannot resolve. Its error crosses as its words (the page shows nothing else of it).
+#[derive(Debug)]
+pub struct LoadFiles;
+
+impl Job for LoadFiles {
+    const NAME: &'static str = "load files";
+    type Input = FileSet;
+    type Progress = (Stage, Option<f32>);
+    type Output = Result<LoadedBody, String>;
+
+    fn run(files: FileSet, progress: &dyn Fn((Stage, Option<f32>))) -> Self::Output {
+        let path = files.main().map(Path::to_path_buf).unwrap_or_default();
+        if robot::is_description(&path) {
+            return Err(LabError::RobotFromFiles(path).to_string());
+        }
+        progress((Stage::Checking, None));
+        let send = |e: LoadEvent| {
+            if let LoadEvent::Progress(stage, f) = e {
+                progress((stage, f));
+            }
+        };
+        load(&path, Source::Set(&files, &path), &send).map_err(|e| e.to_string())
+    }
 }
 
 /// What a file loads as.
@@ -36,7 +91,7 @@ pub struct Loading {
     /// What is being loaded.
     pub path: PathBuf,
     /// Latest progress report.
-    pub stage: &'static str,
+    pub stage: Stage,
     /// Fraction of the stage done.
     pub fraction: Option<f32>,
     events: Receiver<LoadEvent>,
@@ -49,7 +104,7 @@ impl Loading {
         let p = path.clone();
         Self::spawn(path, wake, move |send| {
             if robot::is_description(&p) {
-                send(LoadEvent::Progress("reading and auditing the robot", None));
+                send(LoadEvent::Progress(Stage::Robot, None));
                 robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
             } else {
                 let report = |f: f32| reading(send, f);
@@ -58,22 +113,28 @@ impl Loading {
         })
     }
 
-    /// Starts loading files given by their bytes (the browser's): the body file among them with
-    /// its meshes, else the first mesh. A robot description is refused: its meshes are named
-    /// by paths a set of files cannot resolve.
+    /// Starts loading files given by their bytes (the browser's) as the [`LoadFiles`] job.
     pub fn start_files(files: FileSet, wake: impl Fn() + Send + 'static) -> Self {
         let path = files.main().map(Path::to_path_buf).unwrap_or_default();
-        let p = path.clone();
-        Self::spawn(path, wake, move |send| {
-            if robot::is_description(&p) {
-                return Err(LabError::RobotFromFiles(p));
-            }
-            send(LoadEvent::Progress(
-                "checking the mesh and its mass properties",
-                None,
-            ));
-            load(&p, Source::Set(&files, &p), send).map(Loaded::Body)
-        })
+        let (tx, rx): (Sender<LoadEvent>, _) = channel();
+        platform::start_job::<LoadFiles>(files, move |event| {
+            let event = match event {
+                JobEvent::Progress((stage, f)) => LoadEvent::Progress(stage, f),
+                JobEvent::Done(result) => LoadEvent::Done(Box::new(
+                    result.map(Loaded::Body).map_err(LabError::Relayed),
+                )),
+                JobEvent::Lost(words) => LoadEvent::Done(Box::new(Err(LabError::Relayed(words)))),
+            };
+            // The receiver is gone only if the app closed or started another load.
+            let _ = tx.send(event);
+            wake();
+        });
+        Self {
+            path,
+            stage: Stage::Starting,
+            fraction: None,
+            events: rx,
+        }
     }
 
     /// Runs `job` off the UI thread (the platform's way), reporting through the channel.
@@ -94,7 +155,7 @@ impl Loading {
         });
         Self {
             path,
-            stage: "starting",
+            stage: Stage::Starting,
             fraction: None,
             events: rx,
         }
@@ -122,9 +183,9 @@ impl Loading {
 /// The reading stage's report: its fraction, then the analysis that follows it.
 fn reading(send: &dyn Fn(LoadEvent), f: f32) {
     send(if f < 1.0 {
-        LoadEvent::Progress("reading", Some(f))
+        LoadEvent::Progress(Stage::Reading, Some(f))
     } else {
-        LoadEvent::Progress("checking the mesh and its mass properties", None)
+        LoadEvent::Progress(Stage::Checking, None)
     });
 }
 
@@ -137,7 +198,7 @@ fn load(path: &Path, source: Source<'_>, send: &dyn Fn(LoadEvent)) -> Result<Loa
     // The one input path every command takes, at density 1 with the default repairs (the lab
     // rescales mass and size live); a file on disk is read in blocks, never whole.
     let resolved = input::resolve(source, &Request::default())?;
-    send(LoadEvent::Progress("picking index", None));
+    send(LoadEvent::Progress(Stage::PickingIndex, None));
     match resolved {
         Resolved::Mesh { file, analysis } => Ok(LoadedBody::analysed(
             &name,
@@ -186,23 +247,80 @@ mod tests {
         let events = events.into_inner();
         let reading: Vec<f32> = events
             .iter()
-            .filter(|(stage, _)| *stage == "reading")
+            .filter(|(stage, _)| *stage == Stage::Reading)
             .filter_map(|(_, f)| *f)
             .collect();
         assert!(reading.len() >= 3, "{events:?}");
         assert!(reading.windows(2).all(|w| w[0] < w[1]), "{reading:?}");
         assert!(reading.iter().all(|f| (0.0..1.0).contains(f)));
-        let after: Vec<_> = events.iter().skip_while(|(s, _)| *s == "reading").collect();
+        let after: Vec<_> = events
+            .iter()
+            .skip_while(|(s, _)| *s == Stage::Reading)
+            .collect();
         assert_eq!(
             after,
-            [
-                &("checking the mesh and its mass properties", None),
-                &("picking index", None)
-            ]
+            [&(Stage::Checking, None), &(Stage::PickingIndex, None)]
         );
         // 2π²Rr² to the polygon's accuracy.
         let exact = 2.0 * std::f64::consts::PI.powi(2) * 0.3 * 0.3;
         assert!((body.analysis.properties.mass / exact - 1.0).abs() < 1e-3);
+    }
+
+    /// Files loaded as the page's worker loads them (the job's input, reports and output
+    /// crossing as bytes) give the body that a load on a thread gives: the same mass
+    /// properties, mesh, picking index and warnings; a file that gives no body gives its words.
+    #[test]
+    fn files_loaded_through_the_wire_are_the_body_loaded_here() {
+        let served = |files: &FileSet| {
+            let posted = std::cell::RefCell::new(Vec::new());
+            let input = platform::encode(files).expect("encodes");
+            platform::serve::<LoadFiles>(&input, &|done, bytes| {
+                posted.borrow_mut().push(platform::event_of::<LoadFiles>(done, &bytes));
+            })
+            .expect("served");
+            posted.into_inner()
+        };
+        let mut files = FileSet::default();
+        let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+        for name in ["hammer.toml", "hammer.obj"] {
+            files.add(name, std::fs::read(assets.join(name)).expect("asset"));
+        }
+        let events = served(&files);
+        let stages: Vec<Stage> = events
+            .iter()
+            .filter_map(|e| match e {
+                JobEvent::Progress((stage, _)) => Some(*stage),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(stages, [Stage::Checking, Stage::PickingIndex]);
+        let Some(JobEvent::Done(Ok(body))) = events.last() else {
+            panic!("{:?}", events.last());
+        };
+        let here = LoadFiles::run(files.clone(), &|_| {}).expect("loads here");
+        assert_eq!(body.analysis, here.analysis);
+        assert_eq!(*body.mesh, *here.mesh);
+        let (whole, whole_here) = (
+            &body.composition.as_ref().expect("parts").whole,
+            &here.composition.as_ref().expect("parts").whole,
+        );
+        assert_eq!(whole, whole_here);
+        assert!(whole.mass > 0.0);
+        let ray = |b: &LoadedBody| {
+            let centre = b.sphere.0;
+            let from = centre + nalgebra::Vector3::new(0.0, 0.0, 10.0 * b.sphere.1);
+            let dir = -nalgebra::Vector3::z();
+            let hit = b.bvh.pick(&b.mesh, &crate::lab::picking::Ray { origin: from, dir });
+            hit.map(|h| (h.triangle, h.t))
+        };
+        assert_eq!(ray(body), ray(&here));
+
+        let mut broken = FileSet::default();
+        broken.add("broken.obj", &b"v 0 0 0\nf 1 2 3\n"[..]);
+        match served(&broken).last() {
+            Some(JobEvent::Done(Err(words))) => assert!(words.contains("broken.obj"), "{words}"),
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]

@@ -17,7 +17,7 @@ use super::error::LabError;
 use crate::input::{self, FileSet, Request, Resolved, Source};
 
 /// One part: what the user set, and what was integrated once.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub struct PartModel {
     /// Name, mesh file, object, material, void, thin wall, placement (metres).
     pub entry: PartEntry,

@@ -50,7 +50,7 @@ pub struct Hit {
 /// Triangles per leaf: small leaves keep queries short, the node count stays ≈ 2n/4.
 const LEAF_SIZE: usize = 4;
 
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, serde::Serialize, serde::Deserialize)]
 struct Node {
     lo: Vector3<f64>,
     hi: Vector3<f64>,
@@ -62,7 +62,7 @@ struct Node {
 
 /// A bounding-volume hierarchy over a [`TriMesh`]'s triangles (median split on the longest axis
 /// of the centroid bounds).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub struct Bvh {
     nodes: Vec<Node>,
     order: Vec<u32>,

@@ -1,5 +1,5 @@
 //! What differs between the desktop and the browser below the GUI, in one place: the clock,
-//! work off the UI thread, files written (a browser downloads them), lines printed (a browser's
+//! work off the UI thread (a [`Job`]: a thread, or the page's worker), files written (a browser downloads them), lines printed (a browser's
 //! console), and what the system tells about the process (its memory). One side is compiled:
 //! `native.rs` (threads, the file system, Linux's `/proc`) or `web.rs` (wasm32: one thread,
 //! downloads, no process figures). The GUI's own differences (starting the app, files coming
@@ -9,7 +9,10 @@
 #[cfg_attr(not(target_arch = "wasm32"), path = "native.rs")]
 mod side;
 
-pub use side::{memory, print, print_error, run_spawned, spawn, write_file};
+mod job;
+
+pub use job::{Job, JobEvent, decode, encode, event_of, serve};
+pub use side::{memory, print, print_error, run_spawned, spawn, start_job, write_file};
 /// The clock: std's on the desktop, the browser's `performance.now()` on the web, where
 /// `std::time::Instant::now` panics (wasm32-unknown-unknown has no clock of its own).
 pub use web_time::{Instant, SystemTime, UNIX_EPOCH};

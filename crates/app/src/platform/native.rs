@@ -1,11 +1,20 @@
-//! The desktop's side of [`platform`](super): work runs on threads of its own, and the process's
+//! The desktop's side of [`platform`](super): work and jobs run on threads of their own, and the process's
 //! memory is read from Linux's `/proc/self/status` (`None` elsewhere; the benchmarks print it).
 
-use super::Memory;
+use super::{Job, JobEvent, Memory};
 
 /// Runs `job` on a thread of its own (a load, while the UI goes on drawing).
 pub fn spawn(job: impl FnOnce() + Send + 'static) {
     std::thread::spawn(job);
+}
+
+/// Runs job `J` on a thread of its own, telling `on_event` its progress and then its output
+/// (as they are: nothing crosses as bytes on the desktop).
+pub fn start_job<J: Job>(input: J::Input, on_event: impl Fn(JobEvent<J>) + Send + 'static) {
+    std::thread::spawn(move || {
+        let output = J::run(input, &|p| on_event(JobEvent::Progress(p)));
+        on_event(JobEvent::Done(output));
+    });
 }
 
 /// Nothing to do on the desktop: [`spawn`]ed work runs by itself. (The web runs it here.)

@@ -1,21 +1,28 @@
-//! The browser's side of [`platform`](super) (wasm32-unknown-unknown): there is one thread, so
-//! [`spawn`]ed work waits in a queue that [`run_spawned`] empties between frames; a file written
+//! The browser's side of [`platform`](super) (wasm32-unknown-unknown): the page has one thread,
+//! so a [`Job`] runs in the page's worker (`web/worker.js`: the same wasm module loaded on
+//! another thread of the browser's), started on the first job and kept; [`spawn`]ed work (what
+//! is not a job) waits in a queue that [`run_spawned`] empties between frames; a file written
 //! is a download named after it; lines go to the browser's console; and the page has no figures
 //! of its process's memory.
 
 use std::cell::RefCell;
-use std::collections::VecDeque;
+use std::collections::{HashMap, VecDeque};
 use std::path::Path;
+use std::rc::Rc;
 
 use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::{Closure, JsValue};
 
-use super::Memory;
+use super::{Job, JobEvent, Memory, encode, event_of};
 
-type Job = Box<dyn FnOnce()>;
+/// The worker's script, beside the page (web/build.sh puts it there).
+const WORKER_SCRIPT: &str = "./worker.js";
+
+type Queued = Box<dyn FnOnce()>;
 
 thread_local! {
     /// Jobs queued since the last [`run_spawned`], and those it will run next time.
-    static JOBS: RefCell<(VecDeque<Job>, VecDeque<Job>)> = RefCell::default();
+    static JOBS: RefCell<(VecDeque<Queued>, VecDeque<Queued>)> = RefCell::default();
 }
 
 /// Queues `job` for the call of [`run_spawned`] after next: the frame that says "loading" is
@@ -35,6 +42,144 @@ pub fn run_spawned() {
     // Outside the borrow: a job may queue another.
     for job in ready {
         job();
+    }
+}
+
+/// What the worker said of a job: a report or the output (`done`), as bytes; or that it failed.
+enum Reply {
+    Posted { done: bool, bytes: Vec<u8> },
+    Failed(String),
+}
+
+/// The page's worker and the jobs sent to it that have not ended.
+struct PageWorker {
+    worker: web_sys::Worker,
+    waiting: HashMap<u32, Rc<dyn Fn(Reply)>>,
+    next_id: u32,
+    /// Set when the worker failed: the next job starts a new one (a job that failed may have
+    /// left the module's memory as it was mid-way).
+    broken: bool,
+    _on_message: Closure<dyn FnMut(web_sys::MessageEvent)>,
+    _on_error: Closure<dyn FnMut(web_sys::ErrorEvent)>,
+}
+
+thread_local! {
+    static WORKER: RefCell<Option<PageWorker>> = const { RefCell::new(None) };
+}
+
+/// Sends job `J` to the page's worker; `on_event` hears its reports and its output when the
+/// worker posts them (between the page's frames: the page goes on drawing meanwhile).
+pub fn start_job<J: Job>(input: J::Input, on_event: impl Fn(JobEvent<J>) + Send + 'static) {
+    let on_event = Rc::new(on_event);
+    let hear = {
+        let on_event = on_event.clone();
+        move |reply: Reply| {
+            on_event(match reply {
+                Reply::Posted { done, bytes } => event_of::<J>(done, &bytes),
+                Reply::Failed(words) => JobEvent::Lost(words),
+            })
+        }
+    };
+    let sent = encode(&input).and_then(|bytes| send(J::NAME, &bytes, Rc::new(hear)));
+    if let Err(words) = sent {
+        on_event(JobEvent::Lost(format!("{}: {words}", J::NAME)));
+    }
+}
+
+/// Posts `input` for the job `name` to the worker (started if there is none, or a new one if it
+/// failed), with `hear` waiting for its replies.
+fn send(name: &str, input: &[u8], hear: Rc<dyn Fn(Reply)>) -> Result<(), String> {
+    let words = |e: JsValue| e.as_string().unwrap_or_else(|| format!("{e:?}"));
+    WORKER.with_borrow_mut(|slot| {
+        if slot.as_ref().is_none_or(|w| w.broken) {
+            if let Some(old) = slot.take() {
+                old.worker.terminate();
+            }
+            *slot = Some(start_worker().map_err(words)?);
+        }
+        let page_worker = slot.as_mut().expect("started above");
+        let id = page_worker.next_id;
+        page_worker.next_id += 1;
+        let bytes = js_sys::Uint8Array::from(input);
+        let message = js_sys::Object::new();
+        for (key, value) in [
+            ("id", JsValue::from(id)),
+            ("name", JsValue::from(name)),
+            ("input", bytes.clone().into()),
+        ] {
+            js_sys::Reflect::set(&message, &key.into(), &value).map_err(words)?;
+        }
+        let transfer = js_sys::Array::of1(&bytes.buffer());
+        page_worker
+            .worker
+            .post_message_with_transfer(&message, &transfer)
+            .map_err(words)?;
+        page_worker.waiting.insert(id, hear);
+        Ok(())
+    })
+}
+
+fn start_worker() -> Result<PageWorker, JsValue> {
+    let options = web_sys::WorkerOptions::new();
+    options.set_type(web_sys::WorkerType::Module);
+    let worker = web_sys::Worker::new_with_options(WORKER_SCRIPT, &options)?;
+    let on_message = Closure::<dyn FnMut(web_sys::MessageEvent)>::new(|e: web_sys::MessageEvent| {
+        let data = e.data();
+        let field = |key: &str| js_sys::Reflect::get(&data, &key.into()).unwrap_or_default();
+        let Some(id) = field("id").as_f64() else {
+            return;
+        };
+        let reply = match field("kind").as_string().as_deref() {
+            Some("failed") => Reply::Failed(field("message").as_string().unwrap_or_default()),
+            kind => Reply::Posted {
+                done: kind == Some("done"),
+                bytes: js_sys::Uint8Array::new(&field("bytes")).to_vec(),
+            },
+        };
+        hear(id as u32, reply);
+    });
+    let on_error = Closure::<dyn FnMut(web_sys::ErrorEvent)>::new(|e: web_sys::ErrorEvent| {
+        let words = format!("the page's worker stopped: {}", e.message());
+        super::print_error(&words);
+        let waiting = WORKER.with_borrow_mut(|slot| {
+            slot.as_mut().map_or_else(HashMap::new, |w| {
+                w.broken = true;
+                std::mem::take(&mut w.waiting)
+            })
+        });
+        for hear in waiting.into_values() {
+            hear(Reply::Failed(words.clone()));
+        }
+    });
+    worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
+    worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
+    Ok(PageWorker {
+        worker,
+        waiting: HashMap::new(),
+        next_id: 0,
+        broken: false,
+        _on_message: on_message,
+        _on_error: on_error,
+    })
+}
+
+/// Hands `reply` to the job `id` waits with (outside the worker's borrow: hearing may start
+/// another job); a job that ended stops waiting, and one that failed leaves the worker broken.
+fn hear(id: u32, reply: Reply) {
+    let ended = !matches!(reply, Reply::Posted { done: false, .. });
+    let hear = WORKER.with_borrow_mut(|slot| {
+        let w = slot.as_mut()?;
+        if matches!(reply, Reply::Failed(_)) {
+            w.broken = true;
+        }
+        if ended {
+            w.waiting.remove(&id)
+        } else {
+            w.waiting.get(&id).cloned()
+        }
+    });
+    if let Some(hear) = hear {
+        hear(reply);
     }
 }
 

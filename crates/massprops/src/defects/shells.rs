@@ -18,6 +18,7 @@ use crate::solid::ZERO_VOLUME_RATIO;
 
 /// Whether a closed shell's faces point away from what it encloses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Orientation {
     /// Counter-clockwise seen from outside: positive signed volume.
     Outward,
@@ -27,6 +28,7 @@ pub enum Orientation {
 
 /// One connected piece of the mesh, as found in the file.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Shell {
     /// Faces of the file in this shell (duplicates removed, caps not counted).
     pub faces: usize,

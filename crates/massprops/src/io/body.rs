@@ -45,6 +45,7 @@ pub struct BodyFile {
 
 /// One `[[part]]` of a body file.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PartEntry {
     /// Its name.
     pub name: String,

@@ -22,6 +22,7 @@ use crate::{Analysis, MassSpec, MeshError, Method, PolyMesh, Repairs, Warning, a
 
 /// A mesh read from a file, with what a report needs to name its faces.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct MeshFile {
     /// The mesh, positions welded where identical.
     pub mesh: PolyMesh,

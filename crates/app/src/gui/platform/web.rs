@@ -42,6 +42,11 @@ pub fn start() {
         crate::platform::print_error(&format!("inertia-lab panicked: {info}"));
         show_error(&format!("Inertia Lab stopped: {info}"));
     }));
+    // The same module runs in the page's worker, which has no page to start on: it only runs
+    // the jobs the page sends it (platform/web.rs).
+    if web_sys::window().is_none() {
+        return;
+    }
     wasm_bindgen_futures::spawn_local(async {
         if let Err(e) = run().await {
             let text = e.as_string().unwrap_or_else(|| format!("{e:?}"));
