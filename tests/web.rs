@@ -5,7 +5,8 @@
 //! as `target/web-test/page-*.png` for a person to look at); keeps |L| while nothing acts and
 //! changes it with a click or a tap on the body; opens the scene a link names; loads a mesh
 //! through the file picker and a body file with its meshes dropped on the page, each with the
-//! mass `props` computes for the same files; and names the body in the page's title.
+//! mass `props` computes for the same files; loads a big mesh in the page's worker while the page
+//! goes on drawing; and names the body in the page's title.
 //!
 //! Without Chromium, Node.js, the web toolchain or the npm registry it prints a SKIPPED line (a
 //! failure under `CI`; `.ci/run` installs them all).
@@ -121,11 +122,6 @@ fn web_page_runs_the_lab() {
     let seen: serde_json::Value =
         serde_json::from_slice(&driven.stdout).expect("the driver prints JSON");
     let s = &seen["scenarios"];
-    let number = |v: &serde_json::Value| -> f64 {
-        v.as_str()
-            .and_then(|t| t.parse().ok())
-            .unwrap_or_else(|| panic!("a number, got {v}"))
-    };
 
     assert_eq!(
         seen["failures"],
@@ -180,6 +176,44 @@ fn web_page_runs_the_lab() {
             "{name}: the page shows {shown} kg, props {props} kg"
         );
     }
+    check_busy_page(&s["busy"]);
+}
+
+/// A big mesh loads in the page's worker: the page draws on through the load (its longest
+/// freeze is under half the load's time; a load on the page's own thread freezes it for all of
+/// it), says its stage, and then shows the volume the divergence theorem gives the same file.
+fn check_busy_page(busy: &serde_json::Value) {
+    let load = busy["load_ms"].as_f64().expect("load_ms");
+    let frozen = busy["longest_freeze_ms"]
+        .as_f64()
+        .expect("longest_freeze_ms");
+    let frames = busy["frames_while_loading"].as_f64().expect("frames");
+    assert!(
+        frames >= 3.0 && frozen < 0.5 * load,
+        "the page drew {frames} frames in a load of {load} ms, frozen for {frozen} ms at most"
+    );
+    let stages = busy["stages"].as_array().expect("stages");
+    assert!(
+        stages
+            .iter()
+            .any(|s| s == "checking the mesh and its mass properties"),
+        "stages seen: {stages:?}"
+    );
+    let (shown, exact) = (
+        number(&busy["shown"]["volume"]),
+        busy["volume"].as_f64().expect("volume"),
+    );
+    assert!(
+        (shown - exact).abs() <= 1e-9 * exact,
+        "sphere.stl: the page shows a volume of {shown}, the file encloses {exact}"
+    );
+}
+
+/// A figure the page published (a number in a data-* attribute).
+fn number(v: &serde_json::Value) -> f64 {
+    v.as_str()
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("a number, got {v}"))
 }
 
 /// The 3D view's rectangle in CSS pixels, as the page publishes it.

@@ -203,7 +203,77 @@ await scenario("drop", async () => {
   await page.close();
 });
 
-// 6. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
+// 6. A big mesh dropped (a UV sphere of 2 × 600 × 300 triangles, binary STL made in the page):
+// the page keeps drawing while it loads, says the stage, and then shows the mesh's volume. The
+// frame counter is read every 25 ms from here (a page busy with the load answers only when it is
+// done): the longest time it stood still is how long the page was frozen.
+await scenario("busy", async () => {
+  const page = await open("busy", "/");
+  const volume = await page.evaluate(() => {
+    const [segments, rings] = [600, 300];
+    const point = (i, j) => {
+      const [theta, phi] = [(Math.PI * i) / rings, (2 * Math.PI * j) / segments];
+      return [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)].map(Math.fround);
+    };
+    const triangles = [];
+    for (let i = 0; i < rings; i++) {
+      for (let j = 0; j < segments; j++) {
+        const [a, b, c, d] = [point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)];
+        if (i > 0) triangles.push([a, b, d]);
+        if (i < rings - 1) triangles.push([b, c, d]);
+      }
+    }
+    const bytes = new ArrayBuffer(84 + 50 * triangles.length);
+    const view = new DataView(bytes);
+    view.setUint32(80, triangles.length, true);
+    // The enclosed volume by the divergence theorem, in f64 over the file's f32 corners.
+    let sixfold = 0;
+    triangles.forEach((t, k) => {
+      t.flat().forEach((x, n) => view.setFloat32(84 + 50 * k + 12 + 4 * n, x, true));
+      const [[ax, ay, az], [bx, by, bz], [cx, cy, cz]] = t;
+      sixfold += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+    });
+    const dataTransfer = new DataTransfer();
+    dataTransfer.items.add(new File([bytes], "sphere.stl"));
+    const canvas = document.getElementById("inertia-lab");
+    for (const type of ["dragenter", "dragover", "drop"]) {
+      canvas.dispatchEvent(new DragEvent(type, { dataTransfer, bubbles: true, cancelable: true }));
+    }
+    return sixfold / 6;
+  });
+  const start = Date.now();
+  const samples = [];
+  for (;;) {
+    const f = await figures(page);
+    samples.push({ ms: Date.now() - start, frames: Number(f.frames), stage: f.stage, loading: f.loading });
+    if (f.loading === "false" && f.title === "Inertia Lab — sphere.stl") break;
+    if (Date.now() - start > TIMEOUT) throw new Error("sphere.stl did not load");
+    await sleep(25);
+  }
+  const during = samples.filter((s) => s.loading === "true");
+  // The longest time between two answers that saw the counter move (a page busy with the load
+  // answers late, or with the counter where it was).
+  let frozen = 0;
+  let moved = samples[0];
+  for (const [k, s] of samples.entries()) {
+    if (k > 0 && s.frames !== samples[k - 1].frames) {
+      frozen = Math.max(frozen, s.ms - moved.ms);
+      moved = s;
+    }
+  }
+  frozen = Math.max(frozen, samples.at(-1).ms - moved.ms);
+  result.scenarios.busy = {
+    volume,
+    shown: await figures(page),
+    load_ms: samples.at(-1).ms,
+    frames_while_loading: during.length ? during.at(-1).frames - during[0].frames : 0,
+    longest_freeze_ms: frozen,
+    stages: [...new Set(during.map((s) => s.stage))],
+  };
+  await page.close();
+});
+
+// 7. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
 await scenario("hidpi", async () => {
   const page = await open("hidpi", "/?sample=tennis_racket&spin=2", { width: 1280, height: 720 }, 1.5);
   await sleep(2000);

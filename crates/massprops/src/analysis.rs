@@ -275,19 +275,20 @@ pub(crate) fn check_range(size: f64, method: Method, spec: MassSpec) -> Result<(
         // A point: the zero-volume and zero-area checks say what is wrong.
         return Ok(());
     }
-    let out_of = |quantity: &'static str, estimate: f64, (low, high): (f64, f64), advice: &'static str| {
-        if (low..=high).contains(&estimate) {
-            Ok(())
-        } else {
-            Err(MeshError::OutOfRange {
-                quantity: std::borrow::Cow::Borrowed(quantity),
-                estimate,
-                low,
-                high,
-                advice: std::borrow::Cow::Borrowed(advice),
-            })
-        }
-    };
+    let out_of =
+        |quantity: &'static str, estimate: f64, (low, high): (f64, f64), advice: &'static str| {
+            if (low..=high).contains(&estimate) {
+                Ok(())
+            } else {
+                Err(MeshError::OutOfRange {
+                    quantity: std::borrow::Cow::Borrowed(quantity),
+                    estimate,
+                    low,
+                    high,
+                    advice: std::borrow::Cow::Borrowed(advice),
+                })
+            }
+        };
     let units = "express the mesh in other units";
     out_of("size", size, SIZE_RANGE, units)?;
     let (mass, other) = match (spec, method) {

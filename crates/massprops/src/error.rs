@@ -238,11 +238,16 @@ fn examples(faces: &[usize]) -> String {
 mod io_words {
     use std::sync::Arc;
 
-    pub fn serialize<S: serde::Serializer>(e: &Arc<std::io::Error>, s: S) -> Result<S::Ok, S::Error> {
+    pub fn serialize<S: serde::Serializer>(
+        e: &Arc<std::io::Error>,
+        s: S,
+    ) -> Result<S::Ok, S::Error> {
         s.serialize_str(&e.to_string())
     }
 
-    pub fn deserialize<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Arc<std::io::Error>, D::Error> {
+    pub fn deserialize<'de, D: serde::Deserializer<'de>>(
+        d: D,
+    ) -> Result<Arc<std::io::Error>, D::Error> {
         let words: String = serde::Deserialize::deserialize(d)?;
         Ok(Arc::new(std::io::Error::other(words)))
     }

@@ -262,7 +262,7 @@ impl LabApp {
             omega: body.omega_world().norm(),
             momentum: body.angular_momentum().norm(),
             specimens: self.lab.specimens().len(),
-            loading: self.lab.loading().is_some(),
+            loading: self.lab.loading().map(|l| l.stage.to_string()),
             view: [view.left(), view.top(), view.width(), view.height()],
         });
     }

@@ -275,7 +275,9 @@ mod tests {
             let posted = std::cell::RefCell::new(Vec::new());
             let input = platform::encode(files).expect("encodes");
             platform::serve::<LoadFiles>(&input, &|done, bytes| {
-                posted.borrow_mut().push(platform::event_of::<LoadFiles>(done, &bytes));
+                posted
+                    .borrow_mut()
+                    .push(platform::event_of::<LoadFiles>(done, &bytes));
             })
             .expect("served");
             posted.into_inner()
@@ -310,7 +312,9 @@ mod tests {
             let centre = b.sphere.0;
             let from = centre + nalgebra::Vector3::new(0.0, 0.0, 10.0 * b.sphere.1);
             let dir = -nalgebra::Vector3::z();
-            let hit = b.bvh.pick(&b.mesh, &crate::lab::picking::Ray { origin: from, dir });
+            let hit = b
+                .bvh
+                .pick(&b.mesh, &crate::lab::picking::Ray { origin: from, dir });
             hit.map(|h| (h.triangle, h.t))
         };
         assert_eq!(ray(body), ray(&here));

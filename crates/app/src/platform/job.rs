@@ -114,8 +114,10 @@ mod tests {
     fn a_served_job_reaches_its_starter_as_it_ran() {
         let posted = std::cell::RefCell::new(Vec::new());
         let input = encode(&vec![0.5, 0.25, 2.0]).expect("encodes");
-        serve::<Sum>(&input, &|done, bytes| posted.borrow_mut().push((done, bytes)))
-            .expect("runs");
+        serve::<Sum>(&input, &|done, bytes| {
+            posted.borrow_mut().push((done, bytes))
+        })
+        .expect("runs");
         let heard: Vec<String> = posted
             .into_inner()
             .iter()
@@ -127,7 +129,12 @@ mod tests {
             .collect();
         assert_eq!(
             heard,
-            ["progress 0.5", "progress 0.75", "progress 2.75", "done Ok(2.75)"]
+            [
+                "progress 0.5",
+                "progress 0.75",
+                "progress 2.75",
+                "done Ok(2.75)"
+            ]
         );
     }
 

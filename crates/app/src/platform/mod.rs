@@ -12,7 +12,9 @@ mod side;
 mod job;
 
 pub use job::{Job, JobEvent, decode, encode, event_of, serve};
-pub use side::{memory, print, print_error, run_spawned, spawn, start_job, write_file};
+pub use side::{
+    memory, prepare_jobs, print, print_error, run_spawned, spawn, start_job, write_file,
+};
 /// The clock: std's on the desktop, the browser's `performance.now()` on the web, where
 /// `std::time::Instant::now` panics (wasm32-unknown-unknown has no clock of its own).
 pub use web_time::{Instant, SystemTime, UNIX_EPOCH};

@@ -17,6 +17,10 @@ pub fn start_job<J: Job>(input: J::Input, on_event: impl Fn(JobEvent<J>) + Send 
     });
 }
 
+/// Nothing to prepare on the desktop: a job's thread starts with the job. (The web starts its
+/// worker here.)
+pub fn prepare_jobs() {}
+
 /// Nothing to do on the desktop: [`spawn`]ed work runs by itself. (The web runs it here.)
 pub fn run_spawned() {}
 

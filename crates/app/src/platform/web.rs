@@ -67,6 +67,21 @@ thread_local! {
     static WORKER: RefCell<Option<PageWorker>> = const { RefCell::new(None) };
 }
 
+/// Starts the page's worker ahead of the first job, so that a file dropped soon after the page
+/// opened waits for no instantiation. A failure is said in the console; the first job tries
+/// again.
+pub fn prepare_jobs() {
+    let started = WORKER.with_borrow_mut(|slot| {
+        if slot.is_none() {
+            *slot = Some(start_worker()?);
+        }
+        Ok::<_, JsValue>(())
+    });
+    if let Err(e) = started {
+        super::print_error(&format!("the page's worker did not start: {e:?}"));
+    }
+}
+
 /// Sends job `J` to the page's worker; `on_event` hears its reports and its output when the
 /// worker posts them (between the page's frames: the page goes on drawing meanwhile).
 pub fn start_job<J: Job>(input: J::Input, on_event: impl Fn(JobEvent<J>) + Send + 'static) {
@@ -123,21 +138,22 @@ fn start_worker() -> Result<PageWorker, JsValue> {
     let options = web_sys::WorkerOptions::new();
     options.set_type(web_sys::WorkerType::Module);
     let worker = web_sys::Worker::new_with_options(WORKER_SCRIPT, &options)?;
-    let on_message = Closure::<dyn FnMut(web_sys::MessageEvent)>::new(|e: web_sys::MessageEvent| {
-        let data = e.data();
-        let field = |key: &str| js_sys::Reflect::get(&data, &key.into()).unwrap_or_default();
-        let Some(id) = field("id").as_f64() else {
-            return;
-        };
-        let reply = match field("kind").as_string().as_deref() {
-            Some("failed") => Reply::Failed(field("message").as_string().unwrap_or_default()),
-            kind => Reply::Posted {
-                done: kind == Some("done"),
-                bytes: js_sys::Uint8Array::new(&field("bytes")).to_vec(),
-            },
-        };
-        hear(id as u32, reply);
-    });
+    let on_message =
+        Closure::<dyn FnMut(web_sys::MessageEvent)>::new(|e: web_sys::MessageEvent| {
+            let data = e.data();
+            let field = |key: &str| js_sys::Reflect::get(&data, &key.into()).unwrap_or_default();
+            let Some(id) = field("id").as_f64() else {
+                return;
+            };
+            let reply = match field("kind").as_string().as_deref() {
+                Some("failed") => Reply::Failed(field("message").as_string().unwrap_or_default()),
+                kind => Reply::Posted {
+                    done: kind == Some("done"),
+                    bytes: js_sys::Uint8Array::new(&field("bytes")).to_vec(),
+                },
+            };
+            hear(id as u32, reply);
+        });
     let on_error = Closure::<dyn FnMut(web_sys::ErrorEvent)>::new(|e: web_sys::ErrorEvent| {
         let words = format!("the page's worker stopped: {}", e.message());
         super::print_error(&words);
@@ -153,6 +169,11 @@ fn start_worker() -> Result<PageWorker, JsValue> {
     });
     worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
     worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
+    // The page's own compiled module: the worker instantiates it without fetching or compiling
+    // the wasm again.
+    let module = js_sys::Object::new();
+    js_sys::Reflect::set(&module, &"module".into(), &wasm_bindgen::module())?;
+    worker.post_message(&module)?;
     Ok(PageWorker {
         worker,
         waiting: HashMap::new(),

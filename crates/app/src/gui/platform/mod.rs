@@ -39,7 +39,7 @@ pub enum Chosen {
 
 /// The figures a page publishes for scripts each frame: the primary specimen's, and where the
 /// 3D view is.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Figures {
     /// Its exact mass (kg).
     pub mass: f64,
@@ -51,8 +51,8 @@ pub struct Figures {
     pub momentum: f64,
     /// How many specimens run (the body and its copies).
     pub specimens: usize,
-    /// Whether a file is loading.
-    pub loading: bool,
+    /// The stage of the file loading, when one is.
+    pub loading: Option<String>,
     /// The 3D view's rectangle (left, top, width, height), in points: CSS pixels in a page.
     pub view: [f32; 4],
 }

@@ -95,7 +95,10 @@ async fn run() -> Result<(), JsValue> {
                 Ok(Box::new(app))
             }),
         )
-        .await
+        .await?;
+    // Ready before a file arrives: loading a dropped file waits for no worker.
+    crate::platform::prepare_jobs();
+    Ok(())
 }
 
 fn document() -> Option<web_sys::Document> {
@@ -142,7 +145,8 @@ pub fn publish(figures: &Figures) {
         ("data-omega", format!("{:e}", figures.omega)),
         ("data-momentum", format!("{:e}", figures.momentum)),
         ("data-specimens", figures.specimens.to_string()),
-        ("data-loading", figures.loading.to_string()),
+        ("data-loading", figures.loading.is_some().to_string()),
+        ("data-stage", figures.loading.clone().unwrap_or_default()),
         ("data-view", format!("{left} {top} {width} {height}")),
         ("data-frames", frames.to_string()),
     ] {
