@@ -63,6 +63,13 @@ fn web_page_runs_the_lab() {
     let work = root().join("target/web-test");
     let site = work.join("site");
     std::fs::create_dir_all(&work).expect("target/web-test");
+    // A recording downloaded by an earlier run must not pass for this run's.
+    for old in std::fs::read_dir(&work).expect("target/web-test").flatten() {
+        let name = old.file_name().to_string_lossy().into_owned();
+        if name.starts_with("inertia-lab-recording-") {
+            std::fs::remove_file(old.path()).expect("old recording removed");
+        }
+    }
     let built = Command::new(&build)
         .arg(&site)
         // The test process's library path (the test toolchain's) is not the web compiler's.
@@ -177,6 +184,46 @@ fn web_page_runs_the_lab() {
         );
     }
     check_busy_page(&s["busy"]);
+    check_recording(&s["record"]);
+}
+
+/// Record in the page downloads one ZIP archive that Python's zipfile reads intact: five seconds
+/// of pictures, numbered in order, each a PNG of the page (1280 × 800), the body on the first.
+fn check_recording(record: &serde_json::Value) {
+    let archive = record["archive"].as_str().expect("the archive's path");
+    let first = Path::new(archive).with_extension("png");
+    let script = "import sys, zipfile\n\
+        z = zipfile.ZipFile(sys.argv[1])\n\
+        assert z.testzip() is None\n\
+        names = z.namelist()\n\
+        open(sys.argv[2], 'wb').write(z.read(names[0]))\n\
+        print(len(names), names[0], names[-1])\n";
+    let out = Command::new("python3")
+        .args(["-c", script, archive])
+        .arg(&first)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        out.status.success(),
+        "{archive}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let listing = String::from_utf8_lossy(&out.stdout);
+    let words: Vec<&str> = listing.split_whitespace().collect();
+    let count: usize = words[0].parse().expect("a count");
+    // As many as the frames allowed (a picture is taken with a frame): some 35 of the 50 asked
+    // for under SwiftShader here.
+    assert!(
+        count >= 10 && words[1] == "frame-0001.png" && words[2] == format!("frame-{count:04}.png"),
+        "{archive}: {listing}"
+    );
+    let picture = Image::read_png(&first);
+    assert_eq!((picture.width, picture.height), (1280, 800), "{archive}");
+    let body = picture.count((0, 1280), (0, 800), body_pixel);
+    assert!(
+        body > 500,
+        "{archive}: the body is not in the first picture"
+    );
 }
 
 /// A big mesh loads in the page's worker: the page draws on through the load (its longest

@@ -9,7 +9,7 @@
 // (crates/app/src/gui/platform/web.rs).
 
 import { readFileSync } from "node:fs";
-import { basename, join } from "node:path";
+import { basename, join, resolve } from "node:path";
 import puppeteer from "puppeteer-core";
 
 const [base, out, picked, ...dropped] = process.argv.slice(2);
@@ -273,7 +273,33 @@ await scenario("busy", async () => {
   await page.close();
 });
 
-// 7. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
+// 7. Record: five seconds of the page as PNG pictures, one .zip download (the test reads it).
+// Record wraps under the plots' first row at 1280 × 800 (CSS pixels).
+const RECORD = { x: 390, y: 636 };
+await scenario("record", async () => {
+  const page = await open("record", "/");
+  // The browser's own session, with its events: the download is over when it says completed.
+  // (A folder named with ".." cancels every download: resolved first.)
+  const session = await browsers[1].target().createCDPSession();
+  await session.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: resolve(out), eventsEnabled: true });
+  let name;
+  const done = new Promise((resolve, reject) => {
+    session.on("Browser.downloadWillBegin", (e) => (name = e.suggestedFilename));
+    session.on("Browser.downloadProgress", (e) => {
+      if (e.state === "completed") resolve();
+      if (e.state === "canceled") reject(new Error("the download was cancelled"));
+    });
+    setTimeout(() => reject(new Error("no recording was downloaded")), TIMEOUT);
+  });
+  const start = Date.now();
+  await page.mouse.click(RECORD.x, RECORD.y);
+  await done;
+  result.scenarios.record = { archive: join(out, name), ms: Date.now() - start };
+  await session.detach();
+  await page.close();
+});
+
+// 8. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
 await scenario("hidpi", async () => {
   const page = await open("hidpi", "/?sample=tennis_racket&spin=2", { width: 1280, height: 720 }, 1.5);
   await sleep(2000);

@@ -1,13 +1,15 @@
 //! The app's own pixels (3D view, panels and plots) as PNG: `--screenshot OUT.png --after
 //! SECONDS` takes one after a given simulated time and closes the window; the Record button
 //! writes a numbered PNG sequence for some seconds (teachers put these in slides; any video tool
-//! turns a sequence into a clip). Encoding runs off the UI thread.
+//! turns a sequence into a clip): files in a folder, or one ZIP archive of them (a page's
+//! download). Encoding runs off the UI thread (in a page, between frames).
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
+use super::archive::Archive;
 use crate::platform::Instant;
 
 /// Frames drawn before the picture: the window maps, the mesh is uploaded, shaders compile.
@@ -75,10 +77,35 @@ impl Capture {
 /// (each picture is read back from the GPU and encoded).
 pub const RECORD_FPS: f64 = 10.0;
 
+/// Where a recording's pictures go.
+#[derive(Debug, Clone)]
+enum Pictures {
+    /// Each a file in this folder.
+    Folder(PathBuf),
+    /// Into one archive, written as the file `name` at the end.
+    Archive {
+        name: PathBuf,
+        archive: Arc<Mutex<Archive>>,
+    },
+}
+
+impl Pictures {
+    fn keep(&self, name: &str, image: &egui::ColorImage) -> Result<(), String> {
+        match self {
+            Pictures::Folder(dir) => write_png(&dir.join(name), image),
+            Pictures::Archive { archive, .. } => {
+                let png = png_bytes(image)?;
+                let mut archive = archive.lock().map_err(|e| e.to_string())?;
+                archive.add(name, &png)
+            }
+        }
+    }
+}
+
 /// A running recording: a picture every 1/[`RECORD_FPS`] s of wall time until `until`.
 #[derive(Debug)]
 pub struct Recording {
-    dir: PathBuf,
+    pictures: Pictures,
     until: Instant,
     next: Instant,
     requested: usize,
@@ -95,14 +122,25 @@ impl Recording {
     pub fn start(dir: PathBuf, seconds: f64, now: Instant) -> Result<Self, String> {
         std::fs::create_dir_all(&dir)
             .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-        Ok(Self {
-            dir,
+        Ok(Self::into(Pictures::Folder(dir), seconds, now))
+    }
+
+    /// Starts recording `seconds` of the window into one ZIP archive, written as the file
+    /// `name` when the recording ends (a page: one download).
+    pub fn start_archive(name: PathBuf, seconds: f64, now: Instant) -> Self {
+        let archive = Arc::default();
+        Self::into(Pictures::Archive { name, archive }, seconds, now)
+    }
+
+    fn into(pictures: Pictures, seconds: f64, now: Instant) -> Self {
+        Self {
+            pictures,
             until: now + Duration::from_secs_f64(seconds.clamp(0.1, 600.0)),
             next: now,
             requested: 0,
             written: Arc::default(),
             failure: Arc::default(),
-        })
+        }
     }
 
     /// Called every frame: asks for a picture when one is due. Returns the outcome line once
@@ -116,10 +154,11 @@ impl Recording {
             if now >= self.next {
                 self.next += Duration::from_secs_f64(1.0 / RECORD_FPS);
                 self.requested += 1;
-                let path = self.dir.join(format!("frame-{:04}.png", self.requested));
+                let name = format!("frame-{:04}.png", self.requested);
+                let pictures = self.pictures.clone();
                 let (written, failure) = (Arc::clone(&self.written), Arc::clone(&self.failure));
                 ctx.request_screenshot(move |image| {
-                    std::thread::spawn(move || match write_png(&path, &image) {
+                    crate::platform::spawn(move || match pictures.keep(&name, &image) {
                         Ok(()) => {
                             written.fetch_add(1, Ordering::SeqCst);
                         }
@@ -136,16 +175,33 @@ impl Recording {
         let written = self.written.load(Ordering::SeqCst);
         // A picture asked for but never delivered (a hidden window) must not hang the recording.
         let late = now > self.until + Duration::from_secs(5);
-        (written >= self.requested || late).then(|| {
-            (
-                format!(
-                    "recorded {written} of {} pictures ({RECORD_FPS} per second) to {}",
-                    self.requested,
-                    self.dir.display()
-                ),
-                written < self.requested,
-            )
-        })
+        if written < self.requested && !late {
+            return None;
+        }
+        let place = match &self.pictures {
+            Pictures::Folder(dir) => dir.clone(),
+            Pictures::Archive { name, archive } => {
+                let archive = archive.lock().map(|mut a| std::mem::take(&mut *a));
+                let saved = archive.map_err(|e| e.to_string()).and_then(|a| {
+                    crate::platform::write_file(name, &a.finish()).map_err(|e| e.to_string())
+                });
+                if let Err(e) = saved {
+                    return Some((
+                        format!("recording not saved: {}: {e}", name.display()),
+                        true,
+                    ));
+                }
+                name.clone()
+            }
+        };
+        Some((
+            format!(
+                "recorded {written} of {} pictures ({RECORD_FPS} per second) to {}",
+                self.requested,
+                place.display()
+            ),
+            written < self.requested,
+        ))
     }
 
     /// Ends the recording now (the pictures asked for are still written).
@@ -165,20 +221,29 @@ impl Recording {
 /// The file cannot be created or written; the message names it.
 pub fn write_png(path: &Path, image: &egui::ColorImage) -> Result<(), String> {
     let fail = |e: &dyn std::fmt::Display| format!("cannot write {}: {e}", path.display());
+    std::fs::write(path, png_bytes(image).map_err(|e| fail(&e))?).map_err(|e| fail(&e))
+}
+
+/// `image` (opaque RGBA, rows top to bottom) as the bytes of an 8-bit RGBA PNG.
+///
+/// # Errors
+/// The image is larger than a PNG can say (the encoder's words).
+pub fn png_bytes(image: &egui::ColorImage) -> Result<Vec<u8>, String> {
     let [w, h] = image.size;
     let (w, h) = (
-        u32::try_from(w).map_err(|e| fail(&e))?,
-        u32::try_from(h).map_err(|e| fail(&e))?,
+        u32::try_from(w).map_err(|e| e.to_string())?,
+        u32::try_from(h).map_err(|e| e.to_string())?,
     );
-    let file = std::fs::File::create(path).map_err(|e| fail(&e))?;
-    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), w, h);
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, w, h);
     encoder.set_color(png::ColorType::Rgba);
     encoder.set_depth(png::BitDepth::Eight);
-    let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
+    let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
     writer
         .write_image_data(image.as_raw())
-        .map_err(|e| fail(&e))?;
-    writer.finish().map_err(|e| fail(&e))
+        .map_err(|e| e.to_string())?;
+    writer.finish().map_err(|e| e.to_string())?;
+    Ok(bytes)
 }
 
 #[cfg(test)]
@@ -210,6 +275,53 @@ mod tests {
         assert_eq!(early.remaining(t0 + Duration::from_millis(20)), 0.0);
         std::fs::remove_dir_all(&dir).ok();
         assert!(Recording::start(PathBuf::from("/proc/no-such/x"), 1.0, t0).is_err());
+    }
+
+    /// A recording into an archive writes it once, when the pictures asked for are kept: one
+    /// PNG per picture, in order, named as a folder's would be.
+    #[test]
+    fn an_archived_recording_is_one_file_of_its_pictures() {
+        let ctx = egui::Context::default();
+        let path = std::env::temp_dir().join(format!("inertia-lab-{}-rec.zip", std::process::id()));
+        let t0 = Instant::now();
+        let mut r = Recording::start_archive(path.clone(), 0.25, t0);
+        for k in 0..3 {
+            assert!(r.frame(&ctx, t0 + Duration::from_millis(k * 100)).is_none());
+        }
+        assert_eq!(r.requested, 3);
+        // What the screenshots would deliver: three pictures of different colours.
+        for k in 0..3u8 {
+            let image = egui::ColorImage::filled([4, 2], egui::Color32::from_rgb(k, 2 * k, 3));
+            r.pictures
+                .keep(&format!("frame-{:04}.png", k + 1), &image)
+                .expect("kept");
+            r.written.fetch_add(1, Ordering::SeqCst);
+        }
+        assert!(!path.exists(), "written only at the end");
+        let (text, error) = r.frame(&ctx, t0 + Duration::from_secs(1)).expect("ended");
+        assert!(
+            !error && text.contains("3 of 3") && text.contains("rec.zip"),
+            "{text}"
+        );
+        let zip = std::fs::read(&path).expect("the archive");
+        std::fs::remove_file(&path).ok();
+        let pngs = zip
+            .windows(8)
+            .filter(|w| *w == b"\x89PNG\r\n\x1a\n")
+            .count();
+        let names: Vec<usize> = (1..=3)
+            .map(|k| {
+                let name = format!("frame-{k:04}.png");
+                zip.windows(name.len())
+                    .position(|w| w == name.as_bytes())
+                    .expect(&name)
+            })
+            .collect();
+        assert_eq!(pngs, 3);
+        assert!(names.windows(2).all(|w| w[0] < w[1]), "{names:?}");
+        // The end record counts them.
+        assert_eq!(&zip[zip.len() - 22..zip.len() - 18], b"PK\x05\x06");
+        assert_eq!(zip[zip.len() - 12], 3);
     }
 
     #[test]

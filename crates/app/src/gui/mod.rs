@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use egui::Key;
 
+mod archive;
 mod bench;
 pub mod capture;
 pub mod link;
@@ -207,6 +208,8 @@ impl LabApp {
             self.dialog = Some(Dialog::open(purpose, move || repaint.request_repaint()));
         }
         self.show_status(&ctx);
+        // Work queued off the UI thread where there is no other thread (a page's pictures).
+        crate::platform::run_spawned();
         self.record(&ctx, &mut commands);
         if draft != *self.lab.settings() {
             // Before the panels' commands, so that "Reset settings" in the same frame wins.
@@ -274,8 +277,15 @@ impl LabApp {
             let stamp = crate::platform::SystemTime::now()
                 .duration_since(crate::platform::UNIX_EPOCH)
                 .map_or(0, |d| d.as_secs());
-            let dir = PathBuf::from(format!("inertia-lab-recording-{stamp}"));
-            match capture::Recording::start(dir, self.panels.record_seconds, now) {
+            let name = format!("inertia-lab-recording-{stamp}");
+            let seconds = self.panels.record_seconds;
+            let started = if platform::RECORD_TO_ARCHIVE {
+                let archive = PathBuf::from(format!("{name}.zip"));
+                Ok(capture::Recording::start_archive(archive, seconds, now))
+            } else {
+                capture::Recording::start(PathBuf::from(name), seconds, now)
+            };
+            match started {
                 Ok(r) => self.recording = Some(r),
                 Err(text) => commands.push(Command::Notify(Message { text, error: true })),
             }

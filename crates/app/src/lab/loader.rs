@@ -163,7 +163,6 @@ impl Loading {
 
     /// Drains the reports; returns the result once the worker is done.
     pub fn poll(&mut self) -> Option<Result<Loaded, LabError>> {
-        platform::run_spawned();
         loop {
             match self.events.try_recv() {
                 Ok(LoadEvent::Progress(stage, f)) => {

@@ -32,7 +32,7 @@ pub fn spawn(job: impl FnOnce() + Send + 'static) {
 }
 
 /// Runs the jobs that were queued before the previous call, then makes those queued since
-/// ready for the next one. The lab calls it whenever it asks a job for news.
+/// ready for the next one. The app calls it once a frame.
 pub fn run_spawned() {
     let ready = JOBS.with_borrow_mut(|(queued, ready)| {
         let run = std::mem::take(ready);
@@ -235,7 +235,15 @@ fn download(name: &str, bytes: &[u8]) -> Result<(), wasm_bindgen::JsValue> {
     link.set_href(&url);
     link.set_download(name);
     link.click();
-    web_sys::Url::revoke_object_url(&url)
+    // Not at once: the browser reads the blob after the click returns, and a large one revoked
+    // now is downloaded as an empty, never-finished file (seen with a recording's archive).
+    let revoke = Closure::once_into_js(move || {
+        let _ = web_sys::Url::revoke_object_url(&url);
+    });
+    web_sys::window()
+        .ok_or("no window")?
+        .set_timeout_with_callback_and_timeout_and_arguments_0(revoke.unchecked_ref(), 60_000)?;
+    Ok(())
 }
 
 /// A line in the browser's console (a benchmark's table).

@@ -94,9 +94,6 @@ pub fn show(
         {
             state.dialog_request = Some(DialogPurpose::SaveCsv);
         }
-        if !platform::RECORDS {
-            return;
-        }
         ui.separator();
         match state.recording {
             Some(left) => {
@@ -108,7 +105,7 @@ pub fn show(
             None => {
                 if ui
                     .button("Record")
-                    .on_hover_text("the window as numbered PNG pictures, 10 per second")
+                    .on_hover_text(platform::RECORD_HINT)
                     .clicked()
                 {
                     state.record_request = true;

@@ -28,7 +28,10 @@ pub const NO_FILE_CHOSEN: &str = "no file chosen (if no dialog appeared, this de
 pub const READS_PATHS: bool = true;
 
 /// The Record button's numbered PNG files are written in a folder of their own.
-pub const RECORDS: bool = true;
+pub const RECORD_TO_ARCHIVE: bool = false;
+
+/// What the Record button does, for its tooltip.
+pub const RECORD_HINT: &str = "the window as numbered PNG pictures, 10 per second";
 
 /// The window's title.
 pub fn set_title(ctx: &egui::Context, title: &str) {

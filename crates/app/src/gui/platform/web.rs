@@ -29,8 +29,13 @@ pub const NO_FILE_CHOSEN: &str = "no file chosen";
 /// A page has no paths to type: files come from the picker or a drop.
 pub const READS_PATHS: bool = false;
 
-/// A recording's hundreds of pictures would be as many downloads: the page does not record.
-pub const RECORDS: bool = false;
+/// A recording's hundreds of pictures would be as many downloads: the page puts them in one
+/// archive, downloaded when the recording ends.
+pub const RECORD_TO_ARCHIVE: bool = true;
+
+/// What the Record button does, for its tooltip.
+pub const RECORD_HINT: &str =
+    "the page as numbered PNG pictures, 10 per second, in one .zip download";
 
 /// The id of the canvas the app draws on (`web/index.html`).
 pub const CANVAS_ID: &str = "inertia-lab";
