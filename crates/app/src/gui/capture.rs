@@ -122,17 +122,17 @@ impl Recording {
     pub fn start(dir: PathBuf, seconds: f64, now: Instant) -> Result<Self, String> {
         std::fs::create_dir_all(&dir)
             .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-        Ok(Self::into(Pictures::Folder(dir), seconds, now))
+        Ok(Self::with_pictures(Pictures::Folder(dir), seconds, now))
     }
 
     /// Starts recording `seconds` of the window into one ZIP archive, written as the file
     /// `name` when the recording ends (a page: one download).
     pub fn start_archive(name: PathBuf, seconds: f64, now: Instant) -> Self {
         let archive = Arc::default();
-        Self::into(Pictures::Archive { name, archive }, seconds, now)
+        Self::with_pictures(Pictures::Archive { name, archive }, seconds, now)
     }
 
-    fn into(pictures: Pictures, seconds: f64, now: Instant) -> Self {
+    fn with_pictures(pictures: Pictures, seconds: f64, now: Instant) -> Self {
         Self {
             pictures,
             until: now + Duration::from_secs_f64(seconds.clamp(0.1, 600.0)),
