@@ -8,13 +8,18 @@
 // - frame time: the app's own `?bench=300` line from the console (as --bench-frames prints it);
 // - with --mesh: a mesh file dropped on the page (fetched from URL/FILE's name, so serve it
 //   beside the site), milliseconds from the drop to the body shown: read, parse, analysis,
-//   picking index, as the app's loader does on one thread.
+//   picking index, in the page's worker;
+// - a 360k-triangle sphere (binary STL, 18 MB, made in the page: tests/web/busy.mjs) dropped:
+//   milliseconds from the drop to the body shown, the frames the page drew meanwhile, those
+//   drawn while the worker checked the mesh and built its picking index, and the page's longest
+//   pause between two frames, all from the page's own record of its frames.
 //
 // puppeteer-core comes from the browser test's install (target/web-test/driver, made by
 // `cargo test --test web`) or from PUPPETEER_DIR.
 
 import { createRequire } from "node:module";
 import { basename } from "node:path";
+import { dropSphere, sphereLoaded } from "../tests/web/busy.mjs";
 
 const driver = process.env.PUPPETEER_DIR ?? "target/web-test/driver";
 const require = createRequire(`${process.cwd()}/${driver}/package.json`);
@@ -70,6 +75,7 @@ console.log("| measure | median | range | runs |\n|---|---|---|---|");
 const first = [];
 const frame = [];
 const loads = [];
+const busy = [];
 for (let k = 0; k < runs; k++) {
   first.push(
     await fresh(async (page) => {
@@ -117,7 +123,22 @@ for (let k = 0; k < runs; k++) {
       }),
     );
   }
+  busy.push(
+    await fresh(async (page) => {
+      await page.goto(url, { waitUntil: "load" });
+      await page.waitForFunction(() => document.getElementById("inertia-lab").dataset.frames > 2, {
+        timeout: 120_000,
+      });
+      await page.evaluate(dropSphere, 600, 300);
+      return sphereLoaded(page, 120_000);
+    }),
+  );
 }
 row("navigation → first frame", first, "ms");
 row("frame time, default scene (?bench=300, mean)", frame, "ms");
+const of = (key) => busy.map((b) => b[key]);
+row("360k-triangle sphere dropped → shown (in the worker)", of("load_ms"), "ms");
+row("  frames drawn meanwhile", of("frames_while_loading"), "");
+row("  frames drawn while the worker checked and indexed it", of("worker_frames"), "");
+row("  the page's longest pause between two frames", of("longest_pause_ms"), "ms");
 if (mesh) row(`${basename(mesh)} dropped → shown`, loads, "ms");

@@ -6,7 +6,8 @@
 //! changes it with a click or a tap on the body; opens the scene a link names; loads a mesh
 //! through the file picker and a body file with its meshes dropped on the page, each with the
 //! mass `props` computes for the same files; loads a big mesh in the page's worker while the page
-//! goes on drawing; and names the body in the page's title.
+//! goes on drawing (frames recorded in the page, `tests/web/busy.mjs`); and names the body in the
+//! page's title.
 //!
 //! Without Chromium, Node.js, the web toolchain or the npm registry it prints a SKIPPED line (a
 //! failure under `CI`; `.ci/run` installs them all).
@@ -102,8 +103,11 @@ fn web_page_runs_the_lab() {
         }
     }
     // Beside its node_modules: an ES module finds its imports from its own folder.
+    for file in ["drive.mjs", "busy.mjs"] {
+        std::fs::copy(root().join("tests/web").join(file), driver.join(file))
+            .unwrap_or_else(|e| panic!("tests/web/{file} copied: {e}"));
+    }
     let script = driver.join("drive.mjs");
-    std::fs::copy(root().join("tests/web/drive.mjs"), &script).expect("driver copied");
     let base = serve(site);
     let picked = root().join("assets/l_bracket.obj");
     let dropped = [
@@ -174,6 +178,13 @@ fn web_page_runs_the_lab() {
     assert_eq!(s["link"]["specimens"], "2");
     assert_eq!(s["bad_link"]["title"], "Inertia Lab — T-handle");
 
+    // No dead link: every address the page names answers (the project's home is linked only
+    // when the build is given one).
+    let links = s["links"].as_array().expect("the page's links");
+    assert!(!links.is_empty(), "the page names no address at all");
+    let dead: Vec<_> = links.iter().filter(|l| l["ok"] != true).collect();
+    assert!(dead.is_empty(), "dead links in the page: {dead:?}");
+
     // Files in: the same mass as props at the app's default density (water, 1000 kg/m³).
     for (name, file) in [("picker", &picked), ("drop", &dropped[0])] {
         let shown = number(&s[name]["mass"]);
@@ -226,18 +237,20 @@ fn check_recording(record: &serde_json::Value) {
     );
 }
 
-/// A big mesh loads in the page's worker: the page draws on through the load (its longest
-/// freeze is under half the load's time; a load on the page's own thread freezes it for all of
-/// it), says its stage, and then shows the volume the divergence theorem gives the same file.
+/// A big mesh loads in the page's worker: the page draws on while the worker checks the mesh and
+/// builds its picking index, says the stage, and then shows the volume the divergence theorem
+/// gives the same file.
+///
+/// What is asserted holds however busy the machine is: frames drawn while the page says the
+/// worker is at work. A load on the page's own thread draws no frame until it is over, so none
+/// of its frames can show those stages. How long the page paused, and how many frames it drew,
+/// depend on the machine: `bench/web.mjs` measures them.
 fn check_busy_page(busy: &serde_json::Value) {
-    let load = busy["load_ms"].as_f64().expect("load_ms");
-    let frozen = busy["longest_freeze_ms"]
-        .as_f64()
-        .expect("longest_freeze_ms");
-    let frames = busy["frames_while_loading"].as_f64().expect("frames");
+    let worker_frames = busy["worker_frames"].as_u64().expect("worker_frames");
     assert!(
-        frames >= 3.0 && frozen < 0.5 * load,
-        "the page drew {frames} frames in a load of {load} ms, frozen for {frozen} ms at most"
+        worker_frames >= 2,
+        "the page drew {worker_frames} frames while the worker checked the mesh and built its \
+         picking index (a load on the page's thread draws none); seen: {busy}"
     );
     let stages = busy["stages"].as_array().expect("stages");
     assert!(

@@ -2,7 +2,8 @@
 # Builds Inertia Lab for the browser: a static folder (index.html, the JS glue, the .wasm, the
 # worker's script) that any static server serves, e.g. `python3 -m http.server -d target/web 8000`.
 #
-#   web/build.sh [OUT]      build into OUT (default target/web)
+#   web/build.sh [OUT]      build into OUT (default target/web); with INERTIA_LAB_URL set (the
+#                           project's home page), the page links to its "the-app" section
 #   web/build.sh --check    only check the toolchain (exit 3 and the install line when missing)
 #   web/build.sh --clippy   lint the code the web build compiles (the platform modules' web sides
 #                           are seen by no desktop build), with warnings as errors
@@ -61,6 +62,13 @@ mkdir -p "$OPTIMISED" "$OUT"
 # wasm-bindgen's output relies on (shared/notes/web.md).
 wasm-opt -O2 "$BUILT" -o "$OPTIMISED/inertia_lab_web.wasm"
 wasm-bindgen --target web --no-typescript --out-dir "$OUT" "$OPTIMISED/inertia_lab_web.wasm"
-cp web/index.html web/worker.js "$OUT/"
+cp web/worker.js "$OUT/"
+# The page links to the project's home only when one is configured: a made-up address would be a
+# dead link in every copy of the page.
+if [[ -n ${INERTIA_LAB_URL:-} ]]; then
+  sed "s|@INERTIA_LAB_URL@|${INERTIA_LAB_URL//|/\\|}|" web/index.html >"$OUT/index.html"
+else
+  grep -v '@INERTIA_LAB_URL@\|INERTIA_LAB_URL)' web/index.html >"$OUT/index.html"
+fi
 echo "web/build.sh: built $OUT:"
 ls -l "$OUT"

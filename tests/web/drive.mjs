@@ -11,6 +11,7 @@
 import { readFileSync } from "node:fs";
 import { basename, join, resolve } from "node:path";
 import puppeteer from "puppeteer-core";
+import { dropSphere, sphereLoaded } from "./busy.mjs";
 
 const [base, out, picked, ...dropped] = process.argv.slice(2);
 const TIMEOUT = 60_000;
@@ -165,6 +166,28 @@ await scenario("link", async () => {
   await bad.close();
 });
 
+// 3b. Every link in the page resolves: each address an element names (links, scripts, images,
+// the icon) is fetched from the page; one on another site must answer too (no-cors: any answer).
+await scenario("links", async () => {
+  const page = await open("links", "/");
+  result.scenarios.links = await page.evaluate(async () => {
+    const urls = [...document.querySelectorAll("a[href], link[href], script[src], img[src], iframe[src]")]
+      .map((e) => e.href || e.src);
+    return Promise.all(
+      urls.map(async (url) => {
+        const local = new URL(url).origin === location.origin || url.startsWith("data:");
+        try {
+          const answer = await fetch(url, local ? {} : { mode: "no-cors" });
+          return { url, ok: local ? answer.ok : true, status: answer.status };
+        } catch (e) {
+          return { url, ok: false, status: String(e) };
+        }
+      }),
+    );
+  });
+  await page.close();
+});
+
 // 4. The file picker ("Open mesh…" at the top of the side panel: rfd's <input type=file>). A
 // headless browser cancels a native file chooser at once, so the input's click is kept from
 // opening one, and the file is put in the input as the chooser would put it (made in the page
@@ -204,72 +227,13 @@ await scenario("drop", async () => {
 });
 
 // 6. A big mesh dropped (a UV sphere of 2 × 600 × 300 triangles, binary STL made in the page):
-// the page keeps drawing while it loads, says the stage, and then shows the mesh's volume. The
-// frame counter is read every 25 ms from here (a page busy with the load answers only when it is
-// done): the longest time it stood still is how long the page was frozen.
+// the page keeps drawing while the worker loads it, says the stage, and then shows the mesh's
+// volume. The frames are recorded in the page (busy.mjs).
 await scenario("busy", async () => {
   const page = await open("busy", "/");
-  const volume = await page.evaluate(() => {
-    const [segments, rings] = [600, 300];
-    const point = (i, j) => {
-      const [theta, phi] = [(Math.PI * i) / rings, (2 * Math.PI * j) / segments];
-      return [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)].map(Math.fround);
-    };
-    const triangles = [];
-    for (let i = 0; i < rings; i++) {
-      for (let j = 0; j < segments; j++) {
-        const [a, b, c, d] = [point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)];
-        if (i > 0) triangles.push([a, b, d]);
-        if (i < rings - 1) triangles.push([b, c, d]);
-      }
-    }
-    const bytes = new ArrayBuffer(84 + 50 * triangles.length);
-    const view = new DataView(bytes);
-    view.setUint32(80, triangles.length, true);
-    // The enclosed volume by the divergence theorem, in f64 over the file's f32 corners.
-    let sixfold = 0;
-    triangles.forEach((t, k) => {
-      t.flat().forEach((x, n) => view.setFloat32(84 + 50 * k + 12 + 4 * n, x, true));
-      const [[ax, ay, az], [bx, by, bz], [cx, cy, cz]] = t;
-      sixfold += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
-    });
-    const dataTransfer = new DataTransfer();
-    dataTransfer.items.add(new File([bytes], "sphere.stl"));
-    const canvas = document.getElementById("inertia-lab");
-    for (const type of ["dragenter", "dragover", "drop"]) {
-      canvas.dispatchEvent(new DragEvent(type, { dataTransfer, bubbles: true, cancelable: true }));
-    }
-    return sixfold / 6;
-  });
-  const start = Date.now();
-  const samples = [];
-  for (;;) {
-    const f = await figures(page);
-    samples.push({ ms: Date.now() - start, frames: Number(f.frames), stage: f.stage, loading: f.loading });
-    if (f.loading === "false" && f.title === "Inertia Lab — sphere.stl") break;
-    if (Date.now() - start > TIMEOUT) throw new Error("sphere.stl did not load");
-    await sleep(25);
-  }
-  const during = samples.filter((s) => s.loading === "true");
-  // The longest time between two answers that saw the counter move (a page busy with the load
-  // answers late, or with the counter where it was).
-  let frozen = 0;
-  let moved = samples[0];
-  for (const [k, s] of samples.entries()) {
-    if (k > 0 && s.frames !== samples[k - 1].frames) {
-      frozen = Math.max(frozen, s.ms - moved.ms);
-      moved = s;
-    }
-  }
-  frozen = Math.max(frozen, samples.at(-1).ms - moved.ms);
-  result.scenarios.busy = {
-    volume,
-    shown: await figures(page),
-    load_ms: samples.at(-1).ms,
-    frames_while_loading: during.length ? during.at(-1).frames - during[0].frames : 0,
-    longest_freeze_ms: frozen,
-    stages: [...new Set(during.map((s) => s.stage))],
-  };
+  const volume = await page.evaluate(dropSphere, 600, 300);
+  const frames = await sphereLoaded(page, TIMEOUT);
+  result.scenarios.busy = { volume, shown: await figures(page), ...frames };
   await page.close();
 });
 
