@@ -57,6 +57,14 @@ async function fresh(body) {
   }
 }
 
+// Opens the page and waits until the app has drawn a few frames.
+async function running(page) {
+  await page.goto(url, { waitUntil: "load" });
+  await page.waitForFunction(() => document.getElementById("inertia-lab").dataset.frames > 2, {
+    timeout: 120_000,
+  });
+}
+
 const canvas = (page, key) =>
   page.$eval("#inertia-lab", (c, key) => c.dataset[key], key);
 
@@ -99,10 +107,7 @@ for (let k = 0; k < runs; k++) {
   if (mesh) {
     loads.push(
       await fresh(async (page) => {
-        await page.goto(url, { waitUntil: "load" });
-        await page.waitForFunction(() => document.getElementById("inertia-lab").dataset.frames > 2, {
-          timeout: 120_000,
-        });
+        await running(page);
         const name = basename(mesh);
         return page.evaluate(async (name) => {
           const bytes = await (await fetch(name)).arrayBuffer();
@@ -125,10 +130,7 @@ for (let k = 0; k < runs; k++) {
   }
   busy.push(
     await fresh(async (page) => {
-      await page.goto(url, { waitUntil: "load" });
-      await page.waitForFunction(() => document.getElementById("inertia-lab").dataset.frames > 2, {
-        timeout: 120_000,
-      });
+      await running(page);
       await page.evaluate(dropSphere, 600, 300);
       return sphereLoaded(page, 120_000);
     }),
