@@ -10,6 +10,7 @@ mod common;
 #[path = "common/image.rs"]
 mod image;
 
+use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
@@ -27,49 +28,53 @@ impl Drop for Guard {
     }
 }
 
-/// Starts Xvfb on a display of this test's own (`offset` apart for each test of the process) and
-/// waits until it serves. A display another server holds, or whose lock a killed server left
-/// behind, makes this Xvfb exit at once: the next display is tried (a stale socket alone would
-/// otherwise look like a running server, and the app would fail to connect).
-fn start_xvfb(offset: u32) -> (Guard, String) {
-    let first = 90 + offset + 10 * (std::process::id() % 300);
-    for number in (first..).step_by(5).take(40) {
-        let display = format!(":{number}");
-        let mut xvfb = Command::new("Xvfb");
-        xvfb.args([
-            display.as_str(),
+/// Starts Xvfb on a display it picks itself and waits until it serves. With `-displayfd 1` the
+/// server takes a free display under its own lock files (the five tests of this file start
+/// servers at once) and writes the display's number to its standard output once it accepts
+/// connections. Guessing a number and waiting for its socket file once waited 90 s in CI beside a
+/// running server whose socket file never appeared.
+fn start_xvfb(test: &str) -> (Guard, String) {
+    let log = std::env::temp_dir().join(format!(
+        "inertia-lab-xvfb-{test}-{}.log",
+        std::process::id()
+    ));
+    let mut xvfb = Command::new("Xvfb")
+        .args([
+            "-displayfd",
+            "1",
             "-screen",
             "0",
             "1280x800x24",
             "-nolisten",
             "tcp",
         ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null());
-        let mut guard = Guard(xvfb.spawn().expect("start Xvfb"));
-        let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
-        let start = Instant::now();
-        let serving = loop {
-            if guard.0.try_wait().ok().flatten().is_some() {
-                break false;
-            }
-            // Up, and still up a moment later: this server owns the socket.
-            if socket.exists() && start.elapsed() > Duration::from_millis(300) {
-                break true;
-            }
-            // Generous: the five tests of this file each start a server and an app at once,
-            // on two cores shared with the rest of the test run (20 s was once not enough).
-            assert!(
-                start.elapsed() < Duration::from_secs(90),
-                "Xvfb did not start"
-            );
-            std::thread::sleep(Duration::from_millis(50));
-        };
-        if serving {
-            return (guard, display);
-        }
-    }
-    panic!("no free X display for Xvfb");
+        .stdout(Stdio::piped())
+        .stderr(std::fs::File::create(&log).expect("Xvfb's log file"))
+        .spawn()
+        .expect("start Xvfb");
+    let stdout = xvfb.stdout.take().expect("Xvfb's standard output");
+    let guard = Guard(xvfb);
+    let (sender, receiver) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let mut line = String::new();
+        let _ = BufReader::new(stdout).read_line(&mut line);
+        let _ = sender.send(line);
+    });
+    // Generous: five servers and apps start at once on two cores shared with the rest of the run.
+    let answer = receiver.recv_timeout(Duration::from_secs(90));
+    let said = || std::fs::read_to_string(&log).unwrap_or_default();
+    let display = match answer {
+        Ok(line) => match line.trim().parse::<u32>() {
+            Ok(number) => format!(":{number}"),
+            Err(_) => panic!("Xvfb exited before serving a display; it said:\n{}", said()),
+        },
+        Err(_) => panic!(
+            "Xvfb did not serve a display within 90 s; it said:\n{}",
+            said()
+        ),
+    };
+    std::fs::remove_file(&log).ok();
+    (guard, display)
 }
 
 /// `--screenshot OUT.png --after S` writes the app's own pixels (the 3D view included) after S
@@ -85,7 +90,7 @@ fn screenshot_writes_the_apps_own_pixels_and_exits() {
         );
         return;
     }
-    let (_xvfb, display) = start_xvfb(1);
+    let (_xvfb, display) = start_xvfb("screenshot");
     let home = std::env::temp_dir().join(format!("inertia-lab-shot-{}", std::process::id()));
     std::fs::create_dir_all(&home).expect("temp home");
     let png = home.join("shot.png");
@@ -128,7 +133,7 @@ fn window_shows_the_body_and_the_plots_and_survives_a_bad_file() {
             return;
         }
     }
-    let (_xvfb, display) = start_xvfb(0);
+    let (_xvfb, display) = start_xvfb("window");
 
     let home = std::env::temp_dir().join(format!("inertia-lab-smoke-{}", std::process::id()));
     std::fs::create_dir_all(&home).expect("temp home");
@@ -244,7 +249,7 @@ fn screenshot_of_a_file_that_does_not_load_exits_1() {
     if !have("screenshot_of_a_file_that_does_not_load_exits_1", &["Xvfb"]) {
         return;
     }
-    let (_xvfb, display) = start_xvfb(2);
+    let (_xvfb, display) = start_xvfb("bad-file");
     let home = temp_home("shot-bad-file");
     let bad = home.join("not-a-mesh.obj");
     std::fs::write(&bad, "this is not an OBJ file\nf 1 2 9\n").expect("write");
@@ -275,7 +280,7 @@ fn screenshot_that_cannot_be_written_exits_1() {
     if !have("screenshot_that_cannot_be_written_exits_1", &["Xvfb"]) {
         return;
     }
-    let (_xvfb, display) = start_xvfb(3);
+    let (_xvfb, display) = start_xvfb("unwritable");
     let home = temp_home("shot-unwritable");
     let folder = home.join("a-folder.png");
     std::fs::create_dir_all(&folder).expect("folder");
@@ -375,7 +380,7 @@ fn record_writes_every_picture_it_asks_for() {
     ) {
         return;
     }
-    let (_xvfb, display) = start_xvfb(4);
+    let (_xvfb, display) = start_xvfb("record");
     let home = temp_home("record");
     let mut app = app_command(&display, &home);
     app.stdout(Stdio::null()).stderr(Stdio::null());
