@@ -261,7 +261,7 @@ impl LabApp {
         let view = self.view.rect().unwrap_or(egui::Rect::NOTHING);
         platform::publish(&platform::Figures {
             mass: exact.mass,
-            volume: exact.mass / primary.density(),
+            volume: primary.volume(),
             omega: body.omega_world().norm(),
             momentum: body.angular_momentum().norm(),
             specimens: self.lab.specimens().len(),

@@ -31,6 +31,8 @@ pub struct Composition {
     pub shares: Vec<Vector3<f64>>,
     /// Each part's signed mass.
     pub masses: Vec<f64>,
+    /// The body's volume (m³, scale 1): its solid parts' and thin walls' material less its voids.
+    pub volume: f64,
     /// Each part's triangles in [`LoadedBody::mesh`].
     pub triangles: Vec<Range<usize>>,
     /// Each part's vertices in [`LoadedBody::mesh`].
@@ -49,7 +51,12 @@ impl Composition {
             .map(PartModel::mass)
             .collect::<Result<Vec<_>, _>>()?;
         let (whole, shares) = combine(&masses)?;
+        let volume = parts
+            .iter()
+            .map(PartModel::signed_volume)
+            .sum::<Result<f64, _>>()?;
         Ok(Self {
+            volume,
             masses: masses.iter().map(|m| m.mass).collect(),
             parts,
             whole,
@@ -309,6 +316,14 @@ impl LoadedBody {
             .map(|(entry, part)| PartModel::new(entry, part.mesh))
             .collect::<Result<Vec<_>, _>>()?;
         Self::from_parts(label, models)
+    }
+
+    /// Its volume at scale 1 (m³): a single mesh's enclosed volume (its analysis is at density
+    /// 1), or a body of parts' solids and thin walls less its voids.
+    pub fn volume(&self) -> f64 {
+        self.composition
+            .as_ref()
+            .map_or(self.analysis.properties.mass, |c| c.volume)
     }
 
     /// [`LoadedBody::new`] for a mesh built in code (no file, no lines).

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use std::sync::Arc;
 
-use massprops::composite::PartMass;
+use massprops::composite::{PartMass, PartProperties};
 use massprops::{
     BodyFile, Fill, IntegratedPart, LengthUnit, MaterialEntry, MeshFile, PartEntry, PolyMesh,
     Repairs, Warning,
@@ -101,6 +101,19 @@ impl PartModel {
     /// # Errors
     /// A solid, void or mass given to a part that encloses no volume, or no density.
     pub fn mass(&self) -> Result<PartMass, LabError> {
+        self.properties().map(|p| p.part_mass())
+    }
+
+    /// The volume it adds to the body (m³): a solid's or a thin wall's material volume, negative
+    /// for a void, as `props` reports each part.
+    ///
+    /// # Errors
+    /// As [`PartModel::mass`].
+    pub fn signed_volume(&self) -> Result<f64, LabError> {
+        self.properties().map(|p| p.volume.copysign(p.mass))
+    }
+
+    fn properties(&self) -> Result<PartProperties, LabError> {
         let name = &self.entry.name;
         if self.density().is_none() {
             return Err(LabError::NoDensity { part: name.clone() });
@@ -111,7 +124,6 @@ impl PartModel {
         }
         self.integrated
             .properties(name, fill, &self.placement())
-            .map(|p| p.part_mass())
             .map_err(|source| LabError::Part {
                 part: name.clone(),
                 source,

@@ -425,11 +425,13 @@ impl Specimen {
         self.properties(source)
             .compare_to(self.properties(InertiaSource::Exact))
     }
-    /// The density (kg/m³) of the exact solid at the current size and mass: mass over volume.
+    /// The body's volume (m³) at the current size.
+    pub fn volume(&self) -> f64 {
+        self.body.volume() * self.scale.powi(3)
+    }
+    /// The body's mean density (kg/m³) at the current size and mass: its mass over its volume.
     pub fn density(&self) -> f64 {
-        // The analysis is at density 1, so its mass is the unscaled volume.
-        let volume = self.body.analysis.properties.mass * self.scale.powi(3);
-        self.properties(InertiaSource::Exact).mass / volume
+        self.properties(InertiaSource::Exact).mass / self.volume()
     }
     /// How the body's angular momentum moves in the body now, torque-free: the axis its polhode
     /// circles and the flip period predicted from the current E and |L|.

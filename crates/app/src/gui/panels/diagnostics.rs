@@ -34,7 +34,13 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
             d.vertices, d.faces, d.triangles, d.edges
         ));
         ui.label(shells_line(a));
-        if let Some(v) = a.volume {
+        // A body of parts has its volume from the parts (voids taken away); the surfaces
+        // together enclose the voids twice.
+        let volume = match &body.composition {
+            Some(c) => Some(c.volume),
+            None => a.volume,
+        };
+        if let Some(v) = volume {
             ui.label(format!(
                 "volume {v:.5e} m³ (unscaled), area {:.5e} m²",
                 d.surface_area

@@ -130,6 +130,8 @@ fn body_section(
                 ui.label(format!(
                     "Mass {m:.4e} kg, from the parts' materials (below)"
                 ));
+                ui.label(format!("Volume {:.4e} m³", lab.primary().volume()))
+                    .on_hover_text("The solid parts and thin walls, less the voids.");
                 return;
             }
             ui.horizontal(|ui| {
@@ -151,6 +153,12 @@ fn body_section(
                     number(ui, "Mass", m, 1e-9..=1e9, 0.01, " kg");
                 }
             }
+            let primary = lab.primary();
+            ui.label(format!(
+                "Volume {:.4e} m³, mass {:.4e} kg",
+                primary.volume(),
+                primary.properties(InertiaSource::Exact).mass
+            ));
         });
 }
 
