@@ -59,12 +59,41 @@ fn pause_button_and_space_stop_and_restart_the_simulation() {
     assert!(h.state().lab().primary().sim().steps() > steps + 1);
 }
 
+/// By default a new inertia source starts the motion again from the same spin, and says so.
+#[test]
+fn switching_the_inertia_source_starts_again_from_the_same_spin() {
+    let mut h = harness();
+    frames(&mut h, 30);
+    let ran = h.state().lab().primary().sim().time();
+    h.get_by_label("bounding box").click();
+    frames(&mut h, 1);
+    let lab = h.state().lab();
+    assert!(lab.primary().sim().time() < ran, "did not start again");
+    let w = lab.primary().history().samples()[0].omega_principal;
+    assert_eq!(
+        w[1],
+        lab.settings().body.spin_rate,
+        "the default spin, axis 2"
+    );
+    let said = lab.message().expect("a message");
+    assert!(
+        said.text.contains("started again") && said.text.contains("bounding box"),
+        "{}",
+        said.text
+    );
+}
+
 #[test]
 fn switching_the_inertia_source_mid_run_keeps_angular_momentum() {
     let mut h = harness();
     frames(&mut h, 5);
+    h.get_all_by_label("Switching starts again")
+        .next()
+        .expect("checkbox")
+        .click();
     h.get_all_by_label("Pause").next().expect("button").click();
     frames(&mut h, 1);
+    assert!(!h.state().lab().settings().physics.restart_on_switch);
     let l = h.state().lab().primary().sim().body().angular_momentum();
     h.get_by_label("bounding box").click();
     frames(&mut h, 2);
@@ -528,5 +557,52 @@ fn a_robot_opens_from_the_path_field_and_a_link_chosen_in_its_section_spins_besi
     assert!(
         h.query_by_label_contains("A proof, not an estimate")
             .is_some()
+    );
+}
+
+/// The keys are the lab's whatever button has focus (Space once clicked the focused button, and
+/// 1/2/3 did nothing), a number field being edited keeps them, and Escape gives them back.
+#[test]
+fn shortcuts_act_with_a_button_focused_and_escape_returns_the_keys() {
+    let mut h = harness_of_size([1280.0, 1400.0]);
+    frames(&mut h, 2);
+    let spun_about = |h: &Harness<'static, LabApp>| {
+        let lab = h.state().lab();
+        let w = lab.primary().history().samples()[0].omega_principal;
+        let rate = lab.settings().body.spin_rate;
+        (0..3).find(|&k| (w[k] - rate).abs() < 1e-9 * rate)
+    };
+    h.get_by_label("Spin axis 3").focus();
+    frames(&mut h, 2);
+    assert!(
+        h.ctx.memory(|m| m.focused()).is_some(),
+        "the button has focus"
+    );
+    h.key_press(egui::Key::Num1);
+    frames(&mut h, 2);
+    assert_eq!(spun_about(&h), Some(0), "1 spins about axis 1");
+    h.key_press(egui::Key::Space);
+    frames(&mut h, 2);
+    assert!(h.state().lab().is_paused(), "Space pauses");
+    assert_eq!(spun_about(&h), Some(0), "Space did not click Spin axis 3");
+    h.key_press(egui::Key::Escape);
+    frames(&mut h, 1);
+    assert!(
+        h.ctx.memory(|m| m.focused()).is_none(),
+        "Escape frees the keys"
+    );
+    h.key_press(egui::Key::Space);
+    frames(&mut h, 2);
+    assert!(!h.state().lab().is_paused(), "Space runs again");
+    // A field being edited keeps the keys.
+    h.get_by_label("Size ×").focus();
+    frames(&mut h, 2);
+    assert!(h.ctx.text_edit_focused(), "the size field is being edited");
+    h.key_press(egui::Key::Num3);
+    frames(&mut h, 2);
+    assert_eq!(
+        spun_about(&h),
+        Some(0),
+        "3 went to the field, not to the spin"
     );
 }

@@ -264,6 +264,11 @@ impl LabApp {
             volume: primary.volume(),
             omega: body.omega_world().norm(),
             momentum: body.angular_momentum().norm(),
+            time: primary.sim().time(),
+            orientation: {
+                let q = body.orientation();
+                [q.w, q.i, q.j, q.k]
+            },
             specimens: self.lab.specimens().len(),
             loading: self.lab.loading().map(|l| l.stage.to_string()),
             view: [view.left(), view.top(), view.width(), view.height()],
@@ -333,14 +338,20 @@ impl LabApp {
         if ctx.input(|i| i.key_pressed(Key::F1)) {
             self.panels.help_open = !self.panels.help_open;
         }
-        // Letters go to a text field when one has focus.
-        if ctx.egui_wants_keyboard_input() {
+        // Keys go to a text or number field being edited; otherwise they are the lab's, whatever
+        // widget has focus (a focused button would take Space as a click).
+        if ctx.text_edit_focused() {
             return;
         }
+        if ctx.input(|i| i.key_pressed(Key::Escape))
+            && let Some(id) = ctx.memory(|m| m.focused())
+        {
+            ctx.memory_mut(|m| m.surrender_focus(id));
+        }
+        if ctx.input_mut(|i| i.consume_key(egui::Modifiers::NONE, Key::Space)) {
+            commands.push(Command::TogglePause);
+        }
         ctx.input(|i| {
-            if i.key_pressed(Key::Space) {
-                commands.push(Command::TogglePause);
-            }
             if i.key_pressed(Key::S) {
                 commands.push(Command::Step);
             }

@@ -313,7 +313,17 @@ impl Lab {
                 return Err(e);
             }
         }
+        let switched = new.body.source != old.body.source || new.physics.model != old.physics.model;
         self.settings = new;
+        if switched && self.settings.physics.restart_on_switch {
+            self.restart(self.preset_axis)?;
+            self.info(format!(
+                "started again from the spin about axis {} with the {} inertia and the {} model",
+                self.preset_axis + 1,
+                self.settings.body.source.label(),
+                self.settings.physics.model.name(),
+            ));
+        }
         Ok(())
     }
 

@@ -109,6 +109,10 @@ pub struct PhysicsSettings {
     pub time_scale: f64,
     /// Fixed time step (s).
     pub dt: f64,
+    /// A switch of the inertia source or the rotation model starts every specimen again from
+    /// the same start (the preset spin), so that the two runs compare fairly; off, the motion
+    /// goes on from the current state with the new inertia or model.
+    pub restart_on_switch: bool,
 }
 
 impl Default for PhysicsSettings {
@@ -122,6 +126,7 @@ impl Default for PhysicsSettings {
             angular_damping: 0.0,
             time_scale: 1.0,
             dt: s.dt,
+            restart_on_switch: true,
         }
     }
 }
@@ -223,8 +228,11 @@ pub struct InteractionSettings {
     /// Force cap as an acceleration of the whole mass (m/s²): `F_max = m·a_max`, so one setting
     /// suits a 19 g handle and a 200 kg book alike.
     pub string_max_accel: f64,
-    /// Poke impulse as a velocity change of the whole mass (m/s): `J = m·Δv`.
-    pub poke_delta_v: f64,
+    /// How much a poke changes L, as a fraction of |L|, at most (a poke at the point of the body
+    /// farthest from its centre of mass, across the lever arm); while the body is at rest, of
+    /// the |L| a spin at the spin rate about axis 3 would have. Small by default, so that a
+    /// stable spin stays stable: a nudge, not a new motion.
+    pub poke_fraction: f64,
 }
 
 impl Default for InteractionSettings {
@@ -233,7 +241,7 @@ impl Default for InteractionSettings {
             string_frequency: 2.0,
             string_damping: 0.7,
             string_max_accel: 50.0,
-            poke_delta_v: 0.3,
+            poke_fraction: 0.05,
         }
     }
 }

@@ -443,9 +443,24 @@ impl Specimen {
     pub fn poke_flash(&self) -> Option<PokeFlash> {
         self.poke
     }
-    /// Poke impulse magnitude (N·s) for the current mass: `J = m·Δv`.
+    /// Poke impulse magnitude (N·s): `J = f·|L| / reach`, so that a poke changes L by at most
+    /// the fraction f of |L| (`|ΔL| = |r × J| ≤ reach·J`); at rest, the |L| of a spin at the
+    /// spin rate about axis 3.
     pub fn poke_impulse(&self, settings: &AppSettings) -> f64 {
-        self.used_properties().mass * settings.interaction.poke_delta_v
+        let spinning = self.sim.body().angular_momentum().norm();
+        let l = if spinning > 0.0 {
+            spinning
+        } else {
+            settings.body.spin_rate * self.used_properties().principal.moments.max()
+        };
+        settings.interaction.poke_fraction * l / self.reach()
+    }
+    /// The farthest the body reaches from its centre of mass (m), at most: its bounding sphere's
+    /// radius plus the sphere's centre's distance from the centre of mass.
+    pub fn reach(&self) -> f64 {
+        let (centre, radius) = self.body.sphere;
+        let com = self.properties(InertiaSource::Exact).center_of_mass;
+        self.scale * radius + (centre * self.scale - com).norm()
     }
     /// String force cap (N) for the current mass: `F = m·a_max`.
     pub fn string_max_force(&self, settings: &AppSettings) -> f64 {

@@ -273,7 +273,9 @@ fn switching_the_source_keeps_the_mesh_in_place_and_momenta() {
     let before = lab.primary().placement().to_world(&corner);
     let b = lab.primary().sim().body();
     let (p, l) = (b.momentum(), b.angular_momentum());
+    // Going on from the current state (the default starts again: tests/ui.rs).
     lab.apply(settings_with(&lab, |s| {
+        s.physics.restart_on_switch = false;
         s.body.source = InertiaSource::BoundingBox;
     }));
     assert!(lab.message().is_none(), "{:?}", lab.message());
@@ -433,14 +435,22 @@ fn poke_string_and_csv_export() {
     let l0 = lab.primary().sim().body().angular_momentum();
     let com = lab.primary().sim().body().position();
     let point = com + Vector3::new(0.03, 0.0, 0.0);
+    let j = Vector3::new(0.0, 0.0, -lab.primary().poke_impulse(lab.settings()));
     lab.apply(Command::Poke {
         specimen: PRIMARY,
         point,
         direction: Vector3::new(0.0, 0.0, -2.0),
     });
-    let j = Vector3::new(0.0, 0.0, -lab.primary().poke_impulse(lab.settings()));
     let dl = lab.primary().sim().body().angular_momentum() - l0;
     assert!((dl - (point - com).cross(&j)).norm() < 1e-15);
+    // By default a poke is a nudge: at most 5 % of |L| (the lever arm here is 0.03 of the
+    // T-handle's reach of some 0.05 m), measured against the body's own |L|.
+    let reach = lab.primary().reach();
+    assert!((j.norm() * reach / l0.norm() - 0.05).abs() < 1e-12);
+    assert!(
+        dl.norm() <= 0.05 * l0.norm() && dl.norm() > 0.02 * l0.norm(),
+        "{dl} vs {l0}"
+    );
     assert!(lab.primary().poke_flash().is_some());
     lab.apply(Command::Poke {
         specimen: PRIMARY,

@@ -42,6 +42,13 @@ pub fn show(ctx: &egui::Context, open: &mut bool) {
                     ("R", "reset to the start state"),
                     ("1 2 3", "spin about principal axis 1, 2, 3"),
                     ("F1", "this help"),
+                    (
+                        "Escape",
+                        "gives the keys back to the view from a button or field \
+                         (the keys above act whatever button has focus; a field being edited \
+                         takes them)",
+                    ),
+                    ("Tab", "moves between the buttons and fields"),
                 ] {
                     ui.strong(key);
                     ui.label(what);

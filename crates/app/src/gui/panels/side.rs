@@ -260,7 +260,17 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                     ui.radio_value(&mut s.body.source, src, src.label());
                 }
             });
+            restart_on_switch(ui, s);
         });
+}
+
+/// The choice beside "Simulation uses" and "Rotation model" (one setting, shown at both).
+fn restart_on_switch(ui: &mut egui::Ui, s: &mut AppSettings) {
+    ui.checkbox(&mut s.physics.restart_on_switch, "Switching starts again")
+        .on_hover_text(
+            "A new inertia or rotation model starts the motion again from the same spin, so \
+             that the runs compare fairly. Off: the motion goes on from where it is.",
+        );
 }
 
 /// The sources the body has: the stated one only for a robot link that states an inertia.
@@ -404,6 +414,7 @@ fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: 
                         ui.selectable_value(&mut s.physics.model, m, m.name());
                     }
                 });
+            restart_on_switch(ui, s);
             number(
                 ui,
                 "Gravity (−y)",
@@ -445,18 +456,24 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
         .default_open(false)
         .show(ui, |ui| {
             let i = &mut s.interaction;
-            number(
-                ui,
-                "Poke Δv = J/m",
-                &mut i.poke_delta_v,
-                0.0..=100.0,
-                0.01,
-                " m/s",
-            );
+            // Shown in percent; written back only when edited (×100 ÷ 100 need not give the same
+            // number, and a changed draft is a settings command every frame).
+            let mut percent = i.poke_fraction * 100.0;
+            if number(ui, "Poke", &mut percent, 0.0..=100.0, 0.1, " % of |L|")
+                .on_hover_text(
+                    "How much a click changes the angular momentum L, at most: a click at the \
+                     point farthest from the centre of mass, across it. Small, so that a stable \
+                     spin stays stable; large enough to start a tumble from an unstable one.",
+                )
+                .changed()
+            {
+                i.poke_fraction = percent / 100.0;
+            }
             let primary = lab.primary();
             ui.small(format!(
-                "J = {:.4e} N·s",
-                primary.poke_impulse(lab.settings())
+                "J = {:.4e} N·s, |ΔL| up to {:.4e} kg m²/s",
+                primary.poke_impulse(lab.settings()),
+                primary.poke_impulse(lab.settings()) * primary.reach()
             ));
             number(
                 ui,

@@ -49,6 +49,10 @@ pub struct Figures {
     pub omega: f64,
     /// |L| about the centre of mass (kg m²/s): constant until a poke or the string acts.
     pub momentum: f64,
+    /// Simulated time since the last start (s).
+    pub time: f64,
+    /// The body's orientation, a unit quaternion (w, x, y, z), body to world.
+    pub orientation: [f64; 4],
     /// How many specimens run (the body and its copies).
     pub specimens: usize,
     /// The stage of the file loading, when one is.

@@ -149,6 +149,11 @@ pub fn publish(figures: &Figures) {
         ("data-volume", format!("{:e}", figures.volume)),
         ("data-omega", format!("{:e}", figures.omega)),
         ("data-momentum", format!("{:e}", figures.momentum)),
+        ("data-time", format!("{:e}", figures.time)),
+        (
+            "data-orientation",
+            figures.orientation.map(|c| format!("{c:e}")).join(" "),
+        ),
         ("data-specimens", figures.specimens.to_string()),
         ("data-loading", figures.loading.is_some().to_string()),
         ("data-stage", figures.loading.clone().unwrap_or_default()),
