@@ -164,6 +164,13 @@ fn samples_load_and_help_opens_with_f1() {
     h.key_press(egui::Key::F1);
     frames(&mut h, 2);
     assert!(h.query_by_label_contains("Dzhanibekov").is_some());
+    // The Help button on the message line closes it and opens it again.
+    h.get_by_label("Help").click();
+    frames(&mut h, 2);
+    assert!(h.query_by_label_contains("Dzhanibekov").is_none());
+    h.get_by_label("Help").click();
+    frames(&mut h, 2);
+    assert!(h.query_by_label_contains("Dzhanibekov").is_some());
 }
 
 /// Edits in two panels in the same frame both survive (the panels share one settings draft).
@@ -219,6 +226,25 @@ fn the_layout_fits_at_1920x1080_with_1_5_pixels_per_point() {
         .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
     assert_eq!(h.ctx.pixels_per_point(), 1.5);
     long_named_open_mesh_keeps_the_layout(h, "1920x1080 at 1.5 px/pt");
+}
+
+/// A narrow page (1024 × 768 CSS pixels at 1.5 device pixels each, as the student's, less the
+/// browser's frame): the 3D toolbar wraps and every control stays whole; with the momentum
+/// sphere open the view's row is narrower still.
+#[test]
+fn the_toolbar_wraps_in_a_narrow_window() {
+    let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
+    let mut h = Harness::builder()
+        .with_size([900.0, 700.0])
+        .with_pixels_per_point(1.5)
+        .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app);
+    frames(&mut h, 2);
+    let row = |h: &Harness<'static, LabApp>, label: &str| h.get_by_label(label).rect().center().y;
+    assert!(
+        row(&h, "Equivalent") > row(&h, "Frame") + 5.0,
+        "the toolbar did not wrap"
+    );
+    assert_fits(&h, "900x700 at 1.5 px/pt");
 }
 
 /// Loads an open mesh under a long path into `h` and checks the layout while it loads and after:
@@ -461,6 +487,9 @@ fn compare_from_the_panel() {
         ]
     );
     assert!(h.query_by_label_contains("max ΔE/E").is_some());
+    // The body's predicted turn-over interval is in its row (the default spin, axis 2).
+    let turns = lab.primary().turn_over_interval().expect("axis 2 turns over");
+    assert!(h.query_by_label(&format!("{turns:.3} s")).is_some());
     // The table names each copy by what it changes (the checkbox says "textbook model" too).
     assert_eq!(h.query_all_by_label_contains("textbook model").count(), 2);
     // The checkbox and the table's row.

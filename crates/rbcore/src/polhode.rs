@@ -133,6 +133,44 @@ pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
     }
 }
 
+/// The widest angle (radians) between body angular momentum `l` and principal axis `axis` (0 or
+/// 2, the axis its polhode circles) over one torque-free period: how far the body swings.
+///
+/// On the polhode about axis 3, Σ Lₖ²(1/Iₖ − 1/I₃) = 2E − |L|²/I₃ is fixed; L₁² + L₂² is largest
+/// where that sum rests on the smaller coefficient, at L₁ = 0 (1/I₂ − 1/I₃ ≤ 1/I₁ − 1/I₃), so
+/// sin² θ = (2E − |L|²/I₃) / ((1/I₂ − 1/I₃)|L|²). About axis 1, likewise with |L|²/I₁ − 2E at
+/// L₃ = 0. For a symmetric top the angle is constant. Near the separatrix it nears 90°: axis 2
+/// swings round and the body turns over; far from it, the body only wobbles.
+///
+/// ```
+/// use nalgebra::Vector3;
+/// // A symmetric top: L at a fixed 45° from its axis.
+/// let top = Vector3::new(2.0, 2.0, 3.0);
+/// let angle = rbcore::cone_angle(&top, &Vector3::new(1.0, 0.0, 1.0), 2);
+/// assert!((angle - std::f64::consts::FRAC_PI_4).abs() < 1e-12);
+/// ```
+pub fn cone_angle(moments: &Vector3<f64>, l: &Vector3<f64>, axis: usize) -> f64 {
+    let l2 = l.norm_squared();
+    if !(l2 > 0.0) {
+        return 0.0;
+    }
+    let i = moments;
+    let (off, coefficient) = if axis == 0 {
+        let off: f64 = (1..3).map(|k| l[k] * l[k] * (1.0 / i.x - 1.0 / i[k])).sum();
+        (off, 1.0 / i.x - 1.0 / i.y)
+    } else {
+        let off: f64 = (0..2).map(|k| l[k] * l[k] * (1.0 / i[k] - 1.0 / i.z)).sum();
+        (off, 1.0 / i.y - 1.0 / i.z)
+    };
+    // Equal moments along the swing: the angle off the axis is L's own, and fixed.
+    let sin2 = if coefficient > 0.0 {
+        off / (coefficient * l2)
+    } else {
+        1.0 - l[axis] * l[axis] / l2
+    };
+    sin2.clamp(0.0, 1.0).sqrt().asin()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -178,6 +216,37 @@ mod tests {
             polhode(&I, &minor),
             Polhode::Circles { axis: 0, .. }
         ));
+    }
+
+    /// The widest swing of L from the circled axis, against Euler's equations integrated with
+    /// RK4 over more than a period (dL/dt = L × ω in the body, ω = L/I).
+    #[test]
+    fn cone_angle_is_the_widest_swing_of_the_integrated_motion() {
+        let rate = |l: &Vector3<f64>| l.cross(&l.component_div(&I));
+        for omega in [
+            Vector3::new(0.2, 10.0, 0.2),
+            Vector3::new(0.2, 0.5, 10.0),
+            Vector3::new(10.0, 0.5, 0.2),
+            Vector3::new(1.0, 8.0, 1.0),
+        ] {
+            let mut l = I.component_mul(&omega);
+            let Polhode::Circles { axis, period, .. } = polhode(&I, &l) else {
+                panic!("{omega}");
+            };
+            let want = cone_angle(&I, &l, axis);
+            let steps = 200_000;
+            let h = 1.2 * period / f64::from(steps);
+            let mut widest = 0.0_f64;
+            for _ in 0..steps {
+                let k1 = rate(&l);
+                let k2 = rate(&(l + k1 * (h / 2.0)));
+                let k3 = rate(&(l + k2 * (h / 2.0)));
+                let k4 = rate(&(l + k3 * h));
+                l += (k1 + k2 * 2.0 + k3 * 2.0 + k4) * (h / 6.0);
+                widest = widest.max((l[axis].abs() / l.norm()).acos());
+            }
+            assert!((widest - want).abs() < 1e-6, "{omega}: {widest} vs {want}");
+        }
     }
 
     #[test]

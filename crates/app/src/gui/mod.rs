@@ -123,23 +123,16 @@ impl LabApp {
         let mut draft = self.lab.settings().clone();
 
         egui::Panel::top("message").show(ui, |ui| {
-            ui.horizontal(|ui| match self.lab.message() {
-                Some(m) => {
-                    let color = if m.error {
-                        egui::Color32::from_rgb(255, 110, 100)
-                    } else {
-                        ui.visuals().text_color()
-                    };
-                    ui.colored_label(color, &m.text);
-                    if ui.small_button("x").on_hover_text("dismiss").clicked() {
-                        commands.push(Command::DismissMessage);
-                    }
+            ui.horizontal(|ui| {
+                // First, so that a long message cannot push it off the window.
+                if ui
+                    .small_button("Help")
+                    .on_hover_text("What you see, the controls and the keys (F1)")
+                    .clicked()
+                {
+                    self.panels.help_open = !self.panels.help_open;
                 }
-                None => {
-                    ui.label(
-                        "Inertia Lab — exact inertia vs the bounding-box guess. Press F1 for help.",
-                    );
-                }
+                message_text(ui, self.lab.message(), &mut commands);
             });
         });
         // A fixed width the user can drag; content wraps or truncates to it (a long file name or
@@ -390,6 +383,26 @@ impl eframe::App for LabApp {
         // Measuring and capturing runs use default settings and must not replace the user's.
         if self.bench.is_none() && self.capture.is_none() {
             eframe::set_value(storage, SETTINGS_KEY, self.lab.settings());
+        }
+    }
+}
+
+/// The message line's text: the lab's last message with its dismiss button, or what the lab is.
+fn message_text(ui: &mut egui::Ui, message: Option<&Message>, commands: &mut Vec<Command>) {
+    match message {
+        Some(m) => {
+            let color = if m.error {
+                egui::Color32::from_rgb(255, 110, 100)
+            } else {
+                ui.visuals().text_color()
+            };
+            ui.colored_label(color, &m.text);
+            if ui.small_button("x").on_hover_text("dismiss").clicked() {
+                commands.push(Command::DismissMessage);
+            }
+        }
+        None => {
+            ui.label("Inertia Lab — exact inertia vs the bounding-box guess.");
         }
     }
 }

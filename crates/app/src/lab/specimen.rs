@@ -30,6 +30,11 @@ const POKE_FLASH: Duration = Duration::from_millis(1500);
 /// T-handle to flip within about three seconds at the default 8 rad/s.
 const PERTURBATION: f64 = 0.02;
 
+/// A swing of L wider than this from the axis it circles turns the body over (axis 2 swings
+/// round to point the other way); narrower, the body wobbles. 45°: axis 2 then points more
+/// across than along where it started.
+pub const TURNING_OVER: f64 = std::f64::consts::FRAC_PI_4;
+
 /// Most samples kept (about 58 MB): 600 s at the default step; a tiny step shortens the history
 /// rather than exhausting memory.
 const MAX_HISTORY: usize = 400_000;
@@ -438,6 +443,32 @@ impl Specimen {
     pub fn polhode(&self) -> Polhode {
         let b = self.sim.body();
         rbcore::polhode(&b.moments(), &b.angular_momentum_principal())
+    }
+    /// The widest angle (radians) between L and the axis its polhode circles, torque-free from
+    /// now ([`rbcore::cone_angle`]); 0 for a steady spin or a body at rest.
+    pub fn cone_angle(&self) -> f64 {
+        let b = self.sim.body();
+        match self.polhode() {
+            Polhode::Circles { axis, .. } => {
+                rbcore::cone_angle(&b.moments(), &b.angular_momentum_principal(), axis)
+            }
+            _ => 0.0,
+        }
+    }
+    /// The interval (s) between turns of the body predicted from the current E and |L|: half the
+    /// polhode's period when the body turns over (L swings at least [`TURNING_OVER`] from the
+    /// axis it circles, a symmetric top never); `None` when it only wobbles or spins steadily,
+    /// and under the textbook model, which never turns the body over.
+    pub fn turn_over_interval(&self) -> Option<f64> {
+        if self.sim.settings().model == RotationModel::Textbook {
+            return None;
+        }
+        match self.polhode() {
+            Polhode::Circles {
+                period, separation, ..
+            } if separation.is_finite() && self.cone_angle() >= TURNING_OVER => Some(period / 2.0),
+            _ => None,
+        }
     }
     /// The current poke flash.
     pub fn poke_flash(&self) -> Option<PokeFlash> {

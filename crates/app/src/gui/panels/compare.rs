@@ -148,13 +148,21 @@ pub fn show(
         });
 }
 
-/// Each specimen's largest E and |L| drift since the start or its last disturbance.
+/// Each specimen's turn-over interval, predicted and measured, and its largest E and |L| drift
+/// since the start or its last disturbance.
 fn drift_table(ui: &mut egui::Ui, lab: &Lab) {
+    let seconds = |t: Option<f64>| t.map_or_else(|| "—".to_owned(), |t| format!("{t:.3} s"));
     egui::Grid::new("compare-drift")
         .striped(true)
-        .num_columns(3)
+        .num_columns(5)
         .show(ui, |ui| {
             ui.label("");
+            ui.strong("turns over every").on_hover_text(
+                "T/2 predicted from the copy's E and |L| (— when it only wobbles or spins \
+                 steadily)",
+            );
+            ui.strong("measured")
+                .on_hover_text("the time between the last two reversals of ω₂ seen in the run");
             ui.strong("max ΔE/E");
             ui.strong("max Δ|L|/|L|");
             ui.end_row();
@@ -166,6 +174,8 @@ fn drift_table(ui: &mut egui::Ui, lab: &Lab) {
                     RichText::new(sp.variant().label()).color(Color32::from_rgb(r, g, b))
                 };
                 ui.label(name);
+                ui.label(seconds(sp.turn_over_interval()));
+                ui.label(seconds(sp.history().flip_interval()));
                 ui.label(format!("{:.1e}", sp.drift().max_energy()));
                 ui.label(format!("{:.1e}", sp.drift().max_l_norm()));
                 ui.end_row();

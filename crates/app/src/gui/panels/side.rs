@@ -11,6 +11,7 @@ use super::{PanelState, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassSpec};
+use crate::lab::specimen::TURNING_OVER;
 use crate::lab::{Command, Lab};
 
 /// Shows the panel contents, editing the frame's settings draft `s`.
@@ -187,7 +188,8 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                             InertiaSource::BoundingBox => "bbox",
                             InertiaSource::PointMasses => "points",
                             other => other.label(),
-                        });
+                        })
+                        .on_hover_text(source_meaning(*src));
                     }
                     ui.end_row();
                     ui.label("mass (kg)");
@@ -201,7 +203,8 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                     }
                     ui.end_row();
                     for i in 0..3 {
-                        ui.label(format!("I{} (kg·m²)", i + 1));
+                        ui.label(format!("I{} (kg·m²)", i + 1))
+                            .on_hover_text(format!("Principal moment of inertia about principal axis {}, moments ascending (axis 1 the least)", i + 1));
                         ui.label(fmt(exact.principal.moments[i]));
                         for (p, _) in &others {
                             ui.label(fmt(p.principal.moments[i]));
@@ -209,7 +212,8 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                         ui.end_row();
                     }
                     for i in 0..3 {
-                        ui.label(format!("error I{}", i + 1));
+                        ui.label(format!("error I{}", i + 1))
+                            .on_hover_text(format!("How far the approximation's moment I{} is from the exact one, in percent (red beyond 5 %)", i + 1));
                         ui.label("—");
                         for (_, c) in &others {
                             let e = c.moment_error[i] * 100.0;
@@ -218,7 +222,8 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                         ui.end_row();
                     }
                     for i in 0..3 {
-                        ui.label(format!("axis {} angle", i + 1));
+                        ui.label(format!("axis {} angle", i + 1))
+                            .on_hover_text(format!("The angle between the approximation's principal axis {} and the exact one (red beyond 5°)", i + 1));
                         ui.label("—");
                         for (_, c) in &others {
                             match c.axis_angle[i] {
@@ -231,7 +236,9 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                         }
                         ui.end_row();
                     }
-                    ui.label("CoM offset (m)");
+                    ui.label("CoM offset (m)").on_hover_text(
+                        "How far the approximation's centre of mass is from the exact one",
+                    );
                     ui.label("—");
                     for (_, c) in &others {
                         ui.label(fmt(c.com_offset));
@@ -257,7 +264,8 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
             ui.label(RichText::new("Simulation uses").strong());
             ui.horizontal(|ui| {
                 for src in sources {
-                    ui.radio_value(&mut s.body.source, src, src.label());
+                    ui.radio_value(&mut s.body.source, src, src.label())
+                        .on_hover_text(source_meaning(src));
                 }
             });
             restart_on_switch(ui, s);
@@ -271,6 +279,23 @@ fn restart_on_switch(ui: &mut egui::Ui, s: &mut AppSettings) {
             "A new inertia or rotation model starts the motion again from the same spin, so \
              that the runs compare fairly. Off: the motion goes on from where it is.",
         );
+}
+
+/// What each inertia source is, for the table's headers and the radio buttons.
+fn source_meaning(source: InertiaSource) -> &'static str {
+    match source {
+        InertiaSource::Exact => {
+            "Exact: the solid the mesh encloses, integrated over its volume (Mirtich's method)"
+        }
+        InertiaSource::BoundingBox => {
+            "Bounding box (bbox): a solid box around the mesh, axis-aligned, with the same mass, \
+             the usual guess of game engines"
+        }
+        InertiaSource::PointMasses => {
+            "Points: the mass shared equally among the mesh's vertices, as if each were a point mass"
+        }
+        InertiaSource::Stated => "Stated: what the robot description says",
+    }
 }
 
 /// The sources the body has: the stated one only for a robot link that states an inertia.
@@ -291,8 +316,19 @@ fn error_text(text: String, large: bool) -> RichText {
 
 /// What the panel says about the flip: the interval between reversals of ω₂ predicted from the
 /// current E and |L| (rbcore's exact solution) beside the one measured, or why there is none.
+/// What the motion text's terms mean, shown over it.
+const MOTION_TERMS: &str = "T: the period of the motion seen from the body (ω returns to where \
+    it was), predicted from the energy E and |L|.\nTurns over: axis 2 swings round to point \
+    the other way, and back, every T/2: the intermediate-axis (tennis-racket) flip.\nWobbles: \
+    the spin axis circles a stable axis at a small angle and never turns over.\nSeparatrix: \
+    the boundary between the motions about axis 1 and about axis 3, through axis 2; the closer \
+    a spin to it, the longer between flips.";
+
+/// The motion text: a flip told from a wobble, predicted, and measured once seen. `cone` is the
+/// widest angle of L from the axis it circles ([`crate::lab::specimen::Specimen::cone_angle`]).
 fn flip_text(
     polhode: Polhode,
+    cone: f64,
     moments: &nalgebra::Vector3<f64>,
     measured: Option<f64>,
     model: RotationModel,
@@ -303,16 +339,32 @@ fn flip_text(
             axis,
             period,
             separation,
-        } => {
-            let mut t = format!(
-                "L circles axis {}; ω₂ reverses every T/2 = {:.3} s (predicted from E and |L|)",
+        } if separation.is_infinite() => {
+            let (p, q) = if axis == 2 { (1, 2) } else { (2, 3) };
+            format!(
+                "Axes {p} and {q} have equal moments: the body precesses about axis {}, its spin \
+                 axis at {:.1}° from it, once every T = {period:.3} s, and never turns over.",
                 axis + 1,
+                cone.to_degrees()
+            )
+        }
+        Polhode::Circles {
+            axis,
+            period,
+            separation,
+        } if cone >= TURNING_OVER => {
+            let mut t = format!(
+                "Turns over every T/2 = {:.3} s (predicted from E and |L|",
                 period / 2.0
             );
             match measured {
-                Some(m) => t.push_str(&format!(", measured {m:.3} s.")),
-                None => t.push_str(", measured after two reversals."),
+                Some(m) => t.push_str(&format!("; measured {m:.3} s)")),
+                None => t.push_str("; measured after two turns)"),
             }
+            t.push_str(&format!(
+                ": axis 2 swings round and back while L circles axis {}.",
+                axis + 1
+            ));
             if separation.abs() < 1e-3 {
                 t.push_str(
                     " Near the separatrix: the closer the spin to it, the longer the interval, \
@@ -321,6 +373,11 @@ fn flip_text(
             }
             t
         }
+        Polhode::Circles { axis, period, .. } => format!(
+            "Wobbles by ±{:.1}° about axis {} and never turns over (one wobble every T = {period:.3} s).",
+            cone.to_degrees(),
+            axis + 1
+        ),
         Polhode::Separatrix => "On the separatrix through axis 2: the interval between flips \
                                 grows without bound."
             .to_owned(),
@@ -386,12 +443,14 @@ fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: 
             let torque_free = physics.angular_damping == 0.0 && primary.string_view().is_none();
             let text = flip_text(
                 primary.polhode(),
+                primary.cone_angle(),
                 &primary.sim().body().moments(),
                 primary.history().flip_interval(),
                 physics.model,
                 torque_free,
             );
-            ui.add(egui::Label::new(text).wrap());
+            ui.add(egui::Label::new(text).wrap())
+                .on_hover_text(MOTION_TERMS);
             number(
                 ui,
                 "Spin rate",
@@ -509,7 +568,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn flip_text_predicts_measures_and_explains() {
+    fn flip_text_tells_a_flip_from_a_wobble_predicts_and_measures() {
         let circles = Polhode::Circles {
             axis: 2,
             period: 7.101450607931697,
@@ -517,22 +576,51 @@ mod tests {
         };
         let full = RotationModel::Full;
         let i = nalgebra::Vector3::new(1.0, 2.0, 3.0);
-        let t = flip_text(circles, &i, Some(3.5507), full, true);
+        let wide = 89f64.to_radians();
+        let t = flip_text(circles, wide, &i, Some(3.5507), full, true);
         assert!(
-            t.contains("T/2 = 3.551 s") && t.contains("measured 3.551 s"),
+            t.starts_with("Turns over every T/2 = 3.551 s") && t.contains("measured 3.551 s"),
             "{t}"
         );
         assert!(t.contains("axis 3") && t.contains("without bound"), "{t}");
-        assert!(flip_text(circles, &i, None, full, true).contains("after two reversals"));
-        let textbook = flip_text(circles, &i, None, RotationModel::Textbook, true);
+        assert!(flip_text(circles, wide, &i, None, full, true).contains("after two turns"));
+        // A steady spin about axis 3, nudged: the same reversal of a small ω₂ is a wobble.
+        let narrow = flip_text(circles, 2.3f64.to_radians(), &i, Some(3.5), full, true);
+        assert!(
+            narrow.starts_with("Wobbles by ±2.3° about axis 3 and never turns over")
+                && !narrow.contains("Turns over")
+                && !narrow.contains("measured"),
+            "{narrow}"
+        );
+        let top = Polhode::Circles {
+            axis: 2,
+            period: 4.2,
+            separation: f64::INFINITY,
+        };
+        let equal = flip_text(
+            top,
+            0.7,
+            &nalgebra::Vector3::new(2.0, 2.0, 3.0),
+            None,
+            full,
+            true,
+        );
+        assert!(
+            equal.contains("Axes 1 and 2 have equal moments") && equal.contains("never turns over"),
+            "{equal}"
+        );
+        let textbook = flip_text(circles, wide, &i, None, RotationModel::Textbook, true);
         assert!(textbook.contains("never flips"), "{textbook}");
-        assert!(flip_text(circles, &i, None, full, false).contains("Damping or the string"));
-        assert!(flip_text(Polhode::Spherical, &i, None, full, true).contains("equal"));
-        assert!(flip_text(Polhode::Steady { axis: 1 }, &i, None, full, true).contains("unstable"));
-        assert!(flip_text(Polhode::Steady { axis: 0 }, &i, None, full, true).contains("stable"));
-        assert!(flip_text(Polhode::Separatrix, &i, None, full, true).contains("without bound"));
+        assert!(flip_text(circles, wide, &i, None, full, false).contains("Damping or the string"));
+        assert!(flip_text(Polhode::Spherical, 0.0, &i, None, full, true).contains("equal"));
+        let steady = |axis| flip_text(Polhode::Steady { axis }, 0.0, &i, None, full, true);
+        assert!(steady(1).contains("unstable"));
+        assert!(steady(0).contains("stable"));
+        assert!(
+            flip_text(Polhode::Separatrix, 0.0, &i, None, full, true).contains("without bound")
+        );
         let rod = nalgebra::Vector3::new(1.0, 3.0, 3.0);
-        let neutral = flip_text(Polhode::Steady { axis: 1 }, &rod, None, full, true);
+        let neutral = flip_text(Polhode::Steady { axis: 1 }, 0.0, &rod, None, full, true);
         assert!(neutral.contains("every axis in their plane"), "{neutral}");
     }
 
