@@ -488,7 +488,10 @@ fn compare_from_the_panel() {
     );
     assert!(h.query_by_label_contains("max ΔE/E").is_some());
     // The body's predicted turn-over interval is in its row (the default spin, axis 2).
-    let turns = lab.primary().turn_over_interval().expect("axis 2 turns over");
+    let turns = lab
+        .primary()
+        .turn_over_interval()
+        .expect("axis 2 turns over");
     assert!(h.query_by_label(&format!("{turns:.3} s")).is_some());
     // The table names each copy by what it changes (the checkbox says "textbook model" too).
     assert_eq!(h.query_all_by_label_contains("textbook model").count(), 2);

@@ -196,6 +196,23 @@ fn web_page_runs_the_lab() {
     }
     check_busy_page(&s["busy"]);
     check_recording(&s["record"]);
+    check_restarts(&s["restarts"]);
+}
+
+/// Fifty restarts, by keys and buttons, with the view or a widget holding the keys: each starts
+/// the clock again, which then runs past half a second with no further input, and the body turns.
+fn check_restarts(runs: &serde_json::Value) {
+    let runs = runs.as_array().expect("the restarts");
+    assert_eq!(runs.len(), 50, "restarts");
+    for run in runs {
+        assert!(run["restarted"] == true, "did not restart: {run}");
+        let end = run["end"].as_f64().expect("end");
+        let turned = run["turned"].as_f64().expect("turned");
+        assert!(
+            end >= 0.5 && turned > 1e-3,
+            "the clock or the body stood still after the restart: {run}"
+        );
+    }
 }
 
 /// Record in the page downloads one ZIP archive that Python's zipfile reads intact: five seconds

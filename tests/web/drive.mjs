@@ -263,6 +263,56 @@ await scenario("record", async () => {
   await page.close();
 });
 
+// 7b. Fifty restarts by every route: the keys 1, 2, 3 and R, and the side panel's Spin axis and
+// Reset buttons, each with the view holding the keys (Escape) and with a widget focused (Tab).
+// After each, with no further input, the simulated time (data-time) starts again and runs on
+// past half a second, and the body turns (data-orientation). A restart once left the clock
+// standing at 0.05–0.13 s until the next input event.
+// The side panel's Motion section at 1280 × 800 (CSS pixels), as page-1280x800.png shows it.
+const SPIN = [1, 2, 3].map((k) => ({ x: 63 + (k - 1) * 85, y: 746 }));
+const RESET = { x: 159, y: 723 };
+await scenario("restarts", async () => {
+  const page = await open("restarts", "/");
+  const now = async () => {
+    const f = await figures(page);
+    return { time: Number(f.time), orientation: f.orientation.split(" ").map(Number) };
+  };
+  const routes = [
+    ["key 1", () => page.keyboard.press("1")],
+    ["key 2", () => page.keyboard.press("2")],
+    ["key 3", () => page.keyboard.press("3")],
+    ["key R", () => page.keyboard.press("r")],
+    ...SPIN.map((at, k) => [`Spin axis ${k + 1}`, () => page.mouse.click(at.x, at.y)]),
+    ["Reset", () => page.mouse.click(RESET.x, RESET.y)],
+  ];
+  const runs = [];
+  // The page takes keys once it has been clicked: on the message line, where a click does nothing.
+  await page.mouse.click(900, 10);
+  for (let k = 0; k < 50; k++) {
+    const [route, act] = routes[k % routes.length];
+    const focused = Math.floor(k / routes.length) % 2 === 1;
+    await page.keyboard.press(focused ? "Tab" : "Escape");
+    await page.waitForFunction(() => Number(document.getElementById("inertia-lab").dataset.time) >= 0.5, {
+      timeout: 10_000,
+      polling: 20,
+    });
+    const before = await now();
+    await act();
+    const restarted = await page
+      .waitForFunction((t) => Number(document.getElementById("inertia-lab").dataset.time) < t, { timeout: 5_000, polling: 10 }, before.time)
+      .then(() => true, () => false);
+    const start = await now();
+    const ran = await page
+      .waitForFunction(() => Number(document.getElementById("inertia-lab").dataset.time) >= 0.5, { timeout: 5_000, polling: 20 })
+      .then(() => true, () => false);
+    const end = await now();
+    const turned = Math.hypot(...end.orientation.map((c, i) => c - start.orientation[i]));
+    runs.push({ route, focused, restarted, start: start.time, end: end.time, turned });
+  }
+  result.scenarios.restarts = runs;
+  await page.close();
+});
+
 // 8. A 1920 × 1080 display at 1.5 device pixels per CSS pixel, for a person to look at.
 await scenario("hidpi", async () => {
   const page = await open("hidpi", "/?sample=tennis_racket&spin=2", { width: 1280, height: 720 }, 1.5);

@@ -898,6 +898,11 @@ fn the_intermediate_spin_turns_over_and_the_others_wobble() {
             panic!("axis {}: {:?}", axis + 1, primary.polhode());
         };
         let turns = primary.turn_over_interval();
-        assert_eq!(turns, (axis == 1).then_some(period / 2.0), "axis {}", axis + 1);
+        assert_eq!(
+            turns,
+            (axis == 1).then_some(period / 2.0),
+            "axis {}",
+            axis + 1
+        );
     }
 }
