@@ -638,3 +638,21 @@ fn shortcuts_act_with_a_button_focused_and_escape_returns_the_keys() {
         "3 went to the field, not to the spin"
     );
 }
+
+/// A widget that gets the focus (Tab) is scrolled into view: the side panel's last button, far
+/// below the bottom of a 1280 × 600 window.
+#[test]
+fn the_focused_widget_is_scrolled_into_view() {
+    let mut h = harness_of_size([1280.0, 600.0]);
+    frames(&mut h, 2);
+    let screen = h.ctx.content_rect();
+    let before = h.get_by_label("Reset settings").rect();
+    assert!(
+        !screen.contains_rect(before),
+        "already in view at {before:?}"
+    );
+    h.get_by_label("Reset settings").focus();
+    frames(&mut h, 30);
+    let after = h.get_by_label("Reset settings").rect();
+    assert!(screen.contains_rect(after), "out of view at {after:?}");
+}

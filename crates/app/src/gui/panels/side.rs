@@ -40,6 +40,14 @@ pub fn show(
         if ui.button("Reset settings").clicked() {
             commands.push(Command::ResetSettings);
         }
+        // Tab moves the focus without scrolling: a keyboard user would tab on out of sight.
+        let focused = ui
+            .memory(|m| m.focused())
+            .and_then(|id| ui.ctx().read_response(id));
+        if let Some(r) = focused.filter(|r| r.gained_focus() && ui.min_rect().contains_rect(r.rect))
+        {
+            ui.scroll_to_rect(r.rect, None);
+        }
     });
 }
 
