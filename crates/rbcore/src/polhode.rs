@@ -151,7 +151,7 @@ pub fn polhode(moments: &Vector3<f64>, l: &Vector3<f64>) -> Polhode {
 /// ```
 pub fn cone_angle(moments: &Vector3<f64>, l: &Vector3<f64>, axis: usize) -> f64 {
     let l2 = l.norm_squared();
-    if !(l2 > 0.0) {
+    if l2.is_nan() || l2 <= 0.0 {
         return 0.0;
     }
     let i = moments;
