@@ -266,16 +266,20 @@ await scenario("record", async () => {
 // 7b. Fifty restarts by every route: the keys 1, 2, 3 and R, and the side panel's Spin axis and
 // Reset buttons, each with the view holding the keys (Escape) and with a widget focused (Tab).
 // After each, with no further input, the simulated time (data-time) starts again and runs on
-// past half a second, and the body turns (data-orientation). A restart once left the clock
+// past half a second, the body turns (data-orientation) and the 3D view shows it turning. A restart once left the clock
 // standing at 0.05–0.13 s until the next input event.
 // The side panel's Motion section at 1280 × 800 (CSS pixels), as page-1280x800.png shows it.
 const SPIN = [1, 2, 3].map((k) => ({ x: 63 + (k - 1) * 85, y: 746 }));
 const RESET = { x: 159, y: 723 };
 await scenario("restarts", async () => {
   const page = await open("restarts", "/");
+  // The clock and orientation the page publishes, and the 3D view's pixels as shown (a page
+  // that went on simulating but stopped presenting would show the same picture).
   const now = async () => {
     const f = await figures(page);
-    return { time: Number(f.time), orientation: f.orientation.split(" ").map(Number) };
+    const [x, y, width, height] = f.view.split(" ").map(Number);
+    const shown = await page.screenshot({ clip: { x, y, width, height }, encoding: "base64" });
+    return { time: Number(f.time), orientation: f.orientation.split(" ").map(Number), shown };
   };
   const routes = [
     ["key 1", () => page.keyboard.press("1")],
@@ -307,7 +311,8 @@ await scenario("restarts", async () => {
       .then(() => true, () => false);
     const end = await now();
     const turned = Math.hypot(...end.orientation.map((c, i) => c - start.orientation[i]));
-    runs.push({ route, focused, restarted, start: start.time, end: end.time, turned });
+    const redrawn = start.shown !== end.shown;
+    runs.push({ route, focused, restarted, ran, start: start.time, end: end.time, turned, redrawn });
   }
   result.scenarios.restarts = runs;
   await page.close();
