@@ -537,10 +537,10 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                 i.poke_fraction = percent / 100.0;
             }
             let primary = lab.primary();
+            let impulse = primary.poke_impulse(lab.settings());
             ui.small(format!(
-                "J = {:.4e} N·s, |ΔL| up to {:.4e} kg m²/s",
-                primary.poke_impulse(lab.settings()),
-                primary.poke_impulse(lab.settings()) * primary.reach()
+                "J = {impulse:.4e} N·s, |ΔL| up to {:.4e} kg m²/s",
+                impulse * primary.reach()
             ));
             number(
                 ui,
