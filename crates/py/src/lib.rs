@@ -17,8 +17,8 @@ mod threads;
 
 use std::path::PathBuf;
 
-use inertia_lab::batch::{self, ColumnData};
-use inertia_lab::input::{Request, Resolved, Source, resolve};
+use inertia_io::batch::{self, ColumnData};
+use inertia_io::input::{Request, Resolved, Source, resolve};
 use massprops::defects::{Holes, Weld};
 use massprops::{MassSpec, Method, Repairs};
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
@@ -350,7 +350,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(file_ids, m)?)?;
     m.add_class::<MassResult>()?;
     m.add("MeshError", m.py().get_type::<threads::MeshError>())?;
-    m.add("SCHEMA_VERSION", inertia_lab::cli::report::SCHEMA_VERSION)?;
+    m.add("SCHEMA_VERSION", inertia_io::report::SCHEMA_VERSION)?;
     m.add("BATCH_SCHEMA_VERSION", batch::SCHEMA_VERSION)?;
     m.add("OVERLAP_BUDGET", massprops::defects::OVERLAP_BUDGET)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -1,9 +1,10 @@
 //! `MassResult`: one body's numbers as Python reads them. The attributes are computed when read
 //! (numpy arrays, fresh each time); `to_dict()` is `props --json`'s object, built by the same
-//! code (`inertia_lab::cli::report::json`), so the two never disagree.
+//! code (`inertia_io::report::json`), so the two never disagree.
 
-use inertia_lab::cli::report::json;
-use inertia_lab::export::{ExportOptions, Format, Frame, LengthUnit, UpAxis, quaternion_wxyz};
+use inertia_io::choice;
+use inertia_io::export::{ExportOptions, Format, Frame, LengthUnit, UpAxis, quaternion_wxyz};
+use inertia_io::report::json;
 use massprops::{Analysis, Composite, MassProperties};
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
@@ -221,54 +222,21 @@ impl MassResult {
     /// mesh in millimetres, compute with the density in kg/mm³.
     #[pyo3(signature = (format, *, units="m", up="y", frame=None))]
     fn export(&self, format: &str, units: &str, up: &str, frame: Option<&str>) -> PyResult<String> {
-        let format = match format {
-            "json" => Format::Json,
-            "urdf" => Format::Urdf,
-            "mjcf" => Format::Mjcf,
-            "sdf" => Format::Sdf,
-            "unity" => Format::Unity,
-            "godot" => Format::Godot,
-            "unreal" => Format::Unreal,
-            "rapier" => Format::Rapier,
-            "gltf" => Format::Gltf,
-            other => {
-                return Err(PyValueError::new_err(format!(
-                    "format must be one of json, urdf, mjcf, sdf, unity, godot, unreal, rapier, \
-                     gltf; not {other:?}"
-                )));
-            }
-        };
+        let format: Format = choice::parse(format).map_err(value_error)?;
         let units: LengthUnit = units
             .parse()
             .map_err(|e| PyValueError::new_err(format!("units: {e}")))?;
-        let up = match up {
-            "y" => UpAxis::Y,
-            "z" => UpAxis::Z,
-            other => {
-                return Err(PyValueError::new_err(format!(
-                    "up must be \"y\" or \"z\", not {other:?}"
-                )));
-            }
-        };
-        let frame = match frame {
-            None => None,
-            Some("com-principal") => Some(Frame::ComPrincipal),
-            Some("origin") => Some(Frame::Origin),
-            Some(other) => {
-                return Err(PyValueError::new_err(format!(
-                    "frame must be \"com-principal\" or \"origin\", not {other:?}"
-                )));
-            }
-        };
+        let up: UpAxis = choice::parse(up).map_err(value_error)?;
+        let frame: Option<Frame> = frame.map(choice::parse).transpose().map_err(value_error)?;
         let options = ExportOptions {
             format,
             units,
             up,
             frame,
         };
-        inertia_lab::export::export(self.properties(), &options)
+        inertia_io::export::export(self.properties(), &options)
             .map(|out| out.text)
-            .map_err(|e| PyValueError::new_err(e.to_string()))
+            .map_err(value_error)
     }
 
     /// MuJoCo MJCF `<inertial>` text (`export("mjcf", …)`).
@@ -325,4 +293,9 @@ fn to_python<'py>(py: Python<'py>, value: &Value) -> PyResult<Bound<'py, PyAny>>
             dict.into_any()
         }
     })
+}
+
+/// A `ValueError` carrying the library's own message.
+fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
 }

@@ -7,7 +7,7 @@
 
 use std::sync::{Arc, Mutex};
 
-use inertia_lab::input::InputError;
+use inertia_io::input::InputError;
 use massprops::MeshError as Mesh;
 use pyo3::exceptions::{PyFileNotFoundError, PyIndexError, PyOSError, PyValueError};
 use pyo3::prelude::*;

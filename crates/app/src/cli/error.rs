@@ -38,9 +38,9 @@ pub fn positive(name: &str, v: f64) -> Result<f64, CliError> {
     }
 }
 
-impl From<crate::input::InputError> for CliError {
-    fn from(e: crate::input::InputError) -> Self {
-        use crate::input::InputError;
+impl From<inertia_io::input::InputError> for CliError {
+    fn from(e: inertia_io::input::InputError) -> Self {
+        use inertia_io::input::InputError;
         match e {
             InputError::UnknownPart { .. } | InputError::MassOfParts => {
                 CliError::Usage(e.to_string())

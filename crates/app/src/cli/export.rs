@@ -5,13 +5,14 @@ use std::path::PathBuf;
 use clap::Args;
 use massprops::{MassProperties, MassSpec, Material, Method};
 
+use super::choice::choice;
 use super::error::{CliError, positive};
 use super::parts::PartArgs;
 use super::repair::RepairArgs;
-use crate::export::{
+use inertia_io::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, UpAxis, density_per_cubic_unit, export,
 };
-use crate::input::{Request, Resolved, Source, resolve};
+use inertia_io::input::{Request, Resolved, Source, resolve};
 
 /// The default density, water's (kg/m³).
 const WATER: f64 = 1000.0;
@@ -24,14 +25,14 @@ pub struct ExportArgs {
     /// with their materials, placements and units.
     pub file: PathBuf,
     /// Output format.
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Format>())]
     pub format: Format,
     /// Length unit of the mesh's coordinates (OBJ and STL carry none): m, cm, mm, in or ft.
     /// Default m; a body file gives its own.
     #[arg(long, value_parser = parse_unit)]
     pub units: Option<LengthUnit>,
     /// Which mesh axis points up.
-    #[arg(long, value_enum, default_value = "y")]
+    #[arg(long, value_parser = choice::<UpAxis>(), default_value = "y")]
     pub up: UpAxis,
     /// Density in kg/m³ (default 1000, water).
     #[arg(long, conflicts_with_all = ["mass", "material"], allow_negative_numbers = true)]
@@ -46,7 +47,7 @@ pub struct ExportArgs {
     /// Axes the target reads the inertia in (about the centre of mass either way):
     /// com-principal (diagonal + rotation) or origin (the mesh's own axes). Default: origin for
     /// json, urdf, sdf, mjcf and godot; com-principal, the only choice, for the others.
-    #[arg(long, value_enum)]
+    #[arg(long, value_parser = choice::<Frame>())]
     pub frame: Option<Frame>,
     /// Write to FILE instead of standard output.
     #[arg(long, short)]
@@ -122,7 +123,7 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
             (parts.composite.properties, units)
         }
     };
-    for line in super::report::words::warning_lines(&file.to_string(), &resolved) {
+    for line in inertia_io::report::words::warning_lines(&file.to_string(), &resolved) {
         eprintln!("{line}");
     }
     write(args, &properties, units)

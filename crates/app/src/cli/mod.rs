@@ -4,12 +4,12 @@
 //! geometry), with their exit codes ([`error`]).
 
 pub mod audit;
+mod choice;
 pub mod error;
 pub mod export;
 pub mod parts;
 pub mod props;
 pub mod repair;
-pub mod report;
 pub mod simulate;
 
 pub use error::CliError;

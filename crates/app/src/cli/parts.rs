@@ -1,12 +1,12 @@
 //! Bodies made of parts on the command line: a mesh file whose parts get their own material
 //! (`--density-of NAME=RHO`, `--material-of NAME=steel`, `--mass-of NAME=M`), turned into the
-//! [`PartMaterial`]s of the one input path ([`crate::input`]). Shared by `props` and `export`.
+//! [`PartMaterial`]s of the one input path ([`inertia_io::input`]). Shared by `props` and `export`.
 
 use clap::Args;
 use massprops::{Material, MaterialEntry};
 
 use super::error::CliError;
-use crate::input::PartMaterial;
+use inertia_io::input::PartMaterial;
 
 /// Reads the VALUE of a NAME=VALUE flag as a material, or says why not.
 type ReadMaterial<'a> = dyn Fn(&str) -> Result<MaterialEntry, String> + 'a;

@@ -9,8 +9,8 @@ use massprops::{MassSpec, Method};
 use super::error::{CliError, positive};
 use super::parts::PartArgs;
 use super::repair::RepairArgs;
-use super::report::{json, table};
-use crate::input::{Request, Resolved, Source, resolve};
+use inertia_io::input::{Request, Resolved, Source, resolve};
+use inertia_io::report::{json, table};
 
 /// Mass-distribution method, as named on the command line.
 #[derive(Debug, Clone, Copy, ValueEnum)]

@@ -18,8 +18,8 @@ use massprops::MassSpec;
 
 use super::error::{CliError, positive};
 use super::repair::RepairArgs;
-use crate::input::{Request, Resolved, Source, resolve};
 use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
+use inertia_io::input::{Request, Resolved, Source, resolve};
 
 /// Arguments of `simulate`. Without `--mesh` or `--inertia` it runs the canonical
 /// tennis-racket case I = (1, 2, 3), ω₀ = (0.001, 10, 0.001).
@@ -120,7 +120,8 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
             ..Request::default()
         };
         let resolved = resolve(Source::Path(path), &request)?;
-        for line in super::report::words::warning_lines(&path.display().to_string(), &resolved) {
+        for line in inertia_io::report::words::warning_lines(&path.display().to_string(), &resolved)
+        {
             eprintln!("{line}");
         }
         let mut props = match resolved {

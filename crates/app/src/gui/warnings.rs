@@ -191,7 +191,7 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
 
 /// "face 12 (line 40)" or "face 12".
 fn face(f: usize, lines: &[u32]) -> String {
-    format!("face {}", crate::wording::face_line(f, lines))
+    format!("face {}", inertia_io::wording::face_line(f, lines))
 }
 
 /// "e.g. face 12 (line 40), face 13 (line 41)".
@@ -204,7 +204,7 @@ fn faces(list: &[usize], lines: &[u32]) -> String {
 }
 
 fn list(indices: &[usize]) -> String {
-    crate::wording::list(indices)
+    inertia_io::wording::list(indices)
 }
 
 #[cfg(test)]

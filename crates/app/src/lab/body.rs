@@ -18,7 +18,7 @@ use super::geometry::{DRAW_BUDGET, Drawn, TriMesh};
 use super::parts::PartModel;
 use super::picking::Bvh;
 use super::samples::{SAMPLE_BODIES, SAMPLE_PART_MESHES, SAMPLES};
-use crate::input::Request;
+use inertia_io::input::Request;
 
 /// A body made of parts, as loaded: the parts and what they make together.
 #[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]

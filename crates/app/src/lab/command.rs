@@ -28,7 +28,7 @@ pub enum Command {
     LoadFile(PathBuf),
     /// Load files given by their bytes (the browser's): a body file with its meshes, or a mesh;
     /// it replaces every specimen's body.
-    LoadFiles(crate::input::FileSet),
+    LoadFiles(inertia_io::input::FileSet),
     /// Load a built-in sample by label.
     LoadSample(String),
     /// Write a specimen's plot history as CSV.
@@ -81,7 +81,7 @@ pub enum Command {
     AddPart(PathBuf),
     /// Add each mesh of files given by their bytes (the browser's) as a new part, as
     /// [`Command::AddPart`].
-    AddPartFiles(crate::input::FileSet),
+    AddPartFiles(inertia_io::input::FileSet),
     /// Change one part's settings (material, void, thin wall, placement, name) and whether it
     /// is drawn; the motion goes on with p and L kept.
     EditPart {

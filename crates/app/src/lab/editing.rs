@@ -12,7 +12,7 @@ use super::Lab;
 use super::body::{EditEffect, LoadedBody};
 use super::error::LabError;
 use super::parts::{self, PartModel};
-use crate::input::FileSet;
+use inertia_io::input::FileSet;
 
 impl Lab {
     /// [`Command::SplitIntoParts`](super::Command::SplitIntoParts).

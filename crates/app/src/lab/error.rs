@@ -17,7 +17,7 @@ pub enum LabError {
     Mesh(#[from] MeshError),
     /// A file that gives no body through the one input path.
     #[error(transparent)]
-    Input(#[from] crate::input::InputError),
+    Input(#[from] inertia_io::input::InputError),
     /// A mesh or body named for the message (a file name, a sample's label, a body's name).
     #[error("{name}: {source}")]
     Named {

@@ -10,8 +10,8 @@ use super::body::LoadedBody;
 use super::error::LabError;
 use super::parts::from_resolved;
 use super::robot::{self, RobotModel};
-use crate::input::{self, FileSet, Request, Resolved, Source};
 use crate::platform::{self, Job, JobEvent};
+use inertia_io::input::{self, FileSet, Request, Resolved, Source};
 
 /// Where a load is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]

@@ -14,7 +14,7 @@ use massprops::{
 use nalgebra::Isometry3;
 
 use super::error::LabError;
-use crate::input::{self, FileSet, Request, Resolved, Source};
+use inertia_io::input::{self, FileSet, Request, Resolved, Source};
 
 /// One part: what the user set, and what was integrated once.
 #[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]

@@ -110,7 +110,7 @@ pub fn link_body(model: &RobotModel, index: usize) -> Result<LoadedBody, LabErro
         LabError::Robot(format!(
             "link {}: {}",
             link.name,
-            crate::findings::unweighed_text(why, "collision")
+            inertia_io::report::findings::unweighed_text(why, "collision")
         ))
     })?;
     let parts = link

@@ -800,8 +800,8 @@ fn a_robot_link_spins_beside_a_copy_with_its_stated_inertia() {
 }
 
 /// The workspace's sample files, by name, as a browser hands them over (bytes, no folder).
-fn given(names: &[&str]) -> crate::input::FileSet {
-    let mut files = crate::input::FileSet::default();
+fn given(names: &[&str]) -> inertia_io::input::FileSet {
+    let mut files = inertia_io::input::FileSet::default();
     for name in names {
         let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("../../assets")

@@ -4,8 +4,8 @@
 
 use egui::{Color32, RichText};
 
-use crate::findings::{finding_text, num};
 use crate::lab::{Command, Lab};
+use inertia_io::report::findings::{finding_text, num};
 
 /// Colour of a finding that proves the stated inertia impossible, and of the others.
 const PROOF: Color32 = Color32::from_rgb(255, 120, 90);

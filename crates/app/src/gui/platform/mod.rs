@@ -7,7 +7,7 @@
 
 use std::path::PathBuf;
 
-use crate::input::FileSet;
+use inertia_io::input::FileSet;
 
 #[cfg_attr(target_arch = "wasm32", path = "web.rs")]
 #[cfg_attr(not(target_arch = "wasm32"), path = "native.rs")]

@@ -15,9 +15,9 @@ use wasm_bindgen::prelude::*;
 use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
 use crate::gui::{LabApp, SETTINGS_KEY, link};
-use crate::input::FileSet;
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Message};
+use inertia_io::input::FileSet;
 
 /// What the side panel says may be dropped.
 pub const DROP_HINT: &str = "or drop an OBJ/STL, or a body .toml with its meshes, on the page";

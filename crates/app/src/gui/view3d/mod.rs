@@ -199,8 +199,8 @@ impl View3d {
             hint = format!(
                 "Drawn simplified: {} of {} triangles (the drawing budget of a software \
                  renderer); every number and pick uses them all · {hint}",
-                crate::wording::millions(drawn.mesh.triangles.len()),
-                crate::wording::millions(lab.primary().body().mesh.triangles.len()),
+                inertia_io::wording::millions(drawn.mesh.triangles.len()),
+                inertia_io::wording::millions(lab.primary().body().mesh.triangles.len()),
             );
         }
         if lab.settings().view.wireframe

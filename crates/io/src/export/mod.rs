@@ -34,6 +34,8 @@ mod urdf;
 
 use massprops::MassProperties;
 
+use crate::choice::Choice;
+
 /// The tensor sign convention, stated in every output (`props` and every export format).
 pub const TENSOR_CONVENTION: &str =
     "inertia tensor I = sum m(|r|^2 E - r r^T): diagonal = moments, off-diagonals = -sum(m*x*y)";
@@ -43,7 +45,7 @@ pub use frames::{UpAxis, density_per_cubic_unit, quaternion_wxyz};
 pub use massprops::LengthUnit;
 
 /// An output format.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
     /// Our JSON schema, every number in SI, mesh axes.
     Json,
@@ -65,9 +67,21 @@ pub enum Format {
     Gltf,
 }
 
-impl Format {
-    /// The name used on the command line.
-    pub fn name(self) -> &'static str {
+impl Choice for Format {
+    const OPTION: &'static str = "format";
+    const ALL: &'static [Self] = &[
+        Format::Json,
+        Format::Urdf,
+        Format::Mjcf,
+        Format::Sdf,
+        Format::Unity,
+        Format::Godot,
+        Format::Unreal,
+        Format::Rapier,
+        Format::Gltf,
+    ];
+
+    fn name(self) -> &'static str {
         match self {
             Format::Json => "json",
             Format::Urdf => "urdf",
@@ -81,6 +95,22 @@ impl Format {
         }
     }
 
+    fn help(self) -> &'static str {
+        match self {
+            Format::Json => "Our JSON schema, every number in SI, mesh axes",
+            Format::Urdf => "URDF `<inertial>` (ROS)",
+            Format::Mjcf => "MuJoCo MJCF `<inertial>`",
+            Format::Sdf => "SDFormat `<inertial>` (Gazebo)",
+            Format::Unity => "Unity `Rigidbody` C# snippet with the same values as JSON",
+            Format::Godot => "Godot 4 `RigidBody3D` scene (.tscn) properties",
+            Format::Unreal => "Unreal Engine C++ snippet (cm, kg·cm², left-handed Z-up)",
+            Format::Rapier => "rapier3d / bevy_rapier3d Rust snippet building `MassProperties`",
+            Format::Gltf => "glTF `KHR_physics_rigid_bodies` node extension with its motion",
+        }
+    }
+}
+
+impl Format {
     /// The axes and length unit the target reads.
     fn target(self) -> (Axes, LengthUnit) {
         match self {
@@ -107,12 +137,33 @@ impl Format {
 }
 
 /// Which axes the inertia is written in (always about the centre of mass).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Frame {
     /// Centre of mass and principal axes: a diagonal plus a rotation.
     ComPrincipal,
     /// The mesh's own axes (the link/body frame at the mesh origin): the full tensor.
     Origin,
+}
+
+impl Choice for Frame {
+    const OPTION: &'static str = "frame";
+    const ALL: &'static [Self] = &[Frame::ComPrincipal, Frame::Origin];
+
+    fn name(self) -> &'static str {
+        match self {
+            Frame::ComPrincipal => "com-principal",
+            Frame::Origin => "origin",
+        }
+    }
+
+    fn help(self) -> &'static str {
+        match self {
+            Frame::ComPrincipal => "Centre of mass and principal axes: a diagonal plus a rotation",
+            Frame::Origin => {
+                "The mesh's own axes (the link/body frame at the mesh origin): the full tensor"
+            }
+        }
+    }
 }
 
 /// What to write and how the mesh is to be read.

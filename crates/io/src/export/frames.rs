@@ -46,14 +46,34 @@ use massprops::{LengthUnit, MassProperties};
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 use super::ExportError;
+use crate::choice::Choice;
 
 /// Which mesh axis points up.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum UpAxis {
     /// +Y is up (OBJ from most tools, glTF, Unity, Godot).
     Y,
     /// +Z is up (CAD, Blender's own frame, ROS, Gazebo, MuJoCo, Unreal).
     Z,
+}
+
+impl Choice for UpAxis {
+    const OPTION: &'static str = "up";
+    const ALL: &'static [Self] = &[UpAxis::Y, UpAxis::Z];
+
+    fn name(self) -> &'static str {
+        match self {
+            UpAxis::Y => "y",
+            UpAxis::Z => "z",
+        }
+    }
+
+    fn help(self) -> &'static str {
+        match self {
+            UpAxis::Y => "+Y is up (OBJ from most tools, glTF, Unity, Godot)",
+            UpAxis::Z => "+Z is up (CAD, Blender's own frame, ROS, Gazebo, MuJoCo, Unreal)",
+        }
+    }
 }
 
 /// A density in kg/m³ turned into kg per cubic mesh unit, for integrating the mesh as it is.

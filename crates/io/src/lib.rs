@@ -1,0 +1,18 @@
+//! Inertia Lab's input path and outputs, shared by every front end (the command line, the app,
+//! the page and the Python package), in parts that depend in one direction:
+//! - [`wording`]: how numbers, faces, lines and lists are written;
+//! - [`choice`]: options with a fixed list of values (format, frame, up axis), listed once;
+//! - [`input`]: the one input path, a file and the mass and repair flags → a body;
+//! - [`export`]: mass properties written for engines and robot formats (pure functions);
+//! - [`report`]: `props`' and `audit`'s reports, as a table and as JSON, and their words;
+//! - [`batch`]: the batch table, one row per file whatever it holds (the Python package's).
+//!
+//! Nothing here knows a command line, a window or a simulation: ripgrep keeps its printer in a
+//! library crate under a thin binary, and polars' Python layer depends on library crates only.
+
+pub mod batch;
+pub mod choice;
+pub mod export;
+pub mod input;
+pub mod report;
+pub mod wording;
