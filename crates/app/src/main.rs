@@ -29,6 +29,9 @@ struct Cli {
 enum Command {
     /// Mass properties of a mesh (OBJ or STL): volume, mass, centre of mass, inertia tensor,
     /// principal moments and axes, the bounding-box and point-mass approximations, diagnostics.
+    #[command(about = format!("Mass properties of a mesh ({}): volume, mass, centre of mass, \
+        inertia tensor, principal moments and axes, the bounding-box and point-mass \
+        approximations, diagnostics", inertia_io::kind::mesh_format_words()))]
     Props(cli::props::PropsArgs),
     /// Headless rigid-body simulation of a free body (CSV on stdout or --csv FILE); --compare
     /// prints the integrator accuracy-for-cost table.

@@ -2,6 +2,8 @@
 //! the page and the Python package), in parts that depend in one direction:
 //! - [`wording`]: how numbers, faces, lines and lists are written;
 //! - [`choice`]: options with a fixed list of values (format, frame, up axis), listed once;
+//! - [`kind`]: what a file holds (mesh, body, robot), and the extension lists every front end
+//!   offers, written from massprops' mesh-format table;
 //! - [`input`]: the one input path, a file and the mass and repair flags → a body;
 //! - [`export`]: mass properties written for engines and robot formats (pure functions);
 //! - [`report`]: `props`' and `audit`'s reports, as a table and as JSON, and their words;
@@ -14,5 +16,6 @@ pub mod batch;
 pub mod choice;
 pub mod export;
 pub mod input;
+pub mod kind;
 pub mod report;
 pub mod wording;

@@ -20,6 +20,18 @@ pub fn list(indices: &[usize]) -> String {
         .join(", ")
 }
 
+/// Words joined as alternatives: "a", "a or b", "a, b or c".
+pub fn alternatives<S: AsRef<str>>(words: &[S]) -> String {
+    match words {
+        [] => String::new(),
+        [one] => one.as_ref().to_owned(),
+        [rest @ .., last] => {
+            let rest: Vec<&str> = rest.iter().map(AsRef::as_ref).collect();
+            format!("{} or {}", rest.join(", "), last.as_ref())
+        }
+    }
+}
+
 /// `v` rounded to `digits` significant digits, trailing zeros dropped (`0.2`, `7e-11`).
 pub fn significant(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {

@@ -169,10 +169,12 @@ pub enum MeshError {
         source: std::sync::Arc<std::io::Error>,
     },
     /// The file extension is not one we can load.
-    #[error("{}: unsupported file type (expected .obj or .stl)", path.display())]
+    #[error("{}: unsupported file type (expected {expected})", path.display())]
     UnsupportedFormat {
         /// The file.
         path: PathBuf,
+        /// The extensions there are, in words (".obj or .stl").
+        expected: String,
     },
     /// The file's text or bytes do not follow its format.
     #[error("{}{}: {message}", path.display(), line.map(|l| format!(", line {l}")).unwrap_or_default())]

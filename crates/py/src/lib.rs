@@ -24,7 +24,7 @@ use massprops::{MassSpec, Method, Repairs};
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList, PyTuple};
 
 use arrays::{BadArrays, Faces, views};
 use result::{Body, MassResult};
@@ -353,6 +353,15 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SCHEMA_VERSION", inertia_io::report::SCHEMA_VERSION)?;
     m.add("BATCH_SCHEMA_VERSION", batch::SCHEMA_VERSION)?;
     m.add("OVERLAP_BUDGET", massprops::defects::OVERLAP_BUDGET)?;
+    // The files a folder is searched for: every mesh format the readers take and body files,
+    // from the one table the app's dialogs read (never a copy in Python).
+    let openable = inertia_io::kind::Openable { robots: false };
+    let extensions: Vec<String> = openable
+        .extensions()
+        .iter()
+        .map(|e| format!(".{e}"))
+        .collect();
+    m.add("MESH_EXTENSIONS", PyTuple::new(m.py(), extensions)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -13,6 +13,7 @@ use inertia_io::export::{
     ExportError, ExportOptions, Format, Frame, LengthUnit, UpAxis, density_per_cubic_unit, export,
 };
 use inertia_io::input::{Request, Resolved, Source, resolve};
+use inertia_io::kind::mesh_extension_words;
 
 /// The default density, water's (kg/m³).
 const WATER: f64 = 1000.0;
@@ -23,6 +24,9 @@ pub struct ExportArgs {
     /// Mesh file: .obj or .stl (binary or ASCII), all its parts one body unless parts get their
     /// own material (--density-of, --material-of, --mass-of); or a body file (.toml) of parts
     /// with their materials, placements and units.
+    #[arg(help = format!("Mesh file: {} (STL binary or ASCII), all its parts one body unless \
+        parts get their own material (--density-of, --material-of, --mass-of); or a body file \
+        (.toml) of parts with their materials, placements and units", mesh_extension_words()))]
     pub file: PathBuf,
     /// Output format.
     #[arg(long, value_parser = choice::<Format>())]

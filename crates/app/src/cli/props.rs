@@ -10,6 +10,7 @@ use super::error::{CliError, positive};
 use super::parts::PartArgs;
 use super::repair::RepairArgs;
 use inertia_io::input::{Request, Resolved, Source, resolve};
+use inertia_io::kind::mesh_extension_words;
 use inertia_io::report::{json, table};
 
 /// Mass-distribution method, as named on the command line.
@@ -42,6 +43,10 @@ pub struct PropsArgs {
     /// Mesh file: .obj or .stl (binary or ASCII), all its parts one body unless parts get their
     /// own material (--density-of, --material-of, --mass-of) or --parts is given; or a body
     /// file (.toml) of parts with their materials and placements.
+    #[arg(help = format!("Mesh file: {} (STL binary or ASCII), all its parts one body unless \
+        parts get their own material (--density-of, --material-of, --mass-of) or --parts is \
+        given; or a body file (.toml) of parts with their materials and placements",
+        mesh_extension_words()))]
     pub file: PathBuf,
     /// Density: mass per volume (per area for --method shell). Default 1.
     #[arg(long, conflicts_with = "mass", allow_negative_numbers = true)]

@@ -20,6 +20,7 @@ use super::error::{CliError, positive};
 use super::repair::RepairArgs;
 use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
 use inertia_io::input::{Request, Resolved, Source, resolve};
+use inertia_io::kind::mesh_extension_words;
 
 /// Arguments of `simulate`. Without `--mesh` or `--inertia` it runs the canonical
 /// tennis-racket case I = (1, 2, 3), ω₀ = (0.001, 10, 0.001).
@@ -27,7 +28,8 @@ use inertia_io::input::{Request, Resolved, Source, resolve};
 pub struct SimulateArgs {
     /// Mesh file (.obj or .stl), or a body file of parts (.toml); its exact mass properties give
     /// the body.
-    #[arg(long, conflicts_with = "inertia")]
+    #[arg(long, conflicts_with = "inertia", help = format!("Mesh file ({}), or a body file of \
+        parts (.toml); its exact mass properties give the body", mesh_extension_words()))]
     pub mesh: Option<PathBuf>,
     /// Density of the mesh's solid (default 1). Only with --mesh.
     #[arg(

@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use egui::Key;
+use inertia_io::kind::FileKind;
 
 mod archive;
 mod bench;
@@ -229,7 +230,9 @@ impl LabApp {
             return;
         }
         let names: Vec<&std::path::Path> = dropped.iter().map(|f| f.path()).collect();
-        let body_file = names.iter().any(|n| massprops::io::is_body_file(n));
+        let body_file = names
+            .iter()
+            .any(|n| matches!(FileKind::of(n), Some(FileKind::Body)));
         let purpose = if self.lab.primary().body().composition.is_some() && !body_file {
             DialogPurpose::AddPart
         } else {

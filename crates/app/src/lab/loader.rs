@@ -12,6 +12,7 @@ use super::parts::from_resolved;
 use super::robot::{self, RobotModel};
 use crate::platform::{self, Job, JobEvent};
 use inertia_io::input::{self, FileSet, Request, Resolved, Source};
+use inertia_io::kind::FileKind;
 
 /// Where a load is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -63,7 +64,7 @@ impl Job for LoadFiles {
 
     fn run(files: FileSet, progress: &dyn Fn((Stage, Option<f32>))) -> Self::Output {
         let path = files.main().map(Path::to_path_buf).unwrap_or_default();
-        if robot::is_description(&path) {
+        if FileKind::is_robot(&path) {
             return Err(LabError::RobotFromFiles(path).to_string());
         }
         progress((Stage::Checking, None));
@@ -103,7 +104,7 @@ impl Loading {
     pub fn start(path: PathBuf, wake: impl Fn() + Send + 'static) -> Self {
         let p = path.clone();
         Self::spawn(path, wake, move |send| {
-            if robot::is_description(&p) {
+            if FileKind::is_robot(&p) {
                 send(LoadEvent::Progress(Stage::Robot, None));
                 robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
             } else {

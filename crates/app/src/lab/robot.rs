@@ -28,15 +28,6 @@ pub struct RobotModel {
     pub shown: Option<usize>,
 }
 
-/// Whether `path` names a robot description (URDF, or an MJCF model) rather than a mesh.
-pub fn is_description(path: &Path) -> bool {
-    let extension = path.extension().and_then(|e| e.to_str());
-    matches!(
-        extension.map(str::to_ascii_lowercase).as_deref(),
-        Some("urdf" | "xml" | "mjcf")
-    )
-}
-
 /// Reads and audits the description at `path`, and the body of the whole robot.
 ///
 /// # Errors

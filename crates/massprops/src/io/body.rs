@@ -99,11 +99,14 @@ struct RawRotation {
     degrees: f64,
 }
 
+/// A body file's extension, lower case, without the dot.
+pub const BODY_FILE_EXTENSION: &str = "toml";
+
 /// Whether `path` names a body file (by its `.toml` extension, any case).
 pub fn is_body_file(path: &Path) -> bool {
     path.extension()
         .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+        .is_some_and(|e| e.eq_ignore_ascii_case(BODY_FILE_EXTENSION))
 }
 
 impl PartEntry {

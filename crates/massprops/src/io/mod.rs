@@ -12,7 +12,7 @@ mod stl;
 
 use std::path::Path;
 
-pub use body::{BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
+pub use body::{BODY_FILE_EXTENSION, BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
 #[cfg(fuzzing)]
 pub use obj::fast_path_agrees;
 pub use obj::parse_obj;
@@ -79,7 +79,69 @@ impl MeshFile {
     }
 }
 
-/// Loads an `.obj` or `.stl` file (chosen by extension, case-insensitive) as one body.
+/// A mesh format the readers take: one row of [`MESH_FORMATS`], with everything a front end
+/// needs to offer it (dialog filters, drop hints, help texts, a folder's file listing) and the
+/// reader that reads it. Adding a format is its reader and one row.
+#[derive(Debug)]
+pub struct MeshFormat {
+    /// Its name as people write it ("OBJ").
+    pub name: &'static str,
+    /// Its file extensions, lower case, without the dot; the first is the usual one.
+    pub extensions: &'static [&'static str],
+    /// Whether one file can hold several named parts (OBJ objects and groups, STL solids),
+    /// which a body can give their own materials.
+    pub holds_parts: bool,
+    /// Reads a file from disk in blocks, calling the progress callback with the fraction read.
+    load: fn(&Path, &dyn Fn(f32)) -> Result<MeshFile, MeshError>,
+    /// Parses a file already in memory.
+    parse: fn(&[u8], &Path) -> Result<MeshFile, MeshError>,
+}
+
+/// Every mesh format the readers take. (No column of magic bytes yet: neither OBJ, which is
+/// free text, nor STL, whose binary header is 80 free bytes that often begin "solid" like an
+/// ASCII file, has a signature to sniff; a file is known by its extension.)
+pub static MESH_FORMATS: [MeshFormat; 2] = [
+    MeshFormat {
+        name: "OBJ",
+        extensions: &["obj"],
+        holds_parts: true,
+        load: obj::load_obj,
+        parse: parse_obj,
+    },
+    MeshFormat {
+        name: "STL",
+        extensions: &["stl"],
+        holds_parts: true,
+        load: stl::load_stl,
+        parse: parse_stl,
+    },
+];
+
+impl MeshFormat {
+    /// The format of a file, by its extension (any case).
+    pub fn of(path: &Path) -> Option<&'static MeshFormat> {
+        let extension = extension(path)?;
+        MESH_FORMATS
+            .iter()
+            .find(|f| f.extensions.contains(&extension.as_str()))
+    }
+
+    /// Every extension of every format, in table order.
+    pub fn all_extensions() -> impl Iterator<Item = &'static str> {
+        MESH_FORMATS
+            .iter()
+            .flat_map(|f| f.extensions.iter().copied())
+    }
+
+    /// The formats' names joined for a sentence ("OBJ/STL").
+    pub fn names(separator: &str) -> String {
+        let names: Vec<&str> = MESH_FORMATS.iter().map(|f| f.name).collect();
+        names.join(separator)
+    }
+}
+
+/// Loads a mesh file of any format in [`MESH_FORMATS`] (chosen by extension, case-insensitive)
+/// as one body.
 ///
 /// OBJ and binary STL files are read in blocks: the whole file is never in memory at once
 /// (unless the OBJ fast path declines it; see [`parse_obj`]).
@@ -90,26 +152,30 @@ pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
 /// [`load_mesh`], calling `progress` with the fraction of the file read so far (0 to 1) after
 /// each block.
 pub fn load_mesh_reporting(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
-    match extension(path).as_deref() {
-        Some("obj") => return obj::load_obj(path, progress),
-        Some("stl") => return stl::load_stl(path, progress),
-        _ => {}
-    }
-    let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
-        path: path.to_path_buf(),
-        source: source.into(),
-    })?;
-    parse_mesh(&bytes, path)
+    let format = MeshFormat::of(path).ok_or_else(|| unsupported(path))?;
+    (format.load)(path, progress)
 }
 
 /// Parses a file already in memory; `path` names it in messages and gives the format.
 pub fn parse_mesh(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
-    match extension(path).as_deref() {
-        Some("obj") => parse_obj(bytes, path),
-        Some("stl") => parse_stl(bytes, path),
-        _ => Err(MeshError::UnsupportedFormat {
-            path: path.to_path_buf(),
-        }),
+    let format = MeshFormat::of(path).ok_or_else(|| unsupported(path))?;
+    (format.parse)(bytes, path)
+}
+
+/// The error for a file of no format in the table, listing the extensions there are.
+fn unsupported(path: &Path) -> MeshError {
+    let mut expected: Vec<String> = MeshFormat::all_extensions()
+        .map(|e| format!(".{e}"))
+        .collect();
+    let last = expected.pop().unwrap_or_default();
+    let expected = if expected.is_empty() {
+        last
+    } else {
+        format!("{} or {last}", expected.join(", "))
+    };
+    MeshError::UnsupportedFormat {
+        path: path.to_path_buf(),
+        expected,
     }
 }
 
@@ -153,4 +219,72 @@ fn test_files(ext: &str, dirs: &str) -> Vec<std::path::PathBuf> {
         }
     }
     files
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TETRA_OBJ: &str =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const TETRA_STL: &str = "solid t\n\
+        facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\nendloop\nendfacet\n\
+        facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 0 1\nendloop\nendfacet\n\
+        facet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 0 0 1\nvertex 0 1 0\nendloop\nendfacet\n\
+        facet normal 0 0 0\nouter loop\nvertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\nendloop\nendfacet\n\
+        endsolid t\n";
+
+    /// Each row is found by each of its extensions in any case, and no extension is in two rows.
+    #[test]
+    fn every_format_is_found_by_its_extensions() {
+        let all: Vec<&str> = MeshFormat::all_extensions().collect();
+        let mut distinct = all.clone();
+        distinct.sort_unstable();
+        distinct.dedup();
+        assert_eq!(
+            distinct.len(),
+            all.len(),
+            "an extension in two rows: {all:?}"
+        );
+        for format in &MESH_FORMATS {
+            for ext in format.extensions {
+                assert_eq!(
+                    ext.to_ascii_lowercase(),
+                    *ext,
+                    "{} lists {ext}",
+                    format.name
+                );
+                for name in [format!("a.{ext}"), format!("dir/B.{}", ext.to_uppercase())] {
+                    let found = MeshFormat::of(Path::new(&name)).map(|f| f.name);
+                    assert_eq!(found, Some(format.name), "{name}");
+                }
+            }
+        }
+        assert!(MeshFormat::of(Path::new("robot.urdf")).is_none());
+        assert!(MeshFormat::of(Path::new("no_extension")).is_none());
+    }
+
+    /// The table's readers read the unit tetrahedron (volume 1/6) from each format's text, and a
+    /// file of no format is refused with every extension named.
+    #[test]
+    fn the_table_dispatches_to_each_reader() {
+        for (name, text) in [("t.obj", TETRA_OBJ), ("t.stl", TETRA_STL)] {
+            let file = parse_mesh(text.as_bytes(), Path::new(name));
+            let mesh = file.map(|f| f.mesh).map_err(|e| e.to_string());
+            let volume = mesh
+                .as_ref()
+                .map(|m| crate::mass_properties(m, 1.0).map(|p| p.mass));
+            assert!(
+                matches!(volume, Ok(Ok(v)) if (v - 1.0 / 6.0).abs() < 1e-15),
+                "{name}: {volume:?}"
+            );
+        }
+        let e = parse_mesh(b"", Path::new("a.ply"))
+            .map(|_| ())
+            .map_err(|e| e.to_string());
+        assert_eq!(
+            e,
+            Err("a.ply: unsupported file type (expected .obj or .stl)".to_owned())
+        );
+    }
 }

@@ -23,8 +23,9 @@ from . import _native
 from ._api import Method, Repairs, _threads
 from ._table import _pyarrow, measure_table
 
-#: The extensions a folder is searched for.
-MESH_EXTENSIONS = (".obj", ".stl", ".toml")
+#: The extensions a folder is searched for: every mesh format the native readers take, and body
+#: files (from the native module's table, the one the app's dialogs use).
+MESH_EXTENSIONS: tuple[str, ...] = _native.MESH_EXTENSIONS
 
 
 @dataclass(frozen=True)

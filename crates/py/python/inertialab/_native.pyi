@@ -7,6 +7,7 @@ import numpy.typing as npt
 
 SCHEMA_VERSION: int
 BATCH_SCHEMA_VERSION: int
+MESH_EXTENSIONS: tuple[str, ...]
 OVERLAP_BUDGET: int
 __version__: str
 

@@ -85,7 +85,7 @@ fn body_section(
                 {
                     state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
-                ui.label(platform::DROP_HINT);
+                ui.label(platform::drop_hint());
             });
             if platform::READS_PATHS {
                 ui.horizontal(|ui| {

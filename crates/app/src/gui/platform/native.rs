@@ -9,6 +9,7 @@ use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::thread;
 
 use clap::Args;
+use inertia_io::kind::{Openable, mesh_extension_words, part_extensions, part_label};
 
 use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
@@ -16,8 +17,13 @@ use crate::gui::{LabApp, SETTINGS_KEY, capture};
 use crate::lab::settings::{AppSettings, InertiaSource};
 use crate::lab::{Command, Variant};
 
+/// What the window opens: meshes, bodies and robot descriptions.
+const OPENABLE: Openable = Openable { robots: true };
+
 /// What the side panel says may be dropped.
-pub const DROP_HINT: &str = "or drop an OBJ/STL, a body .toml or a robot .urdf/.xml on the window";
+pub fn drop_hint() -> String {
+    format!("or drop {} on the window", OPENABLE.words())
+}
 
 /// What a closed dialog that chose nothing says: rfd reports a cancel and a missing XDG desktop
 /// portal alike.
@@ -57,16 +63,10 @@ impl Dialog {
             let dialog = rfd::FileDialog::new();
             let path = match purpose {
                 DialogPurpose::OpenMesh => dialog
-                    .add_filter(
-                        "Meshes, bodies and robots (OBJ, STL, TOML, URDF, MJCF)",
-                        &[
-                            "obj", "stl", "toml", "urdf", "xml", "OBJ", "STL", "TOML", "URDF",
-                            "XML",
-                        ],
-                    )
+                    .add_filter(OPENABLE.label(), &any_case(&OPENABLE.extensions()))
                     .pick_file(),
                 DialogPurpose::AddPart => dialog
-                    .add_filter("Meshes (OBJ, STL)", &["obj", "stl", "OBJ", "STL"])
+                    .add_filter(part_label(), &any_case(&part_extensions()))
                     .pick_file(),
                 DialogPurpose::SaveBody => dialog
                     .add_filter("Body files", &["toml"])
@@ -115,7 +115,10 @@ impl Dialog {
 /// Arguments of the app (no subcommand).
 #[derive(Args, Debug, Default)]
 pub struct GuiArgs {
-    /// Mesh to open (.obj or .stl); the built-in T-handle when absent.
+    /// Mesh to open (.obj or .stl), a body file or a robot description; the built-in T-handle
+    /// when absent.
+    #[arg(help = format!("Mesh to open ({}), a body file (.toml) or a robot description \
+        (.urdf, .xml); the built-in T-handle when absent", mesh_extension_words()))]
     pub file: Option<PathBuf>,
     /// Render N frames continuously with default settings, print frame-time percentiles, exit.
     #[arg(long, value_name = "N")]
@@ -276,4 +279,13 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
         };
     }
     Ok(())
+}
+
+/// Each extension in lower and upper case: the portal's filters match case-sensitively, and
+/// files from Windows tools are often named `PART.STL`.
+fn any_case(extensions: &[&str]) -> Vec<String> {
+    extensions
+        .iter()
+        .flat_map(|e| [e.to_string(), e.to_ascii_uppercase()])
+        .collect()
 }

@@ -18,9 +18,16 @@ use crate::gui::{LabApp, SETTINGS_KEY, link};
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Message};
 use inertia_io::input::FileSet;
+use inertia_io::kind::{Openable, part_extensions, part_label};
+
+/// What the page opens: meshes and bodies (not robot descriptions, whose meshes it cannot
+/// fetch).
+const OPENABLE: Openable = Openable { robots: false };
 
 /// What the side panel says may be dropped.
-pub const DROP_HINT: &str = "or drop an OBJ/STL, or a body .toml with its meshes, on the page";
+pub fn drop_hint() -> String {
+    format!("or drop {}, on the page", OPENABLE.words())
+}
 
 /// What a closed picker that chose nothing says (or a drop of files the browser could not read,
 /// which the console names).
@@ -185,12 +192,9 @@ impl Dialog {
                 let slot = Rc::clone(&answer);
                 let dialog = rfd::AsyncFileDialog::new();
                 let dialog = if purpose == DialogPurpose::OpenMesh {
-                    dialog.add_filter(
-                        "Meshes and bodies (OBJ, STL, TOML with its meshes)",
-                        &["obj", "stl", "toml"],
-                    )
+                    dialog.add_filter(OPENABLE.label(), &OPENABLE.extensions())
                 } else {
-                    dialog.add_filter("Meshes (OBJ, STL)", &["obj", "stl"])
+                    dialog.add_filter(part_label(), &part_extensions())
                 };
                 wasm_bindgen_futures::spawn_local(async move {
                     let picked = dialog.pick_files().await;

@@ -1,0 +1,158 @@
+//! What a file holds, decided from its name in one place for every front end: a mesh of one of
+//! massprops' [`MESH_FORMATS`], a body file of parts, or a robot description. The dialogs'
+//! filters, the drop hints, the help texts and the Python package's folder listing are all
+//! written from these lists, so a mesh format added to the readers' table is offered everywhere.
+
+use std::path::Path;
+
+use massprops::io::{BODY_FILE_EXTENSION, MESH_FORMATS, MeshFormat};
+
+use crate::wording::alternatives;
+
+/// The extensions of robot descriptions: URDF, and MuJoCo's MJCF as `.xml` (or `.mjcf`).
+pub const ROBOT_EXTENSIONS: &[&str] = &["urdf", "xml", "mjcf"];
+
+/// What a file holds.
+#[derive(Debug, Clone, Copy)]
+pub enum FileKind {
+    /// A mesh, read by its format's reader.
+    Mesh(&'static MeshFormat),
+    /// A body file of parts (TOML naming meshes, materials and placements).
+    Body,
+    /// A robot description (URDF or MJCF).
+    Robot,
+}
+
+impl FileKind {
+    /// The kind of the file named `path`, by its extension (any case); `None` for a file the
+    /// lab does not read.
+    pub fn of(path: &Path) -> Option<FileKind> {
+        if let Some(format) = MeshFormat::of(path) {
+            return Some(FileKind::Mesh(format));
+        }
+        let extension = path.extension()?.to_str()?.to_ascii_lowercase();
+        if extension == BODY_FILE_EXTENSION {
+            Some(FileKind::Body)
+        } else if ROBOT_EXTENSIONS.contains(&extension.as_str()) {
+            Some(FileKind::Robot)
+        } else {
+            None
+        }
+    }
+
+    /// Whether `path` names a robot description.
+    pub fn is_robot(path: &Path) -> bool {
+        matches!(FileKind::of(path), Some(FileKind::Robot))
+    }
+}
+
+/// What a front end opens: meshes and body files always, robot descriptions where it reads
+/// them (the page does not: a description names mesh files it cannot fetch).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Openable {
+    /// Whether robot descriptions are opened.
+    pub robots: bool,
+}
+
+impl Openable {
+    /// The extensions of every file opened, lower case, without the dot.
+    pub fn extensions(self) -> Vec<&'static str> {
+        let mut all: Vec<&'static str> = MeshFormat::all_extensions().collect();
+        all.push(BODY_FILE_EXTENSION);
+        if self.robots {
+            all.extend(ROBOT_EXTENSIONS);
+        }
+        all
+    }
+
+    /// A file dialog's label for them ("Meshes, bodies and robots (OBJ, STL, TOML, URDF, MJCF)").
+    pub fn label(self) -> String {
+        let meshes = MeshFormat::names(", ");
+        if self.robots {
+            format!("Meshes, bodies and robots ({meshes}, TOML, URDF, MJCF)")
+        } else {
+            format!("Meshes and bodies ({meshes}, TOML with its meshes)")
+        }
+    }
+
+    /// What may be dropped, for a hint ("a mesh (OBJ/STL), a body .toml or a robot .urdf/.xml").
+    pub fn words(self) -> String {
+        let meshes = MeshFormat::names("/");
+        if self.robots {
+            format!("a mesh ({meshes}), a body .toml or a robot .urdf/.xml")
+        } else {
+            format!("a mesh ({meshes}), or a body .toml with its meshes")
+        }
+    }
+}
+
+/// The extensions of a part's mesh, lower case, without the dot.
+pub fn part_extensions() -> Vec<&'static str> {
+    MeshFormat::all_extensions().collect()
+}
+
+/// A dialog's label for a part's mesh ("Meshes (OBJ, STL)").
+pub fn part_label() -> String {
+    format!("Meshes ({})", MeshFormat::names(", "))
+}
+
+/// The mesh formats in words for help texts ("OBJ or STL").
+pub fn mesh_format_words() -> String {
+    let names: Vec<&str> = MESH_FORMATS.iter().map(|f| f.name).collect();
+    alternatives(&names)
+}
+
+/// The mesh files' extensions in words for help texts (".obj or .stl").
+pub fn mesh_extension_words() -> String {
+    let extensions: Vec<String> = MeshFormat::all_extensions()
+        .map(|e| format!(".{e}"))
+        .collect();
+    alternatives(&extensions)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every extension opened is classified as what it is, in any case, and the kinds' lists
+    /// share no extension.
+    #[test]
+    fn each_extension_names_one_kind() {
+        for ext in (Openable { robots: true }).extensions() {
+            for name in [format!("f.{ext}"), format!("F.{}", ext.to_uppercase())] {
+                let kind = FileKind::of(Path::new(&name));
+                let expected = if MeshFormat::all_extensions().any(|m| m == ext) {
+                    matches!(kind, Some(FileKind::Mesh(f)) if f.extensions.contains(&ext))
+                } else if ext == BODY_FILE_EXTENSION {
+                    matches!(kind, Some(FileKind::Body))
+                } else {
+                    matches!(kind, Some(FileKind::Robot))
+                };
+                assert!(expected, "{name}: {kind:?}");
+            }
+        }
+        let mut all = Openable { robots: true }.extensions();
+        let count = all.len();
+        all.sort_unstable();
+        all.dedup();
+        assert_eq!(all.len(), count, "an extension of two kinds");
+        assert!(FileKind::of(Path::new("notes.txt")).is_none());
+        assert!(FileKind::is_robot(Path::new("panda.URDF")));
+    }
+
+    /// The words are today's (the two formats), so the front ends read as they did.
+    #[test]
+    fn the_words_name_every_format() {
+        assert_eq!(mesh_format_words(), "OBJ or STL");
+        assert_eq!(mesh_extension_words(), ".obj or .stl");
+        assert_eq!(part_label(), "Meshes (OBJ, STL)");
+        assert_eq!(
+            Openable { robots: true }.words(),
+            "a mesh (OBJ/STL), a body .toml or a robot .urdf/.xml"
+        );
+        assert_eq!(
+            Openable { robots: false }.extensions(),
+            ["obj", "stl", "toml"]
+        );
+    }
+}
