@@ -170,9 +170,10 @@ pub struct ImpossibleAxis {
     pub axis: Vector3<f64>,
 }
 
-/// Something wrong with a link's stated inertia or its geometry, with its evidence.
+/// Something wrong with a link's stated inertia or its geometry, with its evidence. Every front
+/// end matches it without a wildcard arm, so a new variant does not compile until each has its
+/// words and JSON data.
 #[derive(Debug, Clone)]
-#[non_exhaustive]
 pub enum Finding {
     /// No `<inertial>` (URDF), on a link that has geometry or moves.
     MissingInertial {

@@ -22,7 +22,6 @@ pub fn title(w: &Warning) -> String {
         Defect::Flipped { .. } => "Inside-out parts",
         Defect::DegenerateFaces => "Faces without area",
         Defect::NonmanifoldEdges { .. } => "Parts touching along edges",
-        _ => w.code(),
     };
     format!("{what} ({})", w.count)
 }
@@ -185,7 +184,6 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             "Edges shared by more than two faces ({faces}): parts that touch there are each \
              counted in full, which is right when they only touch."
         ),
-        _ => format!("Mesh warning: {}", w.code()),
     }
 }
 

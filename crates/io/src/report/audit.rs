@@ -225,7 +225,6 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
         F::MeshDefect { geometry, warning } => json!({
             "geometry": geometry, "count": warning.count, "effect_on_mass": warning.effect_on_mass,
         }),
-        _ => json!({}),
     };
     if let (Some(o), Value::Object(e)) = (v.as_object_mut(), evidence) {
         o.extend(e);

@@ -162,7 +162,6 @@ pub fn finding_text(
         Finding::MeshDefect { geometry, warning } => {
             format!("{geometry}: {}", mesh_words(warning))
         }
-        _ => f.code().replace('_', " "),
     }
 }
 

@@ -239,7 +239,10 @@ fn warning_json(w: &Warning, lines: &[u32]) -> Value {
                 .map(|((a, b), faces)| json!({ "edge": [a, b], "faces": faces }))
                 .collect::<Vec<_>>(),
         }),
-        _ => json!({}),
+        // Their faces (above) are all there is to say.
+        Defect::DuplicateFaces | Defect::OppositeDuplicateFaces | Defect::DegenerateFaces => {
+            json!({})
+        }
     };
     if let (Some(object), Value::Object(data)) = (object.as_object_mut(), data) {
         object.extend(data);

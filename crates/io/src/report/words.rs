@@ -156,7 +156,6 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             edge_faces(edges, lines)
         ),
         // massprops may add warnings; their code still names them.
-        _ => format!("{} (see the massprops documentation)", w.code()),
     }
 }
 
