@@ -10,7 +10,7 @@ use egui_kittest::kittest::Queryable;
 use inertia_lab::gui::LabApp;
 use inertia_lab::gui::view3d::overlay::{Overlay, Selection};
 use inertia_lab::lab::Variant;
-use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassSpec};
+use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassGiven};
 use rbcore::RotationModel;
 
 fn harness() -> Harness<'static, LabApp> {
@@ -192,7 +192,7 @@ fn reset_settings_spin_presets_and_reset_from_the_panel() {
     frames(&mut h, 2);
     let s = h.state().lab().settings().clone();
     assert!(s.view.bounding_box, "toolbar edit kept");
-    assert!(matches!(s.body.mass, MassSpec::Mass(_)), "panel edit kept");
+    assert!(matches!(s.body.mass, MassGiven::Mass(_)), "panel edit kept");
     h.get_by_label("Reset").click();
     frames(&mut h, 1);
     assert!(h.state().lab().primary().sim().time() < 0.1);

@@ -19,10 +19,12 @@ pub fn audit_and_fix(text: &str) {
         }
     }
     let element = match robot.format {
-        robot::Format::Urdf => {
+        robot::DescriptionFormat::Urdf => {
             "<inertial>\n  <mass value=\"1\"/>\n  <inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/>\n</inertial>"
         }
-        robot::Format::Mjcf => "<inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/>",
+        robot::DescriptionFormat::Mjcf => {
+            "<inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/>"
+        }
     };
     let replacements: Vec<Replacement> = (0..robot.links.len())
         .map(|link| Replacement {

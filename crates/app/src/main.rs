@@ -1,8 +1,9 @@
 //! `inertia-lab`: exact mass properties and rigid-body dynamics of any mesh.
 //!
-//! Argument parsing and dispatch only; the work is in the library (`inertia_lab`). Without a
-//! subcommand the binary opens the desktop app on the flipping T-handle, or on a mesh given as
-//! the argument.
+//! Argument parsing and dispatch only; the work is in the libraries (`inertia_lab`'s `cli` over
+//! `inertia_io`, massprops, rbcore and robot). The subcommands `props`, `simulate`, `export` and
+//! `audit` are the command-line tools; without one the binary opens the desktop app on the
+//! flipping T-handle, or on the mesh, body or robot given as the argument.
 
 use std::process::ExitCode;
 

@@ -27,8 +27,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList, PyTuple};
 
 use arrays::{BadArrays, Faces, views};
-use result::{Body, MassResult};
-use threads::{Failure, on_threads};
+use result::{MassResult, Measured};
+use threads::{CallFailure, on_threads};
 
 /// The options every call shares, as the Python layer passes them: a density or a mass, the
 /// method, the repairs and the threads.
@@ -154,7 +154,7 @@ fn analyze_arrays(
                 on_threads(o.threads, || {
                     massprops::analyze_with(&mesh, o.method, o.spec, &o.repairs)
                 })
-                .map(|analysis| Body::Mesh {
+                .map(|analysis| Measured::Mesh {
                     analysis: Box::new(analysis),
                     file: None,
                     lines: Vec::new(),
@@ -164,12 +164,12 @@ fn analyze_arrays(
                 unchecked(&v, o.spec)
             }
         })
-        .map_err(|e| threads::raise(py, Failure::from(e)))?;
+        .map_err(|e| threads::raise(py, CallFailure::from(e)))?;
     Ok(MassResult::new(body))
 }
 
 /// The solid of the arrays alone (no copy for triangles; polygons by Mirtich's integrals).
-fn unchecked(v: &arrays::Views<'_>, spec: MassSpec) -> Result<Body, BadArrays> {
+fn unchecked(v: &arrays::Views<'_>, spec: MassSpec) -> Result<Measured, BadArrays> {
     let solid = match v.triangle_corners() {
         Some(corners) => {
             massprops::solid::triangles_solid(v.positions, bytemuck::cast_slice(&corners?))?
@@ -183,7 +183,7 @@ fn unchecked(v: &arrays::Views<'_>, spec: MassSpec) -> Result<Body, BadArrays> {
         MassSpec::Density(d) => d,
         MassSpec::Mass(m) => m / solid.volume,
     };
-    Ok(Body::Unchecked {
+    Ok(Measured::Unchecked {
         properties: solid.with_density(density)?,
         density,
         volume: solid.volume,
@@ -212,17 +212,17 @@ fn analyze_path(
     let file = path.display().to_string();
     let resolved = py
         .detach(|| on_threads(o.threads, || resolve(Source::Path(&path), &o.request())))
-        .map_err(|e| threads::raise(py, Failure::Input(e)))?;
+        .map_err(|e| threads::raise(py, CallFailure::Input(e)))?;
     Ok(MassResult::new(match resolved {
         Resolved::Mesh {
             file: read,
             analysis,
-        } => Body::Mesh {
+        } => Measured::Mesh {
             analysis,
             file: Some(file),
             lines: read.face_lines,
         },
-        Resolved::Parts(parts) => Body::Parts {
+        Resolved::Parts(parts) => Measured::Parts {
             units: match parts.body_file_units {
                 Some(unit) => format!("metres, from a body file in {unit}"),
                 None => "the mesh's units".to_owned(),

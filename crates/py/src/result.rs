@@ -13,7 +13,7 @@ use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
 
 /// What a result holds.
-pub enum Body {
+pub enum Measured {
     /// A mesh, analysed in full.
     Mesh {
         /// The analysis.
@@ -49,27 +49,27 @@ pub enum Body {
 /// in the mesh's axes (off-diagonals −∑m·x·y), principal moments and axes, and the warnings.
 #[pyclass(frozen, module = "inertialab", name = "MassResult")]
 pub struct MassResult {
-    body: Body,
+    body: Measured,
 }
 
 impl MassResult {
     /// The result of `body`.
-    pub fn new(body: Body) -> Self {
+    pub fn new(body: Measured) -> Self {
         Self { body }
     }
 
     fn properties(&self) -> &MassProperties {
         match &self.body {
-            Body::Mesh { analysis, .. } => &analysis.properties,
-            Body::Parts { composite, .. } => &composite.properties,
-            Body::Unchecked { properties, .. } => properties,
+            Measured::Mesh { analysis, .. } => &analysis.properties,
+            Measured::Parts { composite, .. } => &composite.properties,
+            Measured::Unchecked { properties, .. } => properties,
         }
     }
 
     /// `props --json`'s object.
     fn json(&self) -> Value {
         match &self.body {
-            Body::Mesh {
+            Measured::Mesh {
                 analysis,
                 file,
                 lines,
@@ -80,12 +80,12 @@ impl MassResult {
                 }
                 value
             }
-            Body::Parts {
+            Measured::Parts {
                 composite,
                 file,
                 units,
             } => json::composite(file, units, composite),
-            Body::Unchecked {
+            Measured::Unchecked {
                 properties,
                 density,
                 volume,
@@ -114,9 +114,9 @@ impl MassResult {
     #[getter]
     fn volume(&self) -> Option<f64> {
         match &self.body {
-            Body::Mesh { analysis, .. } => analysis.volume,
-            Body::Parts { .. } => None,
-            Body::Unchecked { volume, .. } => Some(*volume),
+            Measured::Mesh { analysis, .. } => analysis.volume,
+            Measured::Parts { .. } => None,
+            Measured::Unchecked { volume, .. } => Some(*volume),
         }
     }
 
@@ -124,9 +124,9 @@ impl MassResult {
     #[getter]
     fn density(&self) -> Option<f64> {
         match &self.body {
-            Body::Mesh { analysis, .. } => analysis.density,
-            Body::Parts { .. } => None,
-            Body::Unchecked { density, .. } => Some(*density),
+            Measured::Mesh { analysis, .. } => analysis.density,
+            Measured::Parts { .. } => None,
+            Measured::Unchecked { density, .. } => Some(*density),
         }
     }
 
@@ -175,7 +175,7 @@ impl MassResult {
     /// Whether defects were looked for (`check=True`, and every file).
     #[getter]
     fn checked(&self) -> bool {
-        !matches!(self.body, Body::Unchecked { .. })
+        !matches!(self.body, Measured::Unchecked { .. })
     }
 
     /// The warnings as `props --json` gives them (`code`, `message`, `count`, `faces`,
@@ -185,8 +185,8 @@ impl MassResult {
     fn warnings<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let value = self.json();
         let warnings = match &self.body {
-            Body::Unchecked { .. } => Value::Null,
-            Body::Parts { .. } => Value::Array(
+            Measured::Unchecked { .. } => Value::Null,
+            Measured::Parts { .. } => Value::Array(
                 value["parts"]
                     .as_array()
                     .into_iter()
@@ -200,7 +200,7 @@ impl MassResult {
                     })
                     .collect(),
             ),
-            Body::Mesh { .. } => value["warnings"].clone(),
+            Measured::Mesh { .. } => value["warnings"].clone(),
         };
         to_python(py, &warnings)
     }
@@ -255,9 +255,9 @@ impl MassResult {
         let p = self.properties();
         let m = p.principal.moments;
         let warnings = match &self.body {
-            Body::Mesh { analysis, .. } => format!("{} warnings", analysis.warnings.len()),
-            Body::Parts { composite, .. } => format!("{} parts", composite.parts.len()),
-            Body::Unchecked { .. } => "not checked".to_owned(),
+            Measured::Mesh { analysis, .. } => format!("{} warnings", analysis.warnings.len()),
+            Measured::Parts { composite, .. } => format!("{} parts", composite.parts.len()),
+            Measured::Unchecked { .. } => "not checked".to_owned(),
         };
         format!(
             "MassResult(mass={:.6e}, center_of_mass=[{:.6e}, {:.6e}, {:.6e}], \

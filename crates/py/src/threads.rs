@@ -85,16 +85,16 @@ pub fn on_threads<T: Send>(threads: usize, work: impl FnOnce() -> T + Send) -> T
 }
 
 /// What went wrong in a call, turned into a Python exception by [`raise`].
-pub enum Failure {
+pub enum CallFailure {
     /// The arrays give no mesh.
     Arrays(BadArrays),
     /// The file gives no body.
     Input(InputError),
 }
 
-impl From<BadArrays> for Failure {
+impl From<BadArrays> for CallFailure {
     fn from(e: BadArrays) -> Self {
-        Failure::Arrays(e)
+        CallFailure::Arrays(e)
     }
 }
 
@@ -102,7 +102,7 @@ impl From<BadArrays> for Failure {
 /// that are not a valid mesh (non-finite coordinates, faces of fewer than three corners),
 /// `FileNotFoundError` / `OSError` for a file that cannot be read, and [`MeshError`] with its
 /// `kind` for everything that has no body.
-pub fn raise(py: Python<'_>, failure: Failure) -> PyErr {
+pub fn raise(py: Python<'_>, failure: CallFailure) -> PyErr {
     let mesh = |e: &Mesh, message: String| -> PyErr {
         match e {
             Mesh::IndexOutOfRange { .. } => PyIndexError::new_err(message),
@@ -125,7 +125,7 @@ pub fn raise(py: Python<'_>, failure: Failure) -> PyErr {
         }
     };
     match failure {
-        Failure::Arrays(BadArrays::Index {
+        CallFailure::Arrays(BadArrays::Index {
             face,
             index,
             vertex_count,
@@ -133,11 +133,11 @@ pub fn raise(py: Python<'_>, failure: Failure) -> PyErr {
             "face {face} refers to vertex {index}, but the mesh has only {vertex_count} \
              vertices (indices count from 0; negative indices are not allowed)"
         )),
-        Failure::Arrays(BadArrays::Sizes { total, corners }) => PyValueError::new_err(format!(
+        CallFailure::Arrays(BadArrays::Sizes { total, corners }) => PyValueError::new_err(format!(
             "the face sizes add up to {total} corners, but {corners} corners were given"
         )),
-        Failure::Arrays(BadArrays::Mesh(e)) => mesh(&e, e.to_string()),
-        Failure::Input(e) => match &e {
+        CallFailure::Arrays(BadArrays::Mesh(e)) => mesh(&e, e.to_string()),
+        CallFailure::Input(e) => match &e {
             InputError::Mesh { source, .. } | InputError::Read(source) => {
                 mesh(innermost(source), e.to_string())
             }

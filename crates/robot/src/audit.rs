@@ -25,7 +25,7 @@ use massprops::principal::Degeneracy;
 use massprops::{MassProperties, MeshError, Repairs, Warning};
 
 use crate::geometry::{self, Extent, Meshes, Problem, Ready};
-use crate::model::{Format, GeometryKind, GeometryMass, Link, Robot, Shape};
+use crate::model::{DescriptionFormat, GeometryKind, GeometryMass, Link, Robot, Shape};
 
 /// Relative slack for round-off in the laws and the bounds.
 const SLACK: f64 = 1e-9;
@@ -109,7 +109,7 @@ pub enum Unweighed {
 
 /// The stated inertial beside the computed one.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Comparison {
+pub struct InertialComparison {
     /// Distance between the two centres of mass, m.
     pub com_offset: f64,
     /// That distance as a fraction of the link's size (its geometry's bounding-box diagonal).
@@ -327,7 +327,7 @@ pub struct LinkAudit {
     /// The geometry's bounding-box diagonal, m, when its extent is known.
     pub size: Option<f64>,
     /// Stated beside computed, when both are there.
-    pub comparison: Option<Comparison>,
+    pub comparison: Option<InertialComparison>,
     /// What is wrong, worst first.
     pub findings: Vec<Finding>,
 }
@@ -398,7 +398,7 @@ pub fn mesh_uses(robot: &Robot, kind: GeometryKind) -> Vec<geometry::MeshUse> {
     let other = other_kind(kind);
     let mut uses = Vec::new();
     for link in &robot.links {
-        let all_geoms = robot.format == Format::Mjcf && link.stated.is_none();
+        let all_geoms = robot.format == DescriptionFormat::Mjcf && link.stated.is_none();
         for (k, weigh) in [(kind, true), (other, all_geoms)] {
             if k == other && !all_geoms && link.geometry(kind).is_empty() {
                 continue;
@@ -470,7 +470,7 @@ fn audit_link(
     };
     // MuJoCo weighs every geom of a body that states no inertia, visual ones too.
     let all_geoms: Vec<Ready<'_>>;
-    let weighed = if robot.format == Format::Mjcf && link.stated.is_none() {
+    let weighed = if robot.format == DescriptionFormat::Mjcf && link.stated.is_none() {
         all_geoms = ready.iter().chain(&other).cloned().collect();
         &all_geoms
     } else {
@@ -482,7 +482,10 @@ fn audit_link(
         .as_ref()
         .map(|s| MassProperties::new(s.mass, s.center_of_mass, s.inertia));
 
-    if link.stated.is_none() && robot.format == Format::Urdf && (link.moving || !ready.is_empty()) {
+    if link.stated.is_none()
+        && robot.format == DescriptionFormat::Urdf
+        && (link.moving || !ready.is_empty())
+    {
         findings.push(Finding::MissingInertial {
             moving: link.moving,
         });
@@ -699,7 +702,7 @@ fn round_numbers(written: &[String]) -> bool {
 fn computed(
     link: &Link,
     ready: &[Ready<'_>],
-    format: Format,
+    format: DescriptionFormat,
     options: &AuditOptions,
 ) -> Result<Computed, Unweighed> {
     if ready.is_empty() {
@@ -712,8 +715,8 @@ fn computed(
     let basis = match (options.density, stated_mass, format) {
         (Some(d), ..) => MassBasis::GivenDensity(d),
         (None, Some(_), _) => MassBasis::StatedMass,
-        (None, None, Format::Mjcf) => MassBasis::FileMasses,
-        (None, None, Format::Urdf) => MassBasis::AssumedDensity(options.assumed_density),
+        (None, None, DescriptionFormat::Mjcf) => MassBasis::FileMasses,
+        (None, None, DescriptionFormat::Urdf) => MassBasis::AssumedDensity(options.assumed_density),
     };
     let masses: Vec<f64> = ready
         .iter()
@@ -756,7 +759,7 @@ fn computed(
     })
 }
 
-fn compare(s: &MassProperties, c: &MassProperties, size: f64) -> Comparison {
+fn compare(s: &MassProperties, c: &MassProperties, size: f64) -> InertialComparison {
     let com_offset = (s.center_of_mass - c.center_of_mass).norm();
     let difference: Matrix3<f64> = s.inertia_com - c.inertia_com;
     let unique = |d: Degeneracy| match d {
@@ -773,7 +776,7 @@ fn compare(s: &MassProperties, c: &MassProperties, size: f64) -> Comparison {
     let axis_angles = std::array::from_fn(|k| {
         (us[k] && uc[k]).then(|| rs.column(k).dot(&rc.column(k)).abs().min(1.0).acos())
     });
-    Comparison {
+    InertialComparison {
         com_offset,
         com_offset_fraction: if size > 0.0 {
             com_offset / size

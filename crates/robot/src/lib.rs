@@ -38,12 +38,13 @@ mod xml;
 use std::path::{Path, PathBuf};
 
 pub use audit::{
-    Audit, AuditOptions, Comparison, Computed, Finding, ImpossibleAxis, LinkAudit, MassBasis,
-    PLAUSIBLE_DENSITY, PlaceholderReason, Region, Unweighed, audit,
+    Audit, AuditOptions, Computed, Finding, ImpossibleAxis, InertialComparison, LinkAudit,
+    MassBasis, PLAUSIBLE_DENSITY, PlaceholderReason, Region, Unweighed, audit,
 };
 pub use error::{Location, RobotError};
 pub use model::{
-    Format, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span, Unsupported,
+    DescriptionFormat, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span,
+    Unsupported,
 };
 pub use xml::SourceFile;
 

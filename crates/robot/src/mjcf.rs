@@ -25,7 +25,9 @@ use nalgebra::{
 };
 
 use crate::error::RobotError;
-use crate::model::{Format, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Unsupported};
+use crate::model::{
+    DescriptionFormat, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Unsupported,
+};
 use crate::urdf::{file_stem, span};
 use crate::xml::{self, Element, SourceFile};
 
@@ -78,7 +80,7 @@ pub fn read(root: &Element, mut sources: Vec<SourceFile>) -> Result<Robot, Robot
         name: root
             .get("model")
             .map_or_else(|| file_stem(&sources[0].path), str::to_owned),
-        format: Format::Mjcf,
+        format: DescriptionFormat::Mjcf,
         sources,
         links: reader.links,
         unsupported: reader.unsupported,

@@ -12,19 +12,19 @@ use crate::xml::SourceFile;
 
 /// Which format a description is in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
+pub enum DescriptionFormat {
     /// ROS URDF (`<robot>`).
     Urdf,
     /// MuJoCo MJCF (`<mujoco>`).
     Mjcf,
 }
 
-impl Format {
+impl DescriptionFormat {
     /// Its name, as in reports.
     pub fn name(self) -> &'static str {
         match self {
-            Format::Urdf => "urdf",
-            Format::Mjcf => "mjcf",
+            DescriptionFormat::Urdf => "urdf",
+            DescriptionFormat::Mjcf => "mjcf",
         }
     }
 }
@@ -35,7 +35,7 @@ pub struct Robot {
     /// The model's name (`<robot name>`, `<mujoco model>`), or the file's stem.
     pub name: String,
     /// The format read.
-    pub format: Format,
+    pub format: DescriptionFormat,
     /// The files read: the description first, then each file it includes.
     pub sources: Vec<SourceFile>,
     /// The links, parents before children, in file order otherwise.

@@ -17,7 +17,7 @@ use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3
 
 use crate::ReadOptions;
 use crate::error::RobotError;
-use crate::model::{Format, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Span};
+use crate::model::{DescriptionFormat, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Span};
 use crate::xml::{Element, SourceFile};
 
 /// Builds the robot of a parsed `<robot>` element.
@@ -81,7 +81,7 @@ pub fn read(
         name: root
             .get("name")
             .map_or_else(|| file_stem(&sources[0].path), str::to_owned),
-        format: Format::Urdf,
+        format: DescriptionFormat::Urdf,
         sources,
         links,
         unsupported: Vec::new(),

@@ -11,7 +11,9 @@ use inertia_io::report::audit::{basis_text, json_report, table};
 use inertia_io::report::findings::unweighed_text;
 use inertia_io::wording::significant;
 use robot::fix::{Replacement, splice};
-use robot::{Audit, AuditOptions, Format, GeometryKind, LinkAudit, ReadOptions, Robot, audit};
+use robot::{
+    Audit, AuditOptions, DescriptionFormat, GeometryKind, LinkAudit, ReadOptions, Robot, audit,
+};
 use serde_json::json;
 
 use super::error::{CliError, positive};
@@ -196,8 +198,8 @@ fn write_fix(
         _ => names.contains(&robot.links[l.link].name.as_str()),
     };
     let format = match robot.format {
-        Format::Urdf => export::Format::Urdf,
-        Format::Mjcf => export::Format::Mjcf,
+        DescriptionFormat::Urdf => export::Format::Urdf,
+        DescriptionFormat::Mjcf => export::Format::Mjcf,
     };
     let kind = report.options.geometry.name();
     let mut replacements = Vec::new();

@@ -131,7 +131,7 @@ impl LoadedBody {
     /// # Errors
     /// The mesh encloses no volume even with its holes capped, or is otherwise unusable; the
     /// message names the cause and `name`.
-    pub fn new(name: &str, path: PathBuf, file: MeshFile) -> Result<Self, LabError> {
+    pub(crate) fn new(name: &str, path: PathBuf, file: MeshFile) -> Result<Self, LabError> {
         // As the one input path analyses a file for the lab.
         let r = Request::default();
         let analysis = file

@@ -89,16 +89,6 @@ impl Lab {
         Ok(())
     }
 
-    /// What [`Command::SaveBody`](super::Command::SaveBody) at `path` would write, (path, text)
-    /// each, the body file last; for a front end that saves files itself (a browser's
-    /// downloads).
-    ///
-    /// # Errors
-    /// The body cannot be made of parts (a robot's).
-    pub fn body_files(&self, path: &Path) -> Result<Vec<(std::path::PathBuf, String)>, LabError> {
-        Ok(parts::body_files(&self.current_parts(true)?, path))
-    }
-
     /// The body's parts: its own, or for a single mesh at the current density, the whole mesh
     /// as one part (`whole`) or its file's parts.
     pub(super) fn current_parts(&self, whole: bool) -> Result<Vec<PartModel>, LabError> {

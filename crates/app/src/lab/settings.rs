@@ -184,7 +184,7 @@ impl InertiaSource {
 
 /// How the body's mass is given.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub enum MassSpec {
+pub enum MassGiven {
     /// Uniform density (kg/m³); mass follows volume.
     Density(f64),
     /// Total mass (kg); density follows.
@@ -198,7 +198,7 @@ pub struct BodySettings {
     /// Uniform scale applied to the mesh.
     pub scale: f64,
     /// Density or mass.
-    pub mass: MassSpec,
+    pub mass: MassGiven,
     /// The inertia the simulation uses.
     pub source: InertiaSource,
     /// Spin rate of the presets (rad/s).
@@ -210,7 +210,7 @@ impl Default for BodySettings {
         Self {
             scale: 1.0,
             // Water: the T-handle comes out at about 19 g; steel would be 7800.
-            mass: MassSpec::Density(1000.0),
+            mass: MassGiven::Density(1000.0),
             source: InertiaSource::Exact,
             spin_rate: 8.0,
         }
@@ -295,7 +295,7 @@ mod tests {
         let mut s = AppSettings::default();
         s.physics.integrator = Integrator::Rk4;
         s.physics.model = RotationModel::Textbook;
-        s.body.mass = MassSpec::Mass(2.5);
+        s.body.mass = MassGiven::Mass(2.5);
         s.view.equivalent = Equivalent::Ellipsoid;
         let text = serde_json::to_string(&s).expect("serialisable");
         assert!(text.contains("\"rk4\""), "{text}");

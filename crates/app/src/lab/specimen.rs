@@ -21,7 +21,7 @@ use super::error::LabError;
 use super::history::History;
 use super::picking::{Hit, Ray};
 use super::placement::Placement;
-use super::settings::{AppSettings, InertiaSource, MassSpec};
+use super::settings::{AppSettings, InertiaSource, MassGiven};
 
 /// How long the ΔL arrow of a poke stays on screen.
 const POKE_FLASH: Duration = Duration::from_millis(1500);
@@ -589,8 +589,8 @@ fn scaled_properties(
         })?;
     let mass = match (whole, settings.body.mass) {
         (Some(_), _) => exact.mass,
-        (None, MassSpec::Density(d)) => exact.mass * d,
-        (None, MassSpec::Mass(m)) => m,
+        (None, MassGiven::Density(d)) => exact.mass * d,
+        (None, MassGiven::Mass(m)) => m,
     };
     let fit = |p: &MassProperties| -> Result<MassProperties, LabError> {
         p.scaled_at_fixed_density(s)

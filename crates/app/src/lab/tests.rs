@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use nalgebra::{Point3, Vector3};
 
 use super::*;
-use settings::{InertiaSource, MassSpec};
+use settings::{InertiaSource, MassGiven};
 
 fn lab() -> Lab {
     Lab::new(AppSettings::default()).expect("lab")
@@ -317,7 +317,7 @@ fn rejected_settings_change_nothing_and_say_why() {
     assert!(lab.message().is_some_and(|m| m.error));
     assert_eq!(lab.settings(), &before);
     lab.apply(settings_with(&lab, |s| {
-        s.body.mass = MassSpec::Mass(f64::NAN);
+        s.body.mass = MassGiven::Mass(f64::NAN);
     }));
     assert_eq!(lab.settings(), &before);
     lab.advance(0.1);
@@ -872,9 +872,8 @@ fn meshes_given_by_their_bytes_join_a_body_of_parts() {
     let after = lab.primary().properties(InertiaSource::Exact).mass;
     assert!(after > before + 999.0, "{before} kg, then {after} kg");
     // Saved as a browser saves (a download each), every mesh given by bytes gets its own OBJ.
-    let files = lab
-        .body_files(std::path::Path::new("hammer-plus.toml"))
-        .expect("files");
+    let parts = lab.current_parts(true).expect("parts");
+    let files = super::parts::body_files(&parts, std::path::Path::new("hammer-plus.toml"));
     let names: Vec<String> = files.iter().map(|(p, _)| p.display().to_string()).collect();
     assert_eq!(names.last().map(String::as_str), Some("hammer-plus.toml"));
     assert!(

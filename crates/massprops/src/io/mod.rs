@@ -72,11 +72,6 @@ impl MeshFile {
         parts.retain(|p| !p.1.is_empty());
         parts
     }
-
-    /// The file line of face `f`, when the format has lines.
-    pub fn line_of(&self, f: usize) -> Option<usize> {
-        self.face_lines.get(f).map(|&l| l as usize)
-    }
 }
 
 /// A mesh format the readers take: one row of [`MESH_FORMATS`], with everything a front end

@@ -10,7 +10,7 @@ use rbcore::{Integrator, Polhode, RotationModel, Stability};
 use super::{PanelState, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
-use crate::lab::settings::{AppSettings, InertiaSource, MassSpec};
+use crate::lab::settings::{AppSettings, InertiaSource, MassGiven};
 use crate::lab::specimen::TURNING_OVER;
 use crate::lab::{Command, Lab};
 
@@ -144,21 +144,21 @@ fn body_section(
                 return;
             }
             ui.horizontal(|ui| {
-                let density = matches!(s.body.mass, MassSpec::Density(_));
+                let density = matches!(s.body.mass, MassGiven::Density(_));
                 let primary = lab.primary();
                 if ui.radio(density, "Density").clicked() && !density {
-                    s.body.mass = MassSpec::Density(primary.density());
+                    s.body.mass = MassGiven::Density(primary.density());
                 }
                 if ui.radio(!density, "Mass").clicked() && density {
                     let exact = primary.properties(InertiaSource::Exact);
-                    s.body.mass = MassSpec::Mass(exact.mass);
+                    s.body.mass = MassGiven::Mass(exact.mass);
                 }
             });
             match &mut s.body.mass {
-                MassSpec::Density(d) => {
+                MassGiven::Density(d) => {
                     number(ui, "Density", d, 1e-6..=1e6, 10.0, " kg/m³");
                 }
-                MassSpec::Mass(m) => {
+                MassGiven::Mass(m) => {
                     number(ui, "Mass", m, 1e-9..=1e9, 0.01, " kg");
                 }
             }
