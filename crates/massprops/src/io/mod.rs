@@ -87,10 +87,15 @@ pub struct MeshFormat {
     /// which a body can give their own materials.
     pub holds_parts: bool,
     /// Reads a file from disk in blocks, calling the progress callback with the fraction read.
-    load: fn(&Path, &dyn Fn(f32)) -> Result<MeshFile, MeshError>,
+    load: LoadFn,
     /// Parses a file already in memory.
-    parse: fn(&[u8], &Path) -> Result<MeshFile, MeshError>,
+    parse: ParseFn,
 }
+
+/// A reader of files on disk: the path, and a callback given the fraction read so far.
+type LoadFn = fn(&Path, &dyn Fn(f32)) -> Result<MeshFile, MeshError>;
+/// A reader of files in memory: the bytes, and the path that names them in messages.
+type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 
 /// Every mesh format the readers take. (No column of magic bytes yet: neither OBJ, which is
 /// free text, nor STL, whose binary header is 80 free bytes that often begin "solid" like an
