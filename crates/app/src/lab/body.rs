@@ -326,7 +326,7 @@ impl LoadedBody {
             .map_or(self.analysis.properties.mass, |c| c.volume)
     }
 
-    /// [`LoadedBody::new`] for a mesh built in code (no file, no lines).
+    /// A mesh built in code (no file, no lines), analysed as a file of it would be.
     pub fn built(name: &str, mesh: PolyMesh) -> Result<Self, LabError> {
         let file = MeshFile {
             mesh,
