@@ -194,7 +194,9 @@ fn web_page_runs_the_lab() {
             "{name}: the page shows {shown} kg, props {props} kg"
         );
     }
-    check_busy_page(&s["busy"]);
+    check_busy_page(&s["busy"], 0.0);
+    // Dropped on a body of parts it joins it: the hammer's volume and the sphere's.
+    check_busy_page(&s["busy_part"], number(&s["busy_part"]["before"]["volume"]));
     check_recording(&s["record"]);
     check_restarts(&s["restarts"]);
 }
@@ -263,7 +265,9 @@ fn check_recording(record: &serde_json::Value) {
 /// worker is at work. A load on the page's own thread draws no frame until it is over, so none
 /// of its frames can show those stages. How long the page paused, and how many frames it drew,
 /// depend on the machine: `bench/web.mjs` measures them.
-fn check_busy_page(busy: &serde_json::Value) {
+///
+/// `base`: the volume of the body the sphere joins as a part (0 when it opens as the body).
+fn check_busy_page(busy: &serde_json::Value, base: f64) {
     let worker_frames = busy["worker_frames"].as_u64().expect("worker_frames");
     assert!(
         worker_frames >= 2,
@@ -279,11 +283,12 @@ fn check_busy_page(busy: &serde_json::Value) {
     );
     let (shown, exact) = (
         number(&busy["shown"]["volume"]),
-        busy["volume"].as_f64().expect("volume"),
+        base + busy["volume"].as_f64().expect("volume"),
     );
     assert!(
         (shown - exact).abs() <= 1e-9 * exact,
-        "sphere.stl: the page shows a volume of {shown}, the file encloses {exact}"
+        "sphere.stl on a body of volume {base}: the page shows a volume of {shown}, expected \
+         {exact}"
     );
 }
 

@@ -56,8 +56,9 @@ export function dropSphere(segments, rings) {
   return sixfold / 6;
 }
 
-// In Node: waits until the dropped sphere is shown, then reads the page's record of its frames
-// and sums it up (times in the page's milliseconds):
+// In Node: waits until the dropped sphere is shown (the page's title is `title`: the sphere's
+// when it opened as the body, the body's when it joined one as a part), then reads the page's
+// record of its frames and sums it up (times in the page's milliseconds):
 // - load_ms: from the drop to the first frame that shows the load over;
 // - frames_while_loading: the frames drawn in that time;
 // - worker_frames: those drawn while the page said the worker was checking the mesh or building
@@ -65,10 +66,17 @@ export function dropSphere(segments, rings) {
 // - longest_pause_ms: the longest time between two frames in that time (from the drop to the
 //   first frame, between frames, to the frame that shows the load over);
 // - stages: the stages the frames showed.
-export async function sphereLoaded(page, timeout) {
+export async function sphereLoaded(page, timeout, title = "Inertia Lab — sphere.stl") {
+  // A frame that shows the load, then one that shows it over: the drop is read by the page
+  // before the load begins, so "not loading" alone is also true before it.
   await page.waitForFunction(
-    () => document.title === "Inertia Lab — sphere.stl" && document.getElementById("inertia-lab").dataset.loading === "false",
+    (title) => {
+      const log = window.frameLog;
+      const began = log.findIndex((f) => f.loading === "true");
+      return document.title === title && began >= 0 && log.slice(began).some((f) => f.loading === "false");
+    },
     { timeout, polling: 100 },
+    title,
   );
   const { log, dropMs } = await page.evaluate(() => ({ log: window.frameLog, dropMs: window.dropMs }));
   const began = log.findIndex((f) => f.loading === "true");

@@ -237,6 +237,23 @@ await scenario("busy", async () => {
   await page.close();
 });
 
+// 6b. The same sphere dropped on a body of parts (the hammer of steel and wood) joins it as a
+// part: read, summed and indexed in the worker while the page keeps drawing, then the body's
+// volume is the hammer's and the sphere's.
+await scenario("busy_part", async () => {
+  const page = await open("busy_part", "/?sample=hammer.toml");
+  await page.waitForFunction(() => document.title.toLowerCase().includes("hammer"), {
+    timeout: TIMEOUT,
+  });
+  await sleep(1000);
+  const before = await figures(page);
+  const title = await page.title();
+  const volume = await page.evaluate(dropSphere, 600, 300);
+  const frames = await sphereLoaded(page, TIMEOUT, title);
+  result.scenarios.busy_part = { volume, before, shown: await figures(page), ...frames };
+  await page.close();
+});
+
 // 7. Record: five seconds of the page as PNG pictures, one .zip download (the test reads it).
 // Record wraps under the plots' first row at 1280 × 800 (CSS pixels).
 const RECORD = { x: 390, y: 636 };

@@ -8,7 +8,6 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use egui::Key;
-use inertia_io::kind::FileKind;
 
 mod archive;
 mod bench;
@@ -221,19 +220,15 @@ impl LabApp {
     }
 
     /// Files dropped on the window or page, as the answer of a dialog that has closed (in a
-    /// browser their bytes are read first, which takes a moment). A mesh dropped on a body made
-    /// of parts joins it as a part; anything else (a mesh on a single mesh, a body file)
-    /// replaces the body.
+    /// browser their bytes are read first, which takes a moment); the lab decides whether they
+    /// open a body or join this one ([`Lab::drop_adds_parts`]).
     fn take_dropped(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         if dropped.is_empty() || self.dialog.is_some() {
             return;
         }
         let names: Vec<&std::path::Path> = dropped.iter().map(|f| f.path()).collect();
-        let body_file = names
-            .iter()
-            .any(|n| matches!(FileKind::of(n), Some(FileKind::Body)));
-        let purpose = if self.lab.primary().body().composition.is_some() && !body_file {
+        let purpose = if self.lab.drop_adds_parts(&names) {
             DialogPurpose::AddPart
         } else {
             DialogPurpose::OpenMesh

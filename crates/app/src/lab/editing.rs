@@ -11,8 +11,9 @@ use massprops::PartEntry;
 use super::Lab;
 use super::body::{EditEffect, LoadedBody};
 use super::error::LabError;
+use super::loader::Purpose;
 use super::parts::{self, PartModel};
-use inertia_io::input::FileSet;
+use inertia_io::kind::FileKind;
 
 impl Lab {
     /// [`Command::SplitIntoParts`](super::Command::SplitIntoParts).
@@ -24,25 +25,24 @@ impl Lab {
         Ok(())
     }
 
-    /// [`Command::AddPart`](super::Command::AddPart).
-    pub(super) fn add_part(&mut self, path: &Path) -> Result<(), LabError> {
-        let part = parts::from_mesh_file(path)?;
-        self.add_parts(vec![part], path.display().to_string())
+    /// Whether files dropped on the lab join the body as parts: meshes dropped on a body made of
+    /// parts do; anything else (a mesh on a single mesh, a body file, a robot) replaces the body.
+    pub fn drop_adds_parts(&self, names: &[&Path]) -> bool {
+        self.primary().body().composition.is_some()
+            && names
+                .iter()
+                .all(|n| matches!(FileKind::of(n), Some(FileKind::Mesh(_))))
     }
 
-    /// [`Command::AddPartFiles`](super::Command::AddPartFiles).
-    pub(super) fn add_part_files(&mut self, files: &FileSet) -> Result<(), LabError> {
-        let names: Vec<String> = files.names().map(|p| p.display().to_string()).collect();
-        self.add_parts(parts::from_files(files)?, names.join(", "))
-    }
-
-    /// The body's parts and `new` ones (`what`: their files, for the message).
-    fn add_parts(&mut self, new: Vec<PartModel>, what: String) -> Result<(), LabError> {
-        let mut parts = self.current_parts(true)?;
-        parts.extend(new);
-        self.rebody(parts)?;
-        self.info(format!("added {what}"));
-        Ok(())
+    /// What new parts join: the body's name and its parts now (a single mesh as one part, whole).
+    ///
+    /// # Errors
+    /// The body cannot be made of parts (a robot's).
+    pub(super) fn adding_parts(&self) -> Result<Purpose, LabError> {
+        Ok(Purpose::AddParts {
+            body: self.primary().body().name.clone(),
+            parts: self.current_parts(true)?,
+        })
     }
 
     /// [`Command::EditPart`](super::Command::EditPart).

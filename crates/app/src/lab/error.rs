@@ -151,6 +151,9 @@ pub enum LabError {
     /// What went wrong in work done elsewhere (the page's worker), in that place's words.
     #[error("{0}")]
     Relayed(String),
+    /// The body was edited or replaced while new parts were read for it.
+    #[error("the body changed while {0} was read: add it again")]
+    ChangedWhileAdding(String),
 }
 
 impl LabError {

@@ -1,14 +1,17 @@
-//! Loading a body off the UI thread: read (with progress), parse, mass properties and the picking
-//! index run away from the UI and report through a channel, so a large mesh never freezes the
-//! UI. A file by its path loads on a thread; files given by their bytes (the browser's) load as
-//! the [`LoadFiles`] job: on a thread on the desktop, in the page's worker in a browser.
+//! The one load path: every file the lab opens or adds as a part is read (with progress),
+//! parsed, integrated and indexed for picking away from the UI, and reports through a channel,
+//! so a large mesh never freezes the UI, whether it opens a body or joins one. A file by its
+//! path loads on a thread; files given by their bytes (the browser's) load as the [`LoadFiles`]
+//! job: on a thread on the desktop, in the page's worker in a browser. What a file holds is
+//! decided once, by [`FileKind`]; what the files are for is the load's [`Purpose`].
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
 
 use super::body::LoadedBody;
 use super::error::LabError;
-use super::parts::from_resolved;
+use super::parts::{self, PartModel, from_resolved};
 use super::robot::{self, RobotModel};
 use crate::platform::{self, Job, JobEvent};
 use inertia_io::input::{self, FileSet, Request, Resolved, Source};
@@ -50,19 +53,44 @@ pub enum LoadEvent {
     Done(Box<Result<Loaded, LabError>>),
 }
 
-/// Loading files given by their bytes: the body file among them with its meshes, else the
-/// first mesh. A robot description is refused: its meshes are named by paths a set of files
-/// cannot resolve. Its error crosses as its words (the page shows nothing else of it).
+/// What a load makes of its files.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+pub enum Purpose {
+    /// A new body (or robot) in place of the current one.
+    Open,
+    /// Each mesh a new part of the body named `body` made of `parts` (the current body's).
+    AddParts {
+        /// The body's name.
+        body: String,
+        /// Its parts now.
+        parts: Vec<PartModel>,
+    },
+}
+
+/// Files given by their bytes and what they are for: the [`LoadFiles`] job's input.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+pub struct FilesToLoad {
+    /// The files.
+    pub files: FileSet,
+    /// What they are for.
+    pub purpose: Purpose,
+}
+
+/// Loading files given by their bytes: to open, the body file among them with its meshes, else
+/// the first mesh; to add, every mesh as a part. A robot description is refused: its meshes are
+/// named by paths a set of files cannot resolve. Its error crosses as its words (the page shows
+/// nothing else of it).
 #[derive(Debug)]
 pub struct LoadFiles;
 
 impl Job for LoadFiles {
     const NAME: &'static str = "load files";
-    type Input = FileSet;
+    type Input = FilesToLoad;
     type Progress = (Stage, Option<f32>);
     type Output = Result<LoadedBody, String>;
 
-    fn run(files: FileSet, progress: &dyn Fn((Stage, Option<f32>))) -> Self::Output {
+    fn run(job: FilesToLoad, progress: &dyn Fn((Stage, Option<f32>))) -> Self::Output {
+        let FilesToLoad { files, purpose } = job;
         let path = files.main().map(Path::to_path_buf).unwrap_or_default();
         if FileKind::is_robot(&path) {
             return Err(LabError::RobotFromFiles(path).to_string());
@@ -73,7 +101,13 @@ impl Job for LoadFiles {
                 progress((stage, f));
             }
         };
-        load(&path, Source::Set(&files, &path), &send).map_err(|e| e.to_string())
+        match purpose {
+            Purpose::Open => load(&path, Source::Set(&files, &path), &send),
+            Purpose::AddParts { body, parts } => {
+                join(&body, parts, parts::from_files(&files), &send)
+            }
+        }
+        .map_err(|e| e.to_string())
     }
 }
 
@@ -84,6 +118,8 @@ pub enum Loaded {
     Body(LoadedBody),
     /// A robot description: the audited robot and the body it shows first (the whole robot).
     Robot(Box<RobotModel>, LoadedBody),
+    /// New parts: the body they joined, and the files they came from (for the message).
+    Joined(LoadedBody, String),
 }
 
 /// A running load.
@@ -95,34 +131,53 @@ pub struct Loading {
     pub stage: Stage,
     /// Fraction of the stage done.
     pub fraction: Option<f32>,
+    /// For new parts, the body they join: the lab installs the result only while that body is
+    /// still the one shown (an edit meanwhile would otherwise be undone).
+    pub joins: Option<Arc<LoadedBody>>,
     events: Receiver<LoadEvent>,
 }
 
 impl Loading {
-    /// Starts loading `path` on a worker thread; `wake` is called after each report (the UI
-    /// passes a repaint request).
-    pub fn start(path: PathBuf, wake: impl Fn() + Send + 'static) -> Self {
+    /// Starts loading `path` for `purpose` on a worker thread; `wake` is called after each
+    /// report (the UI passes a repaint request).
+    pub fn start(path: PathBuf, purpose: Purpose, wake: impl Fn() + Send + 'static) -> Self {
         let p = path.clone();
-        Self::spawn(path, wake, move |send| {
-            if FileKind::is_robot(&p) {
+        Self::spawn(path, wake, move |send| match purpose {
+            Purpose::Open if FileKind::is_robot(&p) => {
                 send(LoadEvent::Progress(Stage::Robot, None));
                 robot::load(&p).map(|(model, body)| Loaded::Robot(Box::new(model), body))
-            } else {
+            }
+            Purpose::Open => {
                 let report = |f: f32| reading(send, f);
                 load(&p, Source::Reported(&p, &report), send).map(Loaded::Body)
+            }
+            Purpose::AddParts { body, parts } => {
+                send(LoadEvent::Progress(Stage::Checking, None));
+                let new = parts::from_mesh_file(&p).map(|part| vec![part]);
+                join(&body, parts, new, send).map(|b| Loaded::Joined(b, p.display().to_string()))
             }
         })
     }
 
     /// Starts loading files given by their bytes (the browser's) as the [`LoadFiles`] job.
-    pub fn start_files(files: FileSet, wake: impl Fn() + Send + 'static) -> Self {
-        let path = files.main().map(Path::to_path_buf).unwrap_or_default();
+    pub fn start_files(job: FilesToLoad, wake: impl Fn() + Send + 'static) -> Self {
+        let path = job.files.main().map(Path::to_path_buf).unwrap_or_default();
+        let names: Vec<String> = job.files.names().map(|p| p.display().to_string()).collect();
+        let adding = matches!(job.purpose, Purpose::AddParts { .. });
         let (tx, rx): (Sender<LoadEvent>, _) = channel();
-        platform::start_job::<LoadFiles>(files, move |event| {
+        platform::start_job::<LoadFiles>(job, move |event| {
             let event = match event {
                 JobEvent::Progress((stage, f)) => LoadEvent::Progress(stage, f),
                 JobEvent::Done(result) => LoadEvent::Done(Box::new(
-                    result.map(Loaded::Body).map_err(LabError::Relayed),
+                    result
+                        .map(|body| {
+                            if adding {
+                                Loaded::Joined(body, names.join(", "))
+                            } else {
+                                Loaded::Body(body)
+                            }
+                        })
+                        .map_err(LabError::Relayed),
                 )),
                 JobEvent::Lost(words) => LoadEvent::Done(Box::new(Err(LabError::Relayed(words)))),
             };
@@ -134,6 +189,7 @@ impl Loading {
             path,
             stage: Stage::Starting,
             fraction: None,
+            joins: None,
             events: rx,
         }
     }
@@ -158,6 +214,7 @@ impl Loading {
             path,
             stage: Stage::Starting,
             fraction: None,
+            joins: None,
             events: rx,
         }
     }
@@ -189,6 +246,19 @@ fn reading(send: &dyn Fn(LoadEvent), f: f32) {
     });
 }
 
+/// The body named `body` made of `parts` and the `new` ones (their summing and the picking
+/// index of the whole are the slow part for a large mesh, so they run here too).
+fn join(
+    body: &str,
+    mut parts: Vec<PartModel>,
+    new: Result<Vec<PartModel>, LabError>,
+    send: &dyn Fn(LoadEvent),
+) -> Result<LoadedBody, LabError> {
+    parts.extend(new?);
+    send(LoadEvent::Progress(Stage::PickingIndex, None));
+    LoadedBody::from_parts(body, parts)
+}
+
 /// Parses and analyses the mesh or body file `path` from `source`, reporting progress.
 fn load(path: &Path, source: Source<'_>, send: &dyn Fn(LoadEvent)) -> Result<LoadedBody, LabError> {
     let name = path.file_name().map_or_else(
@@ -218,7 +288,7 @@ mod tests {
         for _ in 0..2000 {
             if let Some(r) = l.poll() {
                 return r.map(|loaded| match loaded {
-                    Loaded::Body(b) | Loaded::Robot(_, b) => b,
+                    Loaded::Body(b) | Loaded::Robot(_, b) | Loaded::Joined(b, _) => b,
                 });
             }
             std::thread::sleep(std::time::Duration::from_millis(5));
@@ -273,7 +343,11 @@ mod tests {
     fn files_loaded_through_the_wire_are_the_body_loaded_here() {
         let served = |files: &FileSet| {
             let posted = std::cell::RefCell::new(Vec::new());
-            let input = platform::encode(files).expect("encodes");
+            let job = FilesToLoad {
+                files: files.clone(),
+                purpose: Purpose::Open,
+            };
+            let input = platform::encode(&job).expect("encodes");
             platform::serve::<LoadFiles>(&input, &|done, bytes| {
                 posted
                     .borrow_mut()
@@ -299,7 +373,11 @@ mod tests {
         let Some(JobEvent::Done(Ok(body))) = events.last() else {
             panic!("{:?}", events.last());
         };
-        let here = LoadFiles::run(files.clone(), &|_| {}).expect("loads here");
+        let job = FilesToLoad {
+            files: files.clone(),
+            purpose: Purpose::Open,
+        };
+        let here = LoadFiles::run(job, &|_| {}).expect("loads here");
         assert_eq!(body.analysis, here.analysis);
         assert_eq!(*body.mesh, *here.mesh);
         let (whole, whole_here) = (
@@ -333,18 +411,18 @@ mod tests {
         std::fs::create_dir_all(&dir).expect("temp dir");
         let good = dir.join("cube.obj");
         std::fs::write(&good, crate::lab::samples::SAMPLES[5].2).expect("write");
-        let body = wait(Loading::start(good, || {})).expect("loads");
+        let body = wait(Loading::start(good, Purpose::Open, || {})).expect("loads");
         assert_eq!(body.name, "cube.obj");
         assert!((body.analysis.properties.mass - 1.0).abs() < 1e-12);
 
         let bad = dir.join("broken.obj");
         std::fs::write(&bad, "v 0 0 0\nf 1 2 3\n").expect("write");
-        let err = wait(Loading::start(bad.clone(), || {}))
+        let err = wait(Loading::start(bad.clone(), Purpose::Open, || {}))
             .expect_err("bad file")
             .to_string();
         assert!(err.contains("broken.obj"), "{err}");
         let missing = dir.join("missing.stl");
-        let err = wait(Loading::start(missing, || {}))
+        let err = wait(Loading::start(missing, Purpose::Open, || {}))
             .expect_err("no file")
             .to_string();
         assert!(err.contains("missing.stl"), "{err}");

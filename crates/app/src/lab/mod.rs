@@ -35,7 +35,7 @@ use body::LoadedBody;
 use clock::FrameClock;
 pub use command::{Command, Message};
 pub use error::LabError;
-use loader::{Loaded, Loading};
+use loader::{FilesToLoad, Loaded, Loading, Purpose};
 use robot::RobotModel;
 use settings::{AppSettings, InertiaSource};
 pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView, Variant};
@@ -167,11 +167,33 @@ impl Lab {
             Command::ResetSettings => self.set_settings(AppSettings::default())?,
             Command::LoadFile(path) => {
                 let waker = self.waker.clone();
-                self.loading = Some(Loading::start(path, move || (waker.0)()));
+                let loading = Loading::start(path, Purpose::Open, move || (waker.0)());
+                self.loading = Some(loading);
             }
             Command::LoadFiles(files) => {
+                let job = FilesToLoad {
+                    files,
+                    purpose: Purpose::Open,
+                };
                 let waker = self.waker.clone();
-                self.loading = Some(Loading::start_files(files, move || (waker.0)()));
+                self.loading = Some(Loading::start_files(job, move || (waker.0)()));
+            }
+            Command::AddPart(path) => {
+                let purpose = self.adding_parts()?;
+                let waker = self.waker.clone();
+                let mut loading = Loading::start(path, purpose, move || (waker.0)());
+                loading.joins = Some(self.primary().body_arc().clone());
+                self.loading = Some(loading);
+            }
+            Command::AddPartFiles(files) => {
+                let job = FilesToLoad {
+                    files,
+                    purpose: self.adding_parts()?,
+                };
+                let waker = self.waker.clone();
+                let mut loading = Loading::start_files(job, move || (waker.0)());
+                loading.joins = Some(self.primary().body_arc().clone());
+                self.loading = Some(loading);
             }
             Command::LoadSample(label) => {
                 let body = LoadedBody::sample(&label)?;
@@ -223,8 +245,6 @@ impl Lab {
             Command::Notify(message) => self.message = Some(message),
             Command::DismissMessage => self.message = None,
             Command::SplitIntoParts => self.split_into_parts()?,
-            Command::AddPart(path) => self.add_part(&path)?,
-            Command::AddPartFiles(files) => self.add_part_files(&files)?,
             Command::EditPart {
                 index,
                 entry,
@@ -365,8 +385,8 @@ impl Lab {
     /// wall-clock time since the last frame (every step recorded in its history).
     pub fn frame(&mut self, now: Instant) {
         if let Some(result) = self.loading.as_mut().and_then(Loading::poll) {
-            self.loading = None;
-            self.finish_load(result);
+            let joins = self.loading.take().and_then(|l| l.joins);
+            self.finish_load(result, joins);
         }
         for s in &mut self.specimens {
             s.expire_flash(now);
@@ -414,16 +434,28 @@ impl Lab {
     pub fn wait_for_load(&mut self) {
         while let Some(loading) = &mut self.loading {
             if let Some(result) = loading.poll() {
-                self.loading = None;
-                self.finish_load(result);
+                let joins = self.loading.take().and_then(|l| l.joins);
+                self.finish_load(result, joins);
             } else {
                 std::thread::sleep(Duration::from_millis(2));
             }
         }
     }
 
-    fn finish_load(&mut self, result: Result<Loaded, LabError>) {
+    /// `joins`: for new parts, the body they were read to join.
+    fn finish_load(&mut self, result: Result<Loaded, LabError>, joins: Option<Arc<LoadedBody>>) {
         let outcome = result.and_then(|loaded| match loaded {
+            Loaded::Joined(body, added) => {
+                // An edit while the parts were read made another body: adding to the old one
+                // would undo it.
+                let current = self.primary().body_arc();
+                if !joins.is_some_and(|j| Arc::ptr_eq(&j, current)) {
+                    return Err(LabError::ChangedWhileAdding(added));
+                }
+                self.set_body(Arc::new(body), true)?;
+                self.info(format!("added {added}"));
+                Ok(())
+            }
             Loaded::Body(body) => {
                 self.install(body)?;
                 self.robot = None;

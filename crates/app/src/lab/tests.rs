@@ -107,6 +107,7 @@ fn a_hammer_built_from_two_meshes_is_saved_and_opened_with_its_centre_in_the_hea
     // The unit cube (the head), then the handle as a second part.
     lab.apply(Command::LoadSample("Cube".to_owned()));
     lab.apply(Command::AddPart(handle));
+    lab.wait_for_load();
     assert!(
         lab.message().is_some_and(|m| !m.error),
         "{:?}",
@@ -860,6 +861,17 @@ fn meshes_given_by_their_bytes_join_a_body_of_parts() {
     lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
     let before = lab.primary().properties(InertiaSource::Exact).mass;
     lab.apply(Command::AddPartFiles(given(&["cube.obj", "torus.obj"])));
+    // Read, summed and indexed off the UI thread: until then the body is the hammer.
+    assert!(lab.loading().is_some());
+    assert_eq!(
+        lab.primary()
+            .body()
+            .composition
+            .as_ref()
+            .map(|c| c.parts.len()),
+        Some(2)
+    );
+    lab.wait_for_load();
     assert!(
         lab.message().is_some_and(|m| !m.error),
         "{:?}",
@@ -880,6 +892,47 @@ fn meshes_given_by_their_bytes_join_a_body_of_parts() {
         names.contains(&"hammer-plus-cube.obj".to_owned()),
         "{names:?}"
     );
+}
+
+/// Meshes dropped on a body of parts join it; a body file or a robot among them, or a single
+/// mesh as the body, opens them instead.
+#[test]
+fn a_drop_joins_a_body_of_parts_only_with_meshes() {
+    use std::path::Path;
+    let mut lab = lab();
+    let drop = |lab: &Lab, names: &[&str]| {
+        let paths: Vec<&Path> = names.iter().map(Path::new).collect();
+        lab.drop_adds_parts(&paths)
+    };
+    lab.apply(Command::LoadSample("Cube".to_owned()));
+    assert!(!drop(&lab, &["a.obj"]), "a single mesh is replaced");
+    lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+    assert!(drop(&lab, &["a.obj", "B.STL"]));
+    assert!(!drop(&lab, &["a.obj", "body.toml"]));
+    assert!(!drop(&lab, &["panda.urdf"]));
+    assert!(!drop(&lab, &["notes.txt"]));
+}
+
+/// A part read while the body is edited does not undo the edit: the addition is refused, saying
+/// so, and the edited body stays.
+#[test]
+fn an_edit_while_a_part_is_read_keeps_the_edit() {
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+    lab.apply(Command::AddPartFiles(given(&["cube.obj"])));
+    lab.apply(Command::RemovePart(1));
+    let edited = lab.primary().body_arc().clone();
+    lab.wait_for_load();
+    let message = lab.message().map(|m| (m.error, m.text.clone()));
+    assert_eq!(
+        message,
+        Some((
+            true,
+            "the body changed while cube.obj was read: add it again (the current body is kept)"
+                .to_owned()
+        ))
+    );
+    assert!(Arc::ptr_eq(lab.primary().body_arc(), &edited));
 }
 
 /// The T-handle's preset spins: about axis 2 L swings 87.9° and the body turns over every half
