@@ -27,6 +27,7 @@
 
 mod audit;
 mod error;
+mod findings;
 pub mod fix;
 pub mod geometry;
 mod mjcf;
@@ -38,10 +39,11 @@ mod xml;
 use std::path::{Path, PathBuf};
 
 pub use audit::{
-    Audit, AuditOptions, Computed, Finding, ImpossibleAxis, InertialComparison, LinkAudit,
-    MassBasis, PLAUSIBLE_DENSITY, PlaceholderReason, Region, Unweighed, audit,
+    Audit, AuditOptions, Computed, InertialComparison, LinkAudit, MassBasis, PLAUSIBLE_DENSITY,
+    Unweighed, audit,
 };
 pub use error::{Location, RobotError};
+pub use findings::{Finding, ImpossibleAxis, PlaceholderReason, Region};
 pub use model::{
     DescriptionFormat, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span,
     Unsupported,
