@@ -2,6 +2,9 @@
 //! - point masses: every vertex carries m/N (what a particle system or a naive script computes);
 //! - the bounding-box cuboid: I = m/12·diag(b²+c², a²+c², a²+b²) about the box centre, mesh axes
 //!   (what Bullet's `btBoxShape`, Blender and older Godot use by default).
+//!
+//! And the other way round: the uniform box or ellipsoid that has a body's mass and principal
+//! moments ([`equivalent_half_extents`]), which the app draws beside the mesh.
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
@@ -82,5 +85,66 @@ mod tests {
             b.inertia_com,
             Matrix3::from_diagonal(&Vector3::new(52.0, 40.0, 20.0))
         );
+    }
+}
+
+/// A simple uniform shape that can stand for a body with the same mass and principal moments.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EquivalentShape {
+    /// A box: I₁ = m(b² + c²)/3 for half-extents a, b, c.
+    Box,
+    /// An ellipsoid: I₁ = m(b² + c²)/5 for semi-axes a, b, c.
+    Ellipsoid,
+}
+
+/// The half-extents (a box) or semi-axes (an ellipsoid), along the principal axes, of the uniform
+/// `shape` with mass `mass` and principal `moments`. Solving I₁ = m(b² + c²)/q and its turns
+/// gives a² = q(I₂ + I₃ − I₁)/(2m), with q = 3 for a box and 5 for an ellipsoid; an axis where the
+/// moments break the triangle inequality (no body has them) gets 0.
+pub fn equivalent_half_extents(
+    shape: EquivalentShape,
+    mass: f64,
+    moments: &Vector3<f64>,
+) -> Vector3<f64> {
+    let q = match shape {
+        EquivalentShape::Box => 3.0,
+        EquivalentShape::Ellipsoid => 5.0,
+    };
+    Vector3::from_fn(|a, _| {
+        let (j, l) = ((a + 1) % 3, (a + 2) % 3);
+        (q * (moments[j] + moments[l] - moments[a]) / (2.0 * mass))
+            .max(0.0)
+            .sqrt()
+    })
+}
+
+#[cfg(test)]
+mod equivalent_tests {
+    use super::*;
+
+    /// The equivalent of a box (an ellipsoid) is that box (ellipsoid): its moments from the
+    /// closed forms give back its half-extents (semi-axes).
+    #[test]
+    fn the_equivalent_of_a_shape_is_that_shape() {
+        let (m, [a, b, c]) = (6.0, [1.0, 2.0, 3.0]);
+        for (shape, q) in [
+            (EquivalentShape::Box, 3.0),
+            (EquivalentShape::Ellipsoid, 5.0),
+        ] {
+            let moments = Vector3::new(
+                m * (b * b + c * c) / q,
+                m * (a * a + c * c) / q,
+                m * (a * a + b * b) / q,
+            );
+            let half = equivalent_half_extents(shape, m, &moments);
+            assert!(
+                (half - Vector3::new(a, b, c)).norm() < 1e-14,
+                "{shape:?}: {half}"
+            );
+        }
+        // Moments no body has (I₁ > I₂ + I₃) leave that axis at 0, not NaN.
+        let bad = equivalent_half_extents(EquivalentShape::Box, 1.0, &Vector3::new(5.0, 1.0, 1.0));
+        assert_eq!(bad[0], 0.0);
+        assert!(bad.iter().all(|x| x.is_finite()));
     }
 }

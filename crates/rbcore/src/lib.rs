@@ -36,5 +36,5 @@ pub use error::{BodyError, SimError};
 pub use forces::{Damping, SoftString, Spring};
 pub use integrators::exact::{elliptic_f, jacobi_elliptic, torque_free_omega, torque_free_period};
 pub use integrators::{Integrator, ParseNameError, RotationModel};
-pub use polhode::{Polhode, Stability, cone_angle, polhode, stability};
+pub use polhode::{Poinsot, Polhode, Stability, cone_angle, poinsot, polhode, stability};
 pub use simulation::{Advance, MAX_DT, Settings, Simulation};

@@ -9,6 +9,7 @@
 
 use nalgebra::Vector3;
 
+use crate::Body;
 use crate::integrators::exact::torque_free_period;
 
 /// Moments this close (relative to the largest) count as equal, and |L|² − 2E·I₂ this small
@@ -171,6 +172,33 @@ pub fn cone_angle(moments: &Vector3<f64>, l: &Vector3<f64>, axis: usize) -> f64 
     sin2.clamp(0.0, 1.0).sqrt().asin()
 }
 
+/// Poinsot's construction of a torque-free body's motion (Landau & Lifshitz, *Mechanics* §37):
+/// the ellipsoid ωᵀIω = 2T, fixed in the body, passes through ω's tip, where its tangent plane is
+/// perpendicular to L: the invariable plane, fixed in space while no torque acts. The ellipsoid
+/// rolls on it without slipping, and ω's tip traces the herpolhode on it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Poinsot {
+    /// The ellipsoid's semi-axes along the principal axes (moments ascending), √(2T/Iᵢ), in ω's
+    /// units (rad/s).
+    pub semi_axes: Vector3<f64>,
+    /// The plane's unit normal: world L's direction.
+    pub normal: Vector3<f64>,
+    /// The plane's distance from the centre of mass along the normal, ω·L/|L| = 2T/|L| (rad/s).
+    pub distance: f64,
+}
+
+/// Poinsot's construction for `body` now; `None` for a body at rest (no L, no kinetic energy).
+pub fn poinsot(body: &Body) -> Option<Poinsot> {
+    let (w, l) = (body.omega_world(), body.angular_momentum());
+    let two_t = w.dot(&l);
+    let normal = l.try_normalize(0.0)?;
+    (two_t.is_finite() && two_t > 0.0).then(|| Poinsot {
+        semi_axes: body.moments().map(|i| (two_t / i).sqrt()),
+        normal,
+        distance: two_t / l.norm(),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -294,5 +322,30 @@ mod tests {
         assert_eq!(axis, 2);
         let precession = 2.0 * std::f64::consts::PI / (0.5 * 3.0);
         assert!((period - precession).abs() < 1e-12 * precession);
+    }
+
+    /// Along a tumble ω's tip stays on the invariable plane (fixed in space) and on the
+    /// ellipsoid (fixed in the body), whose construction is the same at every step.
+    #[test]
+    fn omega_rolls_the_ellipsoid_on_the_invariable_plane() {
+        let mut body = Body::from_moments(2.0, I).expect("body");
+        body.set_omega_principal(Vector3::new(0.3, 5.0, 0.2))
+            .expect("spin");
+        let mut sim = crate::Simulation::new(body, crate::Settings::default()).expect("simulation");
+        let first = poinsot(sim.body()).expect("moving");
+        for _ in 0..2400 {
+            sim.step().expect("step");
+            let body = sim.body();
+            let now = poinsot(body).expect("moving");
+            let w = body.omega_world();
+            assert!((w.dot(&first.normal) - first.distance).abs() < 1e-9 * first.distance);
+            let w_principal = body.orientation().inverse() * w;
+            let on: f64 = (0..3)
+                .map(|i| (w_principal[i] / now.semi_axes[i]).powi(2))
+                .sum();
+            assert!((on - 1.0).abs() < 1e-9, "{on}");
+            assert!((now.semi_axes - first.semi_axes).norm() < 1e-9 * first.semi_axes.norm());
+        }
+        assert_eq!(poinsot(&Body::from_moments(1.0, I).expect("body")), None);
     }
 }

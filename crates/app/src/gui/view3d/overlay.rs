@@ -6,6 +6,7 @@
 use crate::platform::Instant;
 
 use egui::{Align2, Color32};
+use massprops::approximations::{EquivalentShape, equivalent_half_extents};
 use nalgebra::{Point3, Vector3};
 
 use crate::lab::placement::Placement;
@@ -207,11 +208,11 @@ fn link_ellipsoids(o: &mut Overlay, c: &Context<'_>) {
             (&mark.stated, STATED_LINK_COLOR),
         ] {
             let Some(p) = p else { continue };
-            let squared = uniform_half_squared(ELLIPSOID, p.mass, &p.principal.moments);
-            if p.mass <= 0.0 || squared.iter().any(|&x| x.is_nan() || x <= 0.0) {
+            let shape = EquivalentShape::Ellipsoid;
+            let half = equivalent_half_extents(shape, p.mass, &p.principal.moments);
+            if p.mass <= 0.0 || half.iter().any(|&x| x.is_nan() || x <= 0.0) {
                 continue;
             }
-            let half = squared.map(f64::sqrt);
             // Drawn where it fits the view: a placeholder's can be metres across a finger.
             let scaled = half.amax() * c.placement.scale;
             if scaled > 2.0 * c.radius {
@@ -361,21 +362,6 @@ fn principal_axes(o: &mut Overlay, c: &Context<'_>) {
     }
 }
 
-/// `k` of [`uniform_half_squared`] for a box: I₁ = m(b² + c²)/3 for half-extents a, b, c.
-const BOX: f64 = 1.5;
-/// `k` for an ellipsoid: I₁ = m(b² + c²)/5 for semi-axes a, b, c.
-const ELLIPSOID: f64 = 2.5;
-
-/// The squared half-extents (semi-axes) of the uniform box or ellipsoid with mass `m` and
-/// principal `moments`: a² = k(I₂ + I₃ − I₁)/m and its turns; negative where no such body has
-/// them (moments that break the triangle inequality).
-fn uniform_half_squared(k: f64, m: f64, moments: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::from_fn(|a, _| {
-        let (j, l) = ((a + 1) % 3, (a + 2) % 3);
-        k * (moments[j] + moments[l] - moments[a]) / m
-    })
-}
-
 /// An ellipsoid of semi-axes `half` as its three principal sections, `n` segments each, its
 /// principal-frame points placed by `to_world`.
 fn principal_sections(
@@ -401,21 +387,19 @@ fn principal_sections(
     }
 }
 
-/// The uniform box or ellipsoid with the same mass and principal moments.
+/// The uniform box or ellipsoid with the same mass and principal moments
+/// (`massprops::approximations::equivalent_half_extents`).
 fn equivalent(o: &mut Overlay, c: &Context<'_>) {
-    if c.view.equivalent == Equivalent::None {
-        return;
-    }
-    let body = c.specimen.sim().body();
-    let k = if c.view.equivalent == Equivalent::Box {
-        BOX
-    } else {
-        ELLIPSOID
+    let shape = match c.view.equivalent {
+        Equivalent::None => return,
+        Equivalent::Box => EquivalentShape::Box,
+        Equivalent::Ellipsoid => EquivalentShape::Ellipsoid,
     };
-    let half = uniform_half_squared(k, body.mass(), &body.moments()).map(|x| x.max(0.0).sqrt());
+    let body = c.specimen.sim().body();
+    let half = equivalent_half_extents(shape, body.mass(), &body.moments());
     let principal = body.orientation();
     let to_world = |p: Vector3<f64>| c.com + principal * p;
-    if c.view.equivalent == Equivalent::Box {
+    if shape == EquivalentShape::Box {
         let corner =
             |k: usize| Vector3::from_fn(|a, _| if k >> a & 1 == 0 { -half[a] } else { half[a] });
         for (a, b) in cube_edges() {
@@ -441,48 +425,30 @@ fn equivalent(o: &mut Overlay, c: &Context<'_>) {
 const HERPOLHODE_SECONDS: f64 = 12.0;
 const POINSOT_COLOR: Color32 = Color32::from_rgb(255, 200, 120);
 
-/// Poinsot's construction (Landau & Lifshitz §37): with ω drawn at `k` world lengths per rad/s
-/// from the centre of mass, the ellipsoid ωᵀIω = 2T (semi-axes k√(2T/Iᵢ) along the principal
-/// axes) passes through ω's tip, where its tangent plane is perpendicular to L: the invariable
-/// plane, fixed in space while no torque acts. The ellipsoid rolls on it without slipping and
-/// ω's tip traces the herpolhode on it.
+/// Poinsot's construction (`rbcore::poinsot`), drawn with ω at `k` world lengths per rad/s from
+/// the centre of mass: the ellipsoid ωᵀIω = 2T through ω's tip, the invariable plane it rolls on,
+/// and the herpolhode ω's tip traces on the plane.
 fn poinsot(o: &mut Overlay, c: &Context<'_>) {
     if !c.view.poinsot {
         return;
     }
     let body = c.specimen.sim().body();
-    let (w, l) = (body.omega_world(), body.angular_momentum());
-    let two_t = w.dot(&l);
-    let Some(n) = l.try_normalize(0.0) else {
+    let Some(construction) = rbcore::poinsot(body) else {
         return;
     };
-    if !(two_t.is_finite() && two_t > 0.0) {
-        return;
-    }
+    let n = construction.normal;
     let k = c.arrow_len() / c.rate();
-    let tip = c.com + w * k;
-    // The ellipsoid: its three principal sections.
+    let tip = c.com + body.omega_world() * k;
     let principal = body.orientation();
-    let semi = body.moments().map(|i| k * (two_t / i).sqrt());
-    let samples = 64;
-    for plane in 0..3 {
-        let (u, v) = ((plane + 1) % 3, (plane + 2) % 3);
-        let point = |s: usize| {
-            let t = std::f64::consts::TAU * s as f64 / samples as f64;
-            let mut p = Vector3::zeros();
-            p[u] = semi[u] * t.cos();
-            p[v] = semi[v] * t.sin();
-            c.com + principal * p
-        };
-        for s in 0..samples {
-            o.line(
-                point(s),
-                point(s + 1),
-                POINSOT_COLOR.gamma_multiply(0.6),
-                1.0,
-            );
-        }
-    }
+    let semi = construction.semi_axes * k;
+    principal_sections(
+        o,
+        &semi,
+        |p| c.com + principal * p,
+        64,
+        POINSOT_COLOR.gamma_multiply(0.6),
+        1.0,
+    );
     // The invariable plane: a square about the contact point, as large as the ellipsoid.
     let half = semi.max();
     let e1 = n
@@ -490,7 +456,7 @@ fn poinsot(o: &mut Overlay, c: &Context<'_>) {
         .try_normalize(1e-9)
         .unwrap_or_else(|| n.cross(&Vector3::y()).normalize());
     let e2 = n.cross(&e1);
-    let centre = c.com + n * (n.dot(&(tip - c.com)));
+    let centre = c.com + n * (construction.distance * k);
     let corner = |a: f64, b: f64| centre + (e1 * a + e2 * b) * half;
     let square = [
         corner(-1.0, -1.0),
