@@ -1,6 +1,7 @@
 //! Inertia Lab's input path and outputs, shared by every front end (the command line, the app,
 //! the page and the Python package), in parts that depend in one direction:
 //! - [`wording`]: how numbers, faces, lines and lists are written;
+//! - [`conventions`]: what every output says of its numbers (the tensor's signs, the axes);
 //! - [`choice`]: options with a fixed list of values (format, frame, up axis), listed once;
 //! - [`kind`]: what a file holds (mesh, body, robot), and the extension lists every front end
 //!   offers, written from massprops' mesh-format table;
@@ -14,6 +15,7 @@
 
 pub mod batch;
 pub mod choice;
+pub mod conventions;
 pub mod export;
 pub mod input;
 pub mod kind;

@@ -6,8 +6,8 @@
 
 use serde_json::json;
 
-use super::TENSOR_CONVENTION;
 use super::frames::Converted;
+use crate::conventions::{self, PRINCIPAL_AXES};
 
 /// Version of this export schema; bumped on any incompatible change.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -27,16 +27,15 @@ pub fn render(body: &Converted) -> String {
     let doc = json!({
         "schema": "inertia-lab-mass-properties",
         "schema_version": SCHEMA_VERSION,
-        "conventions": {
-            "source": super::provenance(body),
-            "units": "SI: lengths in m, mass in kg, inertia in kg*m^2",
-            "axes": "the mesh's own axes (right-handed), lengths converted to metres",
-            "tensor": TENSOR_CONVENTION,
-            "inertia_com": "about the centre of mass",
-            "inertia_origin": "about the mesh origin",
-            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
-            "principal_quaternion_xyzw": "unit quaternion [x, y, z, w], w >= 0, rotating principal-axes coordinates into mesh axes: inertia_com = R diag(principal_moments) R^T",
-        },
+        "conventions": conventions::block(&[
+            ("source", &super::provenance(body)),
+            ("units", "SI: lengths in m, mass in kg, inertia in kg*m^2"),
+            ("axes", "the mesh's own axes (right-handed), lengths converted to metres"),
+            ("inertia_com", "about the centre of mass"),
+            ("inertia_origin", "about the mesh origin"),
+            ("principal_axes", PRINCIPAL_AXES),
+            ("principal_quaternion_xyzw", "unit quaternion [x, y, z, w], w >= 0, rotating principal-axes coordinates into mesh axes: inertia_com = R diag(principal_moments) R^T"),
+        ]),
         "mass": body.mass,
         "center_of_mass": [c.x, c.y, c.z],
         "inertia_com": rows(&body.inertia),

@@ -36,10 +36,6 @@ use massprops::MassProperties;
 
 use crate::choice::Choice;
 
-/// The tensor sign convention, stated in every output (`props` and every export format).
-pub const TENSOR_CONVENTION: &str =
-    "inertia tensor I = sum m(|r|^2 E - r r^T): diagonal = moments, off-diagonals = -sum(m*x*y)";
-
 use frames::{Axes, Conversion};
 pub use frames::{UpAxis, density_per_cubic_unit, quaternion_wxyz};
 pub use massprops::LengthUnit;

@@ -10,7 +10,7 @@ use serde_json::{Value, json};
 use super::findings::{finding_text, unweighed_text};
 use super::json::{point, rows, vector};
 use super::{significant, warning_text};
-use crate::export::TENSOR_CONVENTION;
+use crate::conventions::{self, TENSOR};
 
 /// Version of the `audit --json` schema; bumped on any incompatible change.
 pub const AUDIT_SCHEMA_VERSION: u32 = 1;
@@ -53,7 +53,7 @@ pub fn table(file: &str, robot: &Robot, report: &Audit) -> String {
     );
     let _ = writeln!(
         s,
-        "SI units; tensors about each centre of mass in the link's axes ({TENSOR_CONVENTION}).\n\
+        "SI units; tensors about each centre of mass in the link's axes ({TENSOR}).\n\
          The computed values assume uniform density over the geometry: exact for that body, \
          only an estimate for a link full of motors.\n"
     );
@@ -281,12 +281,11 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
         "format": robot.format.name(),
         "robot": robot.name,
         "geometry": kind,
-        "conventions": {
-            "units": "SI: m, kg, kg*m^2",
-            "tensor": TENSOR_CONVENTION,
-            "frame": "about each centre of mass, in the link's own axes",
-            "computed": "uniform density over the geometry (an estimate for a real link)",
-        },
+        "conventions": conventions::block(&[
+            ("units", "SI: m, kg, kg*m^2"),
+            ("frame", "about each centre of mass, in the link's own axes"),
+            ("computed", "uniform density over the geometry (an estimate for a real link)"),
+        ]),
         "links": links,
         "unsupported": robot.unsupported.iter().map(|u| json!({
             "file": u.at.file.display().to_string(),

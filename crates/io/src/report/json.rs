@@ -8,7 +8,7 @@ use nalgebra::{Matrix3, Point3, Vector3};
 use serde_json::{Value, json};
 
 use super::words::warning_text;
-use crate::export::TENSOR_CONVENTION;
+use crate::conventions::{self, PRINCIPAL_AXES};
 
 /// Version of the JSON schema printed by `props --json`; bumped on any incompatible change.
 /// 2: each warning is an object `{code, message, …its data}` instead of a sentence.
@@ -83,13 +83,12 @@ fn single_json(file: &str, scale: f64, a: &Analysis, lines: &[u32]) -> Value {
         "schema_version": SCHEMA_VERSION,
         "file": file,
         "method": a.method.name(),
-        "conventions": {
-            "tensor": TENSOR_CONVENTION,
-            "frame": "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin",
-            "units": "lengths in the mesh unit times scale; mass in the unit of density times length^3",
-            "density": density_unit,
-            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
-        },
+        "conventions": conventions::block(&[
+            ("frame", "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin"),
+            ("units", "lengths in the mesh unit times scale; mass in the unit of density times length^3"),
+            ("density", density_unit),
+            ("principal_axes", PRINCIPAL_AXES),
+        ]),
         "scale": scale,
         "density": a.density,
         "volume": a.volume,
@@ -129,13 +128,12 @@ pub fn unchecked(density: f64, volume: f64, flipped: bool, p: &MassProperties) -
         "file": null,
         "method": Method::Volume.name(),
         "checked": false,
-        "conventions": {
-            "tensor": TENSOR_CONVENTION,
-            "frame": "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin",
-            "units": "lengths in the mesh unit; mass in the unit of density times length^3",
-            "density": "mass per volume",
-            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
-        },
+        "conventions": conventions::block(&[
+            ("frame", "mesh axes; inertia_com about the centre of mass, inertia_origin about the mesh origin"),
+            ("units", "lengths in the mesh unit; mass in the unit of density times length^3"),
+            ("density", "mass per volume"),
+            ("principal_axes", PRINCIPAL_AXES),
+        ]),
         "density": density,
         "volume": volume,
         "flipped": flipped,
@@ -282,13 +280,12 @@ fn parts_json(file: &str, units: &str, c: &Composite) -> Value {
         "schema_version": SCHEMA_VERSION,
         "file": file,
         "kind": "composite",
-        "conventions": {
-            "tensor": TENSOR_CONVENTION,
-            "frame": "body axes; inertia_com about the centre of mass, inertia_origin about the body origin",
-            "units": units,
-            "principal_axes": "row i is the unit axis of principal_moments[i]; rows form a right-handed orthonormal set",
-            "share": "each part's share of each principal moment of the whole, about its centre of mass; a void's is negative",
-        },
+        "conventions": conventions::block(&[
+            ("frame", "body axes; inertia_com about the centre of mass, inertia_origin about the body origin"),
+            ("units", units),
+            ("principal_axes", PRINCIPAL_AXES),
+            ("share", "each part's share of each principal moment of the whole, about its centre of mass; a void's is negative"),
+        ]),
         "parts": c.parts.iter().map(|q| json!({
             "name": q.name,
             "density": q.density,

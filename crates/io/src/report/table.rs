@@ -11,7 +11,7 @@ use nalgebra::Matrix3;
 use super::json::axes_rows;
 use super::significant;
 use super::words::warning_text;
-use crate::export::TENSOR_CONVENTION;
+use crate::conventions::TENSOR;
 
 /// The human table of a body made of parts: the whole, then one row per part.
 pub fn composite(file: &str, units: &str, c: &Composite) -> String {
@@ -233,7 +233,7 @@ fn inertia_lines(s: &mut String, p: &MassProperties, frame: &str, size: f64) {
         num(c.y),
         num(c.z)
     );
-    let _ = writeln!(s, "\nConvention: {TENSOR_CONVENTION}; {frame} axes.");
+    let _ = writeln!(s, "\nConvention: {TENSOR}; {frame} axes.");
     let _ = writeln!(s, "  inertia about the centre of mass");
     matrix_lines(s, &p.inertia_com);
     let _ = writeln!(s, "  inertia about the {frame} origin");
