@@ -41,6 +41,14 @@ impl Capture {
         }
     }
 
+    /// Gives up before the first frame, saying why (a file that did not load must not give a
+    /// picture of the default body).
+    pub fn fail(&self, why: String) {
+        if let Ok(mut slot) = self.outcome.lock() {
+            *slot = Some(Err(why));
+        }
+    }
+
     /// Called every frame: after the warm-up asks egui for the next frame's pixels; once they
     /// arrive, writes them (off the UI thread) and closes the window.
     pub fn frame(&mut self, ctx: &egui::Context) {

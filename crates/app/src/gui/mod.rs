@@ -15,6 +15,7 @@ pub mod capture;
 pub mod link;
 pub mod panels;
 pub mod platform;
+mod start;
 pub mod view3d;
 pub mod warnings;
 

@@ -13,9 +13,10 @@ use inertia_io::kind::{Openable, mesh_extension_words, part_extensions, part_lab
 
 use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
-use crate::gui::{LabApp, SETTINGS_KEY, capture};
+use crate::gui::start::Start;
+use crate::gui::{SETTINGS_KEY, capture};
+use crate::lab::Variant;
 use crate::lab::settings::{AppSettings, InertiaSource};
-use crate::lab::{Command, Variant};
 
 /// What the window opens: meshes, bodies and robot descriptions.
 const OPENABLE: Openable = Openable { robots: true };
@@ -170,7 +171,7 @@ pub enum RunError {
     Screenshot(String),
 }
 
-/// Opens the window and runs the app until it is closed.
+/// Opens the window and runs the app until it is closed (what it does first: [`Start`]).
 ///
 /// # Errors
 /// No window or GL context could be created (no display, no OpenGL 3); `--after` is not a
@@ -182,15 +183,30 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
             args.after
         )));
     }
-    let bench = args
-        .bench_frames
-        .map(|frames| Bench::new(frames, args.bench_no_plots));
     let outcome = capture::Outcome::default();
-    let capture = args
-        .screenshot
-        .clone()
-        .map(|path| capture::Capture::new(path, Arc::clone(&outcome)));
-    let scripted = bench.is_some() || capture.is_some();
+    let start = Start {
+        file: args.file.clone(),
+        link: args.link.clone(),
+        commands: Vec::new(),
+        bench: args
+            .bench_frames
+            .map(|frames| Bench::new(frames, args.bench_no_plots)),
+        ghosts: [
+            Variant::Source(InertiaSource::BoundingBox),
+            Variant::Source(InertiaSource::PointMasses),
+            Variant::Model(rbcore::RotationModel::Textbook),
+        ]
+        .into_iter()
+        .take(args.bench_ghosts.map_or(0, usize::from))
+        .collect(),
+        history: args.bench_history,
+        capture: args
+            .screenshot
+            .clone()
+            .map(|path| capture::Capture::new(path, Arc::clone(&outcome))),
+        after: args.after,
+    };
+    let scripted = start.scripted();
     let options = eframe::NativeOptions {
         renderer: eframe::Renderer::Glow,
         // Without a depth buffer the 3D occlusion is wrong (stack notes).
@@ -198,7 +214,7 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
         // MSAA more than doubles frame time on software GL (llvmpipe).
         multisampling: 0,
         glow_options: egui_glow::GlowConfiguration {
-            vsync: bench.is_none(),
+            vsync: start.bench.is_none(),
             ..Default::default()
         },
         viewport: egui::ViewportBuilder::default()
@@ -209,18 +225,6 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
         persist_window: !scripted,
         ..Default::default()
     };
-    let file = args.file.clone();
-    let link = args.link.clone();
-    let (history, after) = (args.bench_history, args.after);
-    let capture_outcome = Arc::clone(&outcome);
-    let ghosts = [
-        Variant::Source(InertiaSource::BoundingBox),
-        Variant::Source(InertiaSource::PointMasses),
-        Variant::Model(rbcore::RotationModel::Textbook),
-    ]
-    .into_iter()
-    .take(args.bench_ghosts.map_or(0, usize::from))
-    .collect::<Vec<_>>();
     eframe::run_native(
         "inertia-lab",
         options,
@@ -231,41 +235,11 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
                 }
                 _ => AppSettings::default(),
             };
-            let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
-            if let Some(path) = file {
-                app.command(Command::LoadFile(path));
-                if scripted || link.is_some() {
-                    // Every measured frame, and the picture, must show the mesh.
-                    app.lab.wait_for_load();
-                }
-                if let Some(name) = &link {
-                    app.command(app.lab.link_named(name));
-                }
-            }
-            if bench.is_some() {
-                if !ghosts.is_empty() {
-                    app.command(Command::Compare(ghosts));
-                }
-                if history > 0.0 {
-                    app.lab.advance_for(history);
-                }
-                app.bench = bench;
-            }
-            if capture.is_some() {
-                // A file that did not load must not give a picture of the default body.
-                if let Some(m) = app.lab.message().filter(|m| m.error) {
-                    if let Ok(mut slot) = capture_outcome.lock() {
-                        *slot = Some(Err(m.text.clone()));
-                    }
-                    cc.egui_ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-                    return Ok(Box::new(app));
-                }
-                app.lab.advance_for(after);
-                // The picture shows the state at exactly `after` seconds.
-                app.command(Command::TogglePause);
-                app.capture = capture;
-            }
-            Ok(Box::new(app))
+            Ok(Box::new(start.app(
+                settings,
+                cc.gl.clone(),
+                &cc.egui_ctx,
+            )?))
         }),
     )?;
     if args.screenshot.is_some() {

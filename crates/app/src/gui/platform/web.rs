@@ -14,7 +14,8 @@ use wasm_bindgen::prelude::*;
 
 use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
-use crate::gui::{LabApp, SETTINGS_KEY, link};
+use crate::gui::start::Start;
+use crate::gui::{SETTINGS_KEY, link};
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Message};
 use inertia_io::input::FileSet;
@@ -93,18 +94,23 @@ async fn run() -> Result<(), JsValue> {
                     }
                     _ => AppSettings::default(),
                 };
-                let mut app = LabApp::new(settings, cc.gl.clone(), &cc.egui_ctx)?;
-                for command in scene.commands {
-                    app.command(command);
-                }
+                let mut commands = scene.commands;
                 if !scene.problems.is_empty() {
-                    app.command(Command::Notify(Message {
+                    commands.push(Command::Notify(Message {
                         text: format!("the link: {}", scene.problems.join("; ")),
                         error: true,
                     }));
                 }
-                app.bench = scene.bench_frames.map(|n| Bench::new(n, false));
-                Ok(Box::new(app))
+                let start = Start {
+                    commands,
+                    bench: scene.bench_frames.map(|n| Bench::new(n, false)),
+                    ..Start::default()
+                };
+                Ok(Box::new(start.app(
+                    settings,
+                    cc.gl.clone(),
+                    &cc.egui_ctx,
+                )?))
             }),
         )
         .await?;
