@@ -44,6 +44,8 @@ pub struct LabApp {
     lab: Lab,
     view: View3d,
     panels: PanelState,
+    /// The side panel's sections, each with its own state.
+    side: panels::side::SidePanel,
     scene: Option<SceneSlot>,
     dialog: Option<Dialog>,
     /// The title last given to the window or page.
@@ -87,6 +89,7 @@ impl LabApp {
             lab,
             view: View3d::default(),
             panels: PanelState::default(),
+            side: panels::side::SidePanel::default(),
             scene,
             dialog: None,
             title: String::new(),
@@ -144,7 +147,13 @@ impl LabApp {
             .min_size(260.0)
             .max_size(640.0)
             .show(ui, |ui| {
-                panels::side::show(ui, &self.lab, &mut draft, &mut self.panels, &mut commands);
+                let mut frame = panels::Frame {
+                    lab: &self.lab,
+                    settings: &mut draft,
+                    commands: &mut commands,
+                    shared: &mut self.panels,
+                };
+                self.side.show(ui, &mut frame);
             });
         let hide_plots = self.bench.as_ref().is_some_and(Bench::hides_plots);
         if !hide_plots {

@@ -5,7 +5,7 @@
 use egui::{Color32, RichText};
 use rbcore::{Integrator, RotationModel};
 
-use super::PanelState;
+use super::{Frame, Section};
 use crate::gui::view3d::ghost_color;
 use crate::lab::settings::{AppSettings, GhostLayout, InertiaSource};
 use crate::lab::{Command, Lab, MAX_COPIES, Variant};
@@ -63,12 +63,23 @@ fn other_model(model: RotationModel) -> RotationModel {
     }
 }
 
-/// Shows the section.
-pub fn show(
+/// The Compare section: the copies ticked are its own state.
+#[derive(Debug, Default)]
+pub struct CompareSection {
+    choice: CompareChoice,
+}
+
+impl Section for CompareSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui, f.lab, f.settings, &mut self.choice, f.commands);
+    }
+}
+
+fn show(
     ui: &mut egui::Ui,
     lab: &Lab,
     s: &mut AppSettings,
-    state: &mut PanelState,
+    choice: &mut CompareChoice,
     commands: &mut Vec<Command>,
 ) {
     egui::CollapsingHeader::new("Compare")
@@ -80,7 +91,7 @@ pub fn show(
                 )
                 .wrap(),
             );
-            let c = &mut state.compare;
+            let c = choice;
             let stated = lab.primary().body().stated.is_some();
             for (k, source) in InertiaSource::ALL.into_iter().enumerate() {
                 if source == InertiaSource::Stated && !stated {

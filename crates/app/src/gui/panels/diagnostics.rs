@@ -4,12 +4,21 @@
 use egui::{Color32, RichText};
 use massprops::defects::Orientation;
 
-use super::PanelState;
+use super::{Frame, PanelState, Section};
 use crate::gui::warnings;
 use crate::lab::Lab;
 
-/// Shows the section for the primary specimen's body.
-pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
+/// The Mesh diagnostics section, for the primary specimen's body.
+#[derive(Debug, Default)]
+pub struct DiagnosticsSection;
+
+impl Section for DiagnosticsSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui, f.lab, f.shared);
+    }
+}
+
+fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     let body = lab.primary().body();
     let a = &body.analysis;
     if state

@@ -1,9 +1,33 @@
 //! The 2D panels: the side panel (body, mass properties, motion, interaction), the toolbar of
 //! view toggles, the plot panel and the F1 help. Each reads the model, edits the frame's one
 //! settings draft and records [`Command`]s; none changes the model itself.
+//!
+//! The side panel is a list of [`Section`]s (the egui demo's `Demo` trait): each is a file here,
+//! owns its own state, and is registered once, in `side::SidePanel`'s list.
 
 use super::platform::DialogPurpose;
+use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Lab};
+
+/// What a section is given each frame: the lab to read, the frame's one settings draft to edit,
+/// the commands it records, and the state the panels share with the app and the 3D view.
+pub struct Frame<'a> {
+    /// The model, read only.
+    pub lab: &'a Lab,
+    /// The frame's settings draft (one command at the end of the frame).
+    pub settings: &'a mut AppSettings,
+    /// The commands recorded this frame.
+    pub commands: &'a mut Vec<Command>,
+    /// The state shared across panels (the Path field, dialogs, the selected warning or part).
+    pub shared: &'a mut PanelState,
+}
+
+/// One section of the side panel: its header and contents, or nothing when it does not apply
+/// to the body shown (Robot without a robot).
+pub trait Section {
+    /// Shows the section.
+    fn show(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>);
+}
 
 pub mod compare;
 pub mod diagnostics;
@@ -16,7 +40,8 @@ pub mod side;
 pub mod sphere;
 pub mod toolbar;
 
-/// UI-only state of the panels (text being typed, plot following), not persisted.
+/// UI-only state the panels share with each other, the app and the 3D view (text being typed,
+/// plot following, dialogs, selections), not persisted.
 #[derive(Debug, Clone)]
 pub struct PanelState {
     /// Path typed in the "open" field.
@@ -33,8 +58,6 @@ pub struct PanelState {
     pub dialog_open: bool,
     /// The momentum sphere's orbit.
     pub sphere: sphere::SphereView,
-    /// The copies ticked in the Compare section.
-    pub compare: compare::CompareChoice,
     /// How long the Record button records (s).
     pub record_seconds: f64,
     /// Record was pressed this frame (the app starts the recording).
@@ -48,8 +71,6 @@ pub struct PanelState {
     pub selected_warning: Option<usize>,
     /// The part the Parts section edits and the 3D view outlines.
     pub selected_part: Option<usize>,
-    /// Where "Save" writes the body file.
-    pub body_path: String,
 }
 
 impl Default for PanelState {
@@ -62,14 +83,12 @@ impl Default for PanelState {
             dialog_request: None,
             dialog_open: false,
             sphere: sphere::SphereView::default(),
-            compare: compare::CompareChoice::default(),
             record_seconds: 5.0,
             record_request: false,
             record_stop: false,
             recording: None,
             selected_warning: None,
             selected_part: None,
-            body_path: "body.toml".to_owned(),
         }
     }
 }

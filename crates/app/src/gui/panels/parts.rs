@@ -9,13 +9,38 @@ use egui::{Color32, RichText};
 use massprops::materials::MATERIALS;
 use massprops::{MaterialEntry, PartEntry};
 
-use super::{PanelState, number};
+use super::{Frame, PanelState, Section, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::part_color;
 use crate::lab::{Command, Lab};
 
-/// Shows the section.
-pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut Vec<Command>) {
+/// The Parts section: where "Save" writes the body file is its own state.
+#[derive(Debug)]
+pub struct PartsSection {
+    body_path: String,
+}
+
+impl Default for PartsSection {
+    fn default() -> Self {
+        Self {
+            body_path: "body.toml".to_owned(),
+        }
+    }
+}
+
+impl Section for PartsSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui, f.lab, f.shared, &mut self.body_path, f.commands);
+    }
+}
+
+fn show(
+    ui: &mut egui::Ui,
+    lab: &Lab,
+    state: &mut PanelState,
+    body_path: &mut String,
+    commands: &mut Vec<Command>,
+) {
     let body = lab.primary().body();
     let composition = body.composition.as_ref();
     let title = match composition {
@@ -80,10 +105,10 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, commands: &mut
             ui.horizontal_wrapped(|ui| add_part_buttons(ui, state, commands));
             ui.horizontal(|ui| {
                 let l = ui.label("Save as");
-                ui.add(egui::TextEdit::singleline(&mut state.body_path).desired_width(130.0))
+                ui.add(egui::TextEdit::singleline(body_path).desired_width(130.0))
                     .labelled_by(l.id);
-                if ui.button("Save").clicked() && !state.body_path.trim().is_empty() {
-                    commands.push(Command::SaveBody(PathBuf::from(state.body_path.trim())));
+                if ui.button("Save").clicked() && !body_path.trim().is_empty() {
+                    commands.push(Command::SaveBody(PathBuf::from(body_path.trim())));
                 }
                 if ui
                     .add_enabled(!state.dialog_open, egui::Button::new("…"))

@@ -4,6 +4,7 @@
 
 use egui::{Color32, RichText};
 
+use super::{Frame, Section};
 use crate::lab::{Command, Lab};
 use inertia_io::report::findings::{finding_text, num};
 
@@ -11,8 +12,17 @@ use inertia_io::report::findings::{finding_text, num};
 const PROOF: Color32 = Color32::from_rgb(255, 120, 90);
 const OTHER: Color32 = Color32::from_rgb(240, 200, 110);
 
-/// Shows the section when a robot description is loaded.
-pub fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
+/// The Robot section, shown when a robot description is loaded.
+#[derive(Debug, Default)]
+pub struct RobotSection;
+
+impl Section for RobotSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui, f.lab, f.commands);
+    }
+}
+
+fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
     let Some(model) = lab.robot() else {
         return;
     };

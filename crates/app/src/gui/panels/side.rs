@@ -7,48 +7,102 @@ use std::path::PathBuf;
 use egui::{Color32, RichText};
 use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
-use super::{PanelState, number};
+use super::compare::CompareSection;
+use super::diagnostics::DiagnosticsSection;
+use super::parts::PartsSection;
+use super::robot::RobotSection;
+use super::{Frame, PanelState, Section, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassGiven};
 use crate::lab::specimen::TURNING_OVER;
 use crate::lab::{Command, Lab};
 
-/// Shows the panel contents, editing the frame's settings draft `s`.
-pub fn show(
-    ui: &mut egui::Ui,
-    lab: &Lab,
-    s: &mut AppSettings,
-    state: &mut PanelState,
-    commands: &mut Vec<Command>,
-) {
-    // Shortened so that the panel keeps its width whatever the file is called (egui's own
-    // truncation still let the first frame's full-width text widen a resizable panel).
-    let name = &lab.primary().body().name;
-    ui.heading(elide(name, HEADING_CHARS))
-        .on_hover_text(name.as_str());
-    egui::ScrollArea::vertical().show(ui, |ui| {
-        body_section(ui, lab, state, commands, s);
-        super::robot::show(ui, lab, commands);
-        table_section(ui, lab, s);
-        motion_section(ui, lab, commands, s);
-        super::compare::show(ui, lab, s, state, commands);
-        interaction_section(ui, lab, s);
-        super::parts::show(ui, lab, state, commands);
-        super::diagnostics::show(ui, lab, state);
-        ui.separator();
-        if ui.button("Reset settings").clicked() {
-            commands.push(Command::ResetSettings);
+/// The side panel: the body's name over its sections, in the one list that registers them.
+pub struct SidePanel {
+    sections: Vec<Box<dyn Section>>,
+}
+
+impl Default for SidePanel {
+    fn default() -> Self {
+        Self {
+            sections: vec![
+                Box::new(BodySection),
+                Box::new(RobotSection),
+                Box::new(TableSection),
+                Box::new(MotionSection),
+                Box::new(CompareSection::default()),
+                Box::new(InteractionSection),
+                Box::new(PartsSection::default()),
+                Box::new(DiagnosticsSection),
+            ],
         }
-        // Tab moves the focus without scrolling: a keyboard user would tab on out of sight.
-        let focused = ui
-            .memory(|m| m.focused())
-            .and_then(|id| ui.ctx().read_response(id));
-        if let Some(r) = focused.filter(|r| r.gained_focus() && ui.min_rect().contains_rect(r.rect))
-        {
-            ui.scroll_to_rect(r.rect, None);
-        }
-    });
+    }
+}
+
+impl SidePanel {
+    /// Shows the panel contents, editing the frame's settings draft.
+    pub fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        // Shortened so that the panel keeps its width whatever the file is called (egui's own
+        // truncation still let the first frame's full-width text widen a resizable panel).
+        let name = &f.lab.primary().body().name;
+        ui.heading(elide(name, HEADING_CHARS))
+            .on_hover_text(name.as_str());
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            for section in &mut self.sections {
+                section.show(ui, f);
+            }
+            ui.separator();
+            if ui.button("Reset settings").clicked() {
+                f.commands.push(Command::ResetSettings);
+            }
+            // Tab moves the focus without scrolling: a keyboard user would tab on out of sight.
+            let focused = ui
+                .memory(|m| m.focused())
+                .and_then(|id| ui.ctx().read_response(id));
+            if let Some(r) =
+                focused.filter(|r| r.gained_focus() && ui.min_rect().contains_rect(r.rect))
+            {
+                ui.scroll_to_rect(r.rect, None);
+            }
+        });
+    }
+}
+
+/// The Body section: opening a file, the samples, loading, size and mass.
+struct BodySection;
+
+impl Section for BodySection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        body_section(ui, f.lab, f.shared, f.commands, f.settings);
+    }
+}
+
+/// The Mass properties section: the table of every source and the inertia the simulation uses.
+struct TableSection;
+
+impl Section for TableSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        table_section(ui, f.lab, f.settings);
+    }
+}
+
+/// The Motion section: run, step, reset, the spins, the model and what the motion does.
+struct MotionSection;
+
+impl Section for MotionSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        motion_section(ui, f.lab, f.commands, f.settings);
+    }
+}
+
+/// The Poke and string section: the interaction strengths.
+struct InteractionSection;
+
+impl Section for InteractionSection {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        interaction_section(ui, f.lab, f.settings);
+    }
 }
 
 /// Longest body name shown whole in the heading (fits the default panel width).
