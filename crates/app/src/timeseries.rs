@@ -1,6 +1,6 @@
 //! The time-series schema: one row per simulation step, written as CSV by `inertia-lab simulate`
 //! and by the app's plot export, and kept in memory by the app's plot history. The columns are
-//! documented in README ("Dynamics"): time, ω in the principal body frame, ω and L in world, the
+//! documented in docs/simulate.md: time, ω in the principal body frame, ω and L in world, the
 //! Hamilton quaternion (w, x, y, z) taking the principal body frame to world, and the energies.
 
 use std::io::{self, Write};

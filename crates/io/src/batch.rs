@@ -1,5 +1,5 @@
 //! The batch table: one row for each file of a batch, whatever the file holds. What the Python
-//! package's `measure_table` and `measure_files` write, in the versioned schema README documents
+//! package's `measure_table` and `measure_files` write, in the versioned schema docs/python.md documents
 //! ("Batch table", [`SCHEMA_VERSION`]).
 //!
 //! A row never fails: a file that cannot be read, parsed or integrated, or whose reading panics,

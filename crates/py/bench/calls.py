@@ -1,5 +1,5 @@
 """Benchmark of the package's calls against trimesh, side by side in one run; prints a markdown
-table (README's "Python" figures). Not a test: run it by hand, on an idle machine.
+table (docs/python.md's figures). Not a test: run it by hand, on an idle machine.
 
     python crates/py/bench/calls.py [--files FOLDER] [--runs 5]
 

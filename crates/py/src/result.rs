@@ -205,7 +205,7 @@ impl MassResult {
         to_python(py, &warnings)
     }
 
-    /// `props --json`'s object (schema `SCHEMA_VERSION`, documented in README).
+    /// `props --json`'s object (schema `SCHEMA_VERSION`, documented in docs/props.md).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, &self.json())
     }

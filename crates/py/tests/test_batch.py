@@ -35,9 +35,9 @@ def test_schema_is_versioned_and_documented():
     names = schema.names
     assert len(names) == len(set(names))
     assert names[:4] == ["id", "path", "size_bytes", "status"]
-    readme = (ASSETS.parent / "README.md").read_text()
+    readme = (ASSETS.parent / "docs" / "python.md").read_text()
     missing = [n for n in names if f"`{n}`" not in readme and not n.startswith("w_")]
-    assert not missing, f"README's batch table does not document {missing}"
+    assert not missing, f"docs/python.md's batch table does not document {missing}"
 
 
 def test_one_row_per_row_never_raising(folder):

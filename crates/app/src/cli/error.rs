@@ -17,7 +17,7 @@ pub enum CliError {
 }
 
 impl CliError {
-    /// The process exit code documented in README.md.
+    /// The process exit code documented in docs/props.md.
     pub fn exit_code(&self) -> ExitCode {
         match self {
             CliError::Usage(_) => ExitCode::from(2),

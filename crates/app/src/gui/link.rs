@@ -1,7 +1,7 @@
 //! A scene named by a link: the query string of the page's address, as the lab's commands, so
 //! that a teacher can send students straight to the racket spinning about its middle axis
-//! beside its bounding-box copy (`?sample=tennis_racket&spin=2&compare=bbox`). README's "The lab
-//! in a browser" lists the keys.
+//! beside its bounding-box copy (`?sample=tennis_racket&spin=2&compare=bbox`). docs/web.md lists
+//! the keys.
 
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::InertiaSource;

@@ -232,7 +232,7 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
     v
 }
 
-/// The `audit --json` object (schema [`AUDIT_SCHEMA_VERSION`], documented in README).
+/// The `audit --json` object (schema [`AUDIT_SCHEMA_VERSION`], documented in docs/audit.md).
 pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
     let kind = report.options.geometry.name();
     let links: Vec<Value> = report

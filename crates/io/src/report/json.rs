@@ -1,5 +1,5 @@
 //! The `props --json` object: one mesh ([`single`]) or a body of parts ([`composite`]), in the
-//! versioned schema README documents.
+//! versioned schema docs/props.md documents.
 
 use massprops::defects::Orientation;
 use massprops::principal::Degeneracy;

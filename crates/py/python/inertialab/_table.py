@@ -1,7 +1,7 @@
 """The batch table: ``measure_table`` takes an Arrow table of files and gives one row per row.
 
 The columns are defined once, in Rust (``inertia_lab::batch``); ``BATCH_SCHEMA`` is their Arrow
-schema, versioned by ``BATCH_SCHEMA_VERSION`` and documented in README ("Batch table").
+schema, versioned by ``BATCH_SCHEMA_VERSION`` and documented in docs/python.md ("Batch table").
 """
 
 from __future__ import annotations

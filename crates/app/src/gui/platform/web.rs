@@ -3,7 +3,7 @@
 //! files come in through the browser's file picker (several at once, so that a body file
 //! arrives with its meshes) with their bytes; a save "dialog" answers at once with the name to
 //! download; the page's title names the body, and the canvas carries the figures scripts read
-//! ([`publish`]: README's "The lab in a browser" lists them).
+//! ([`publish`]: docs/web.md lists them).
 
 use std::cell::{Cell, RefCell};
 use std::path::PathBuf;
