@@ -334,17 +334,7 @@ mod tests {
     #[test]
     fn every_format_exports_and_frames_are_checked() {
         let p = rotated_hammer();
-        for format in [
-            Format::Json,
-            Format::Urdf,
-            Format::Mjcf,
-            Format::Sdf,
-            Format::Unity,
-            Format::Godot,
-            Format::Unreal,
-            Format::Rapier,
-            Format::Gltf,
-        ] {
+        for &format in Format::ALL {
             let options = ExportOptions {
                 format,
                 units: LengthUnit::M,
