@@ -10,6 +10,9 @@
 //!
 //! `ARCHITECTURE.md` gives the allowed dependencies of each folder.
 
+// The page never runs the command line: it is not compiled into the WebAssembly module (nor is
+// clap, a desktop-only dependency).
+#[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 #[cfg(feature = "gui")]
 pub mod gui;
