@@ -57,7 +57,7 @@ fn ascii_general(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     // stl_io reads the first `solid … endsolid` block and silently stops there: each block is
     // read on its own, and its name names a part.
     for (name, block) in solid_blocks(bytes) {
-        let patched = patch_bare_solid(block);
+        let patched = patch_for_stl_io(block);
         read_triangles(
             patched.as_deref().unwrap_or(block),
             &mut corners,
@@ -132,9 +132,12 @@ fn ascii_fast(bytes: &[u8]) -> Option<AsciiParsed> {
                 return None;
             }
             {
-                // `stl_io` wants the block's first line to start with `solid ` (a bare `solid` is
-                // given its space by `patch_bare_solid`).
-                if !(line.starts_with("solid ") || line.trim_ascii_end() == "solid") {
+                // `solid`, then a space, a tab or the line's end (`stl_io` is given its space by
+                // `patch_for_stl_io`); not an indented `solid`, nor `solids`.
+                if !line
+                    .strip_prefix("solid")
+                    .is_some_and(|rest| rest.is_empty() || rest.starts_with(char::is_whitespace))
+                {
                     return None;
                 }
                 let name = line.trim_ascii()[5..].trim_ascii();
@@ -160,7 +163,13 @@ fn ascii_fast(bytes: &[u8]) -> Option<AsciiParsed> {
             (0, "endsolid") => block = None,
             (0, "facet") => {
                 (words.next()? == "normal").then_some(())?;
-                numbers(&mut words)?;
+                // The normal is never used (the corners give each face its orientation), so a
+                // NaN there (some exporters write one for a degenerate facet) refuses nothing.
+                let mut normal = [0.0f32; 3];
+                for c in &mut normal {
+                    *c = words.next()?.parse().ok()?;
+                }
+                words.next().is_none().then_some(())?;
                 out.facet_lines.push((i + 1) as u32);
                 out.face_parts.push(part);
                 step = 1;
@@ -414,16 +423,43 @@ fn count_warning(header: u64, records: u64) -> crate::Warning {
     }
 }
 
-/// `stl_io` takes a file for ASCII only when its first line starts with `"solid "`: a block
-/// that opens with a bare `solid` line (no name) gets the space in a copy.
-fn patch_bare_solid(block: &[u8]) -> Option<Vec<u8>> {
-    let first_line = block.split(|&b| b == b'\n').next().unwrap_or_default();
-    if first_line.trim_ascii_end() != b"solid" {
+/// A copy of an ASCII block that `stl_io` reads as the fast path does, or `None` when the
+/// block needs none: `stl_io` takes a block for ASCII only when its first line starts with
+/// `"solid "`, so a bare `solid` line (no name), or `solid` and a tab before the name (assimp's
+/// `sphereWithHole.stl`), gets the space; and it refuses a non-finite facet normal, which mass
+/// properties never use, so such a normal is written as `0 0 0`.
+fn patch_for_stl_io(block: &[u8]) -> Option<Vec<u8>> {
+    let first = match block.strip_prefix(b"solid")?.first() {
+        Some(b'\t') => Some(6),
+        None | Some(b'\r' | b'\n') => Some(5),
+        _ => None,
+    };
+    let bad_normal = |line: &[u8]| {
+        let text = std::str::from_utf8(line).unwrap_or_default();
+        let mut words = text.split_ascii_whitespace();
+        words.next() == Some("facet")
+            && words.next() == Some("normal")
+            && words.any(|w| w.parse::<f32>().is_ok_and(|x| !x.is_finite()))
+    };
+    let lines = || block.split_inclusive(|&b| b == b'\n');
+    if first.is_none() && !lines().any(bad_normal) {
         return None;
     }
     let mut copy = Vec::with_capacity(block.len() + 1);
-    copy.extend_from_slice(b"solid ");
-    copy.extend_from_slice(&block[5..]);
+    for (k, line) in lines().enumerate() {
+        match (k, first) {
+            (0, Some(from)) => {
+                copy.extend_from_slice(b"solid ");
+                copy.extend_from_slice(&line[from..]);
+            }
+            _ if bad_normal(line) => {
+                let end = &line[line.trim_ascii_end().len()..];
+                copy.extend_from_slice(b"facet normal 0 0 0");
+                copy.extend_from_slice(end);
+            }
+            _ => copy.extend_from_slice(line),
+        }
+    }
     Some(copy)
 }
 
@@ -559,6 +595,58 @@ mod tests {
                 ascii_general(changed.as_bytes(), path),
             );
             assert_eq!(format!("{a:?}"), format!("{b:?}"), "{what}");
+        }
+    }
+
+    /// Two defects of real files: a `solid` line with a tab before its name (assimp's
+    /// `sphereWithHole.stl`) was taken for binary and refused ("failed to fill whole buffer"),
+    /// and a NaN facet normal, which mass properties never use, refused the whole file. Both read
+    /// now, on the fast path and through `stl_io`, as the plain file does.
+    #[test]
+    fn a_tab_after_solid_and_a_nan_normal_read_as_the_plain_file() {
+        let facet = |normal: &str, [a, b, c]: [&str; 3]| {
+            format!(
+                "facet normal {normal}\nouter loop\nvertex {a}\nvertex {b}\nvertex {c}\nendloop\n\
+                 endfacet\n"
+            )
+        };
+        let (o, x, y, z) = ("0 0 0", "1 0 0", "0 1 0", "0 0 1");
+        let plain = format!(
+            "solid t\n{}{}{}{}endsolid t\n",
+            facet("0 0 -1", [o, y, x]),
+            facet("0 -1 0", [o, x, z]),
+            facet("-1 0 0", [o, z, y]),
+            facet("1 1 1", [x, y, z])
+        );
+        let path = Path::new("t.stl");
+        let expected = parse_stl(plain.as_bytes(), path).expect("the plain file");
+        let volume = crate::mass_properties(&expected.mesh, 1.0).map(|p| p.mass);
+        assert!(
+            matches!(volume, Ok(v) if (v - 1.0 / 6.0).abs() < 1e-15),
+            "{volume:?}"
+        );
+        for (what, changed) in [
+            (
+                "a tab after solid",
+                plain.replacen("solid t", "solid\tt", 1),
+            ),
+            ("a NaN normal", plain.replacen("0 0 -1", "nan NaN -nan", 1)),
+        ] {
+            assert!(is_ascii(changed.as_bytes()), "{what}");
+            let fast = parse_stl(changed.as_bytes(), path).map_err(|e| e.to_string());
+            assert_eq!(fast.as_ref().map(|f| &f.mesh), Ok(&expected.mesh), "{what}");
+            assert_eq!(
+                fast.map(|f| f.part_names),
+                Ok(vec!["t".to_owned()]),
+                "{what}"
+            );
+            let general = ascii_general(changed.as_bytes(), path).map_err(|e| e.to_string());
+            let general = general.map(|f| f.mesh);
+            assert_eq!(
+                general.as_ref(),
+                Ok(&expected.mesh),
+                "{what} through stl_io"
+            );
         }
     }
 
