@@ -1,4 +1,4 @@
-//! One input path: a file (an OBJ or STL mesh, or a body file of parts) and what the user said
+//! One input path: a file (a mesh of any format in massprops' table, or a body file of parts) and what the user said
 //! about its mass and its defects, turned into a body. `props`, `export` and `simulate` and the
 //! app's loader all come through [`resolve`], so the same file with the same flags is the same
 //! body everywhere, with the same warnings.

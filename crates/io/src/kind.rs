@@ -140,19 +140,19 @@ mod tests {
         assert!(FileKind::is_robot(Path::new("panda.URDF")));
     }
 
-    /// The words are today's (the two formats), so the front ends read as they did.
+    /// The words name every format of the table.
     #[test]
     fn the_words_name_every_format() {
-        assert_eq!(mesh_format_words(), "OBJ or STL");
-        assert_eq!(mesh_extension_words(), ".obj or .stl");
-        assert_eq!(part_label(), "Meshes (OBJ, STL)");
+        assert_eq!(mesh_format_words(), "OBJ, STL or PLY");
+        assert_eq!(mesh_extension_words(), ".obj, .stl or .ply");
+        assert_eq!(part_label(), "Meshes (OBJ, STL, PLY)");
         assert_eq!(
             Openable { robots: true }.words(),
-            "a mesh (OBJ/STL), a body .toml or a robot .urdf/.xml"
+            "a mesh (OBJ/STL/PLY), a body .toml or a robot .urdf/.xml"
         );
         assert_eq!(
             Openable { robots: false }.extensions(),
-            ["obj", "stl", "toml"]
+            ["obj", "stl", "ply", "toml"]
         );
     }
 }

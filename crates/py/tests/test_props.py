@@ -97,6 +97,25 @@ def test_file_errors(tmp_path):
     assert e.value.kind == "unsupported_format"
 
 
+def test_a_ply_file_is_read_as_props_reads_it(tmp_path):
+    # The mesh-format table is the native module's: PLY is searched for and read like OBJ.
+    assert il.MESH_EXTENSIONS == (".obj", ".stl", ".ply", ".toml")
+    corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    quads = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+    path = tmp_path / "box.ply"
+    path.write_text(
+        "ply\nformat ascii 1.0\nelement vertex 8\nproperty double x\nproperty double y\n"
+        "property double z\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n"
+        + "".join(f"{2 * x} {3 * y} {5 * z}\n" for x, y, z in corners)
+        + "".join("4 %d %d %d %d\n" % q for q in quads)
+    )
+    result = il.analyze_file(path, density=2.0)
+    assert result.to_dict() == props_json("test_a_ply_file_is_read_as_props_reads_it", path, "--density", "2")
+    # A 2 × 3 × 5 box of density 2: mass 60, I₁ = m(b² + c²)/12 about its centre.
+    assert math.isclose(result.mass, 60.0, rel_tol=1e-15)
+    assert math.isclose(result.principal_moments[0], 60.0 * (4 + 9) / 12, rel_tol=1e-14)
+
+
 def test_exports_are_the_clis(tmp_path):
     import subprocess
 

@@ -1,4 +1,5 @@
-//! Reading meshes from files: Wavefront OBJ and STL, binary or ASCII, by fast paths of our own
+//! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII) and PLY (`ply.rs`: ASCII or
+//! binary, either byte order), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
 //! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
 //! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
 //! identical coordinates are welded so per-corner splitting in a file never changes the
@@ -8,6 +9,7 @@ mod body;
 mod obj;
 mod obj_fast;
 mod obj_parsed;
+mod ply;
 mod stl;
 
 use std::path::Path;
@@ -16,6 +18,7 @@ pub use body::{BODY_FILE_EXTENSION, BODY_FILE_VERSION, BodyFile, PartEntry, is_b
 #[cfg(fuzzing)]
 pub use obj::fast_path_agrees;
 pub use obj::parse_obj;
+pub use ply::parse_ply;
 pub use stl::parse_stl;
 
 use crate::{Analysis, MassSpec, MeshError, Method, PolyMesh, Repairs, Warning, analyze_with};
@@ -97,10 +100,10 @@ type LoadFn = fn(&Path, &dyn Fn(f32)) -> Result<MeshFile, MeshError>;
 /// A reader of files in memory: the bytes, and the path that names them in messages.
 type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 
-/// Every mesh format the readers take. (No column of magic bytes yet: neither OBJ, which is
-/// free text, nor STL, whose binary header is 80 free bytes that often begin "solid" like an
-/// ASCII file, has a signature to sniff; a file is known by its extension.)
-pub static MESH_FORMATS: [MeshFormat; 2] = [
+/// Every mesh format the readers take. (No column of magic bytes yet: OBJ is free text and
+/// STL's binary header is 80 free bytes that often begin "solid" like an ASCII file, so a file
+/// is known by its extension; PLY's `ply` line will be one when a reader sniffs.)
+pub static MESH_FORMATS: [MeshFormat; 3] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
@@ -114,6 +117,13 @@ pub static MESH_FORMATS: [MeshFormat; 2] = [
         holds_parts: true,
         load: stl::load_stl,
         parse: parse_stl,
+    },
+    MeshFormat {
+        name: "PLY",
+        extensions: &["ply"],
+        holds_parts: false,
+        load: ply::load_ply,
+        parse: parse_ply,
     },
 ];
 
@@ -279,12 +289,12 @@ mod tests {
                 "{name}: {volume:?}"
             );
         }
-        let e = parse_mesh(b"", Path::new("a.ply"))
+        let e = parse_mesh(b"", Path::new("a.off"))
             .map(|_| ())
             .map_err(|e| e.to_string());
         assert_eq!(
             e,
-            Err("a.ply: unsupported file type (expected .obj or .stl)".to_owned())
+            Err("a.off: unsupported file type (expected .obj, .stl or .ply)".to_owned())
         );
     }
 }

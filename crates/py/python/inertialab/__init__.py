@@ -2,7 +2,8 @@
 mass, from Python.
 
 - ``mass_properties(vertices, faces, ...)``: one mesh from numpy arrays or a ``trimesh.Trimesh``;
-- ``analyze_file(path, ...)``: an OBJ, STL or body file, as ``inertia-lab props`` reads it;
+- ``analyze_file(path, ...)``: a mesh file (``MESH_EXTENSIONS``: OBJ, STL, PLY) or a body file,
+  as ``inertia-lab props`` reads it;
 - ``measure_table(batch, ...)``: an Arrow table of files in, the batch table out, one row each;
 - ``measure_files(paths, out, ...)``: a folder of files into resumable Parquet shards;
 - ``mesh_files(folder_or_glob)``: the files ``measure_files`` would measure, for an engine;
@@ -15,11 +16,19 @@ off-diagonals are −∑ m·x·y; principal moments ascending, principal axes as
 
 from ._api import Repairs, analyze_file, mass_properties
 from ._files import Summary, measure_files, mesh_files
-from ._native import BATCH_SCHEMA_VERSION, SCHEMA_VERSION, MassResult, MeshError, __version__
+from ._native import (
+    BATCH_SCHEMA_VERSION,
+    MESH_EXTENSIONS,
+    SCHEMA_VERSION,
+    MassResult,
+    MeshError,
+    __version__,
+)
 from ._table import batch_schema, measure_table
 
 __all__ = [
     "BATCH_SCHEMA_VERSION",
+    "MESH_EXTENSIONS",
     "MassResult",
     "MeshError",
     "Repairs",

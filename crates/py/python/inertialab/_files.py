@@ -58,7 +58,7 @@ class Summary:
 
 
 def mesh_files(paths_or_glob: Union[str, os.PathLike[str], Iterable[Union[str, os.PathLike[str]]]]) -> list[str]:
-    """The files of a folder (searched for .obj, .stl and .toml), a glob pattern (``**``
+    """The files of a folder (searched for ``MESH_EXTENSIONS``: every mesh format, and .toml), a glob pattern (``**``
     recursive) or a list of paths, sorted for folders and globs, as given for lists."""
     if isinstance(paths_or_glob, (str, os.PathLike)):
         text = os.fspath(paths_or_glob)
