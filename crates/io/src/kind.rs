@@ -143,16 +143,16 @@ mod tests {
     /// The words name every format of the table.
     #[test]
     fn the_words_name_every_format() {
-        assert_eq!(mesh_format_words(), "OBJ, STL or PLY");
-        assert_eq!(mesh_extension_words(), ".obj, .stl or .ply");
-        assert_eq!(part_label(), "Meshes (OBJ, STL, PLY)");
+        assert_eq!(mesh_format_words(), "OBJ, STL, PLY or OFF");
+        assert_eq!(mesh_extension_words(), ".obj, .stl, .ply or .off");
+        assert_eq!(part_label(), "Meshes (OBJ, STL, PLY, OFF)");
         assert_eq!(
             Openable { robots: true }.words(),
-            "a mesh (OBJ/STL/PLY), a body .toml or a robot .urdf/.xml"
+            "a mesh (OBJ/STL/PLY/OFF), a body .toml or a robot .urdf/.xml"
         );
         assert_eq!(
             Openable { robots: false }.extensions(),
-            ["obj", "stl", "ply", "toml"]
+            ["obj", "stl", "ply", "off", "toml"]
         );
     }
 }

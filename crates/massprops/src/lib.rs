@@ -7,9 +7,9 @@
 //! Exact Formulas for the 3-D Tetrahedron Inertia Tensor", J. Math. Stat. 1(1), 2004) that
 //! agrees with it to round-off. Also the thin
 //! shell, the vertex point-mass sum and the bounding-box cuboid, principal moments and axes by a
-//! scale-invariant Jacobi eigensolver, mesh diagnostics, and OBJ, STL and PLY loading.
+//! scale-invariant Jacobi eigensolver, mesh diagnostics, and OBJ, STL, PLY and OFF loading.
 //!
-//! Cargo features, both on by default: `io` (OBJ, STL and PLY parsing and file loading, by fast
+//! Cargo features, both on by default: `io` (OBJ, STL, PLY and OFF parsing and file loading, by fast
 //! paths of our own beside `tobj` and `stl_io`) and `parallel` (the triangle path and the
 //! diagnostics on the rayon pool).
 //! Without `parallel`, [`integrals::IntegrationPath::TriangleParallel`] and [`integrals::IntegrationPath::Auto`] run

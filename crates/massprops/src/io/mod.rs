@@ -1,5 +1,5 @@
-//! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII) and PLY (`ply.rs`: ASCII or
-//! binary, either byte order), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
+//! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII), PLY (`ply.rs`: ASCII or
+//! binary, either byte order) and OFF (`off.rs`), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
 //! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
 //! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
 //! identical coordinates are welded so per-corner splitting in a file never changes the
@@ -9,6 +9,7 @@ mod body;
 mod obj;
 mod obj_fast;
 mod obj_parsed;
+mod off;
 mod ply;
 mod stl;
 
@@ -18,6 +19,7 @@ pub use body::{BODY_FILE_EXTENSION, BODY_FILE_VERSION, BodyFile, PartEntry, is_b
 #[cfg(fuzzing)]
 pub use obj::fast_path_agrees;
 pub use obj::parse_obj;
+pub use off::parse_off;
 pub use ply::parse_ply;
 pub use stl::parse_stl;
 
@@ -103,7 +105,7 @@ type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 /// Every mesh format the readers take. (No column of magic bytes yet: OBJ is free text and
 /// STL's binary header is 80 free bytes that often begin "solid" like an ASCII file, so a file
 /// is known by its extension; PLY's `ply` line will be one when a reader sniffs.)
-pub static MESH_FORMATS: [MeshFormat; 3] = [
+pub static MESH_FORMATS: [MeshFormat; 4] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
@@ -124,6 +126,13 @@ pub static MESH_FORMATS: [MeshFormat; 3] = [
         holds_parts: false,
         load: ply::load_ply,
         parse: parse_ply,
+    },
+    MeshFormat {
+        name: "OFF",
+        extensions: &["off"],
+        holds_parts: false,
+        load: off::load_off,
+        parse: parse_off,
     },
 ];
 
@@ -289,12 +298,12 @@ mod tests {
                 "{name}: {volume:?}"
             );
         }
-        let e = parse_mesh(b"", Path::new("a.off"))
+        let e = parse_mesh(b"", Path::new("a.glb"))
             .map(|_| ())
             .map_err(|e| e.to_string());
         assert_eq!(
             e,
-            Err("a.off: unsupported file type (expected .obj, .stl or .ply)".to_owned())
+            Err("a.glb: unsupported file type (expected .obj, .stl, .ply or .off)".to_owned())
         );
     }
 }

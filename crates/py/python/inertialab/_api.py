@@ -187,7 +187,7 @@ def analyze_file(
     repairs: Union[Repairs, dict[str, Any], None] = None,
     threads: Union[int, None] = None,
 ) -> MassResult:
-    """Mass properties of an OBJ, STL (binary or ASCII) or PLY file, or of a body file (``.toml``) of
+    """Mass properties of an OBJ, STL (binary or ASCII), PLY or OFF file, or of a body file (``.toml``) of
     parts with their materials and placements, read and analysed as ``inertia-lab props`` does:
     ``analyze_file(p).to_dict()`` is ``props --json p``'s object.
 
