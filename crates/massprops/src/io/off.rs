@@ -76,7 +76,8 @@ pub fn parse_off(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
         })
     };
     let (vertices, faces) = (count(0, "vertex")?, count(1, "face")?);
-    let mut positions = Vec::with_capacity(vertices);
+    // The count is the file's word: room for what its bytes can hold, no more.
+    let mut positions = Vec::with_capacity(vertices.min(bytes.len()));
     for v in 0..vertices {
         let (line, text) = lines.next().ok_or_else(|| {
             bad(
@@ -247,6 +248,11 @@ mod tests {
         assert_eq!(
             said("ply\n"),
             Err("bad.off, line 1: not an OFF file: it starts with \"ply\", not OFF".to_owned())
+        );
+        // A count no file could hold reserves nothing for it.
+        assert_eq!(
+            said("OFF\n1000000000000000 1 0\n"),
+            Err("bad.off: the file ends before vertex 0 (counting from 0)".to_owned())
         );
         assert_eq!(
             said(&off.replacen("4 3 0 4 7\n", "", 1)),

@@ -239,6 +239,8 @@ enum Body<'a> {
 
 /// The ASCII data's numbers, one at a time, with their lines.
 struct Tokens<'a> {
+    /// The data's length in bytes.
+    left: usize,
     lines: std::str::Lines<'a>,
     words: std::str::SplitAsciiWhitespace<'a>,
     /// The line of the last number read.
@@ -248,6 +250,7 @@ struct Tokens<'a> {
 impl<'a> Tokens<'a> {
     fn new(text: &'a str, first_line: usize) -> Self {
         Self {
+            left: text.len(),
             lines: text.lines(),
             words: "".split_ascii_whitespace(),
             line: first_line - 1,
@@ -302,6 +305,14 @@ impl Body<'_> {
                 *at += n;
                 Ok(binary_value(b, ty, *little))
             }
+        }
+    }
+
+    /// How many bytes are left: a bound on the records still to come.
+    fn left(&self) -> usize {
+        match self {
+            Body::Ascii(tokens) => tokens.left,
+            Body::Binary { bytes, at, .. } => bytes.len().saturating_sub(*at),
         }
     }
 
@@ -371,7 +382,8 @@ fn read_element(element: &Element, body: &mut Body<'_>, mesh: &mut Read) -> Resu
                 ));
             };
             mesh.has_vertices = true;
-            mesh.positions.reserve(element.count);
+            // The count is the file's word: room for what the bytes can hold, no more.
+            mesh.positions.reserve(element.count.min(body.left()));
             (Some([x, y, z]), None)
         }
         "face" => {
@@ -388,6 +400,10 @@ fn read_element(element: &Element, body: &mut Body<'_>, mesh: &mut Read) -> Resu
         }
         _ => (None, None),
     };
+    // Records of no properties take no bytes: there is nothing to read, however many.
+    if element.properties.is_empty() {
+        return Ok(());
+    }
     for record in 0..element.count {
         let what = || format!("{name} {record} (counting from 0)");
         let mut point = [0.0; 3];
@@ -692,6 +708,30 @@ mod tests {
             said(nan.as_bytes()),
             Err("bad.ply, line 19: vertex 6 has a coordinate that is not finite (NaN)".to_owned())
         );
+    }
+
+    /// Counts no file could hold are refused quickly, without reserving memory for them: a
+    /// billion vertices in a few bytes, and a trillion records of an element with no properties
+    /// (which take no bytes at all) before a cube.
+    #[test]
+    fn counts_no_file_could_hold_are_harmless() {
+        let path = Path::new("big.ply");
+        let huge = "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000000\n\
+                    property float x\nproperty float y\nproperty float z\nend_header\n\0\0\0\0";
+        let said = parse_ply(huge.as_bytes(), path)
+            .map(|_| ())
+            .map_err(|e| e.to_string());
+        assert_eq!(
+            said,
+            Err("big.ply: the file ends at byte 134 inside vertex 0 (counting from 0)".to_owned())
+        );
+        let empty = ascii_cube().replacen(
+            "element vertex 8",
+            "element nothing 1000000000000\r\nelement vertex 8",
+            1,
+        );
+        let file = parse_ply(empty.as_bytes(), path).expect("reads");
+        assert_eq!(file.mesh.face_count(), 6);
     }
 
     /// A face of two corners is skipped and reported, as OBJ's are.
