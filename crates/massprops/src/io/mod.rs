@@ -91,6 +91,9 @@ pub struct MeshFormat {
     /// Whether one file can hold several named parts (OBJ objects and groups, STL solids),
     /// which a body can give their own materials.
     pub holds_parts: bool,
+    /// What a file of the format starts with, if it has a signature: a file is known by it
+    /// before its extension, so one named wrongly, or not at all (bytes from a table), is read.
+    pub magic: &'static [&'static [u8]],
     /// Reads a file from disk in blocks, calling the progress callback with the fraction read.
     load: LoadFn,
     /// Parses a file already in memory.
@@ -102,14 +105,15 @@ type LoadFn = fn(&Path, &dyn Fn(f32)) -> Result<MeshFile, MeshError>;
 /// A reader of files in memory: the bytes, and the path that names them in messages.
 type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 
-/// Every mesh format the readers take. (No column of magic bytes yet: OBJ is free text and
-/// STL's binary header is 80 free bytes that often begin "solid" like an ASCII file, so a file
-/// is known by its extension; PLY's `ply` line will be one when a reader sniffs.)
+/// Every mesh format the readers take. OBJ (free text) and STL (a binary header is 80 free bytes,
+/// which often begin "solid" like an ASCII file) have no signature: they are known by their
+/// extension alone.
 pub static MESH_FORMATS: [MeshFormat; 4] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
         holds_parts: true,
+        magic: &[],
         load: obj::load_obj,
         parse: parse_obj,
     },
@@ -117,6 +121,7 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         name: "STL",
         extensions: &["stl"],
         holds_parts: true,
+        magic: &[],
         load: stl::load_stl,
         parse: parse_stl,
     },
@@ -124,6 +129,7 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         name: "PLY",
         extensions: &["ply"],
         holds_parts: false,
+        magic: &[b"ply\n", b"ply\r\n"],
         load: ply::load_ply,
         parse: parse_ply,
     },
@@ -131,6 +137,10 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         name: "OFF",
         extensions: &["off"],
         holds_parts: false,
+        // The keyword, with the prefixes for what each vertex carries besides its position.
+        magic: &[
+            b"OFF", b"COFF", b"NOFF", b"CNOFF", b"STOFF", b"STCOFF", b"STNOFF",
+        ],
         load: off::load_off,
         parse: parse_off,
     },
@@ -143,6 +153,18 @@ impl MeshFormat {
         MESH_FORMATS
             .iter()
             .find(|f| f.extensions.contains(&extension.as_str()))
+    }
+
+    /// The format whose signature `bytes` start with, if any.
+    pub fn sniff(bytes: &[u8]) -> Option<&'static MeshFormat> {
+        MESH_FORMATS
+            .iter()
+            .find(|f| f.magic.iter().any(|m| bytes.starts_with(m)))
+    }
+
+    /// The format of a file that starts with `head`: by its signature, else by its extension.
+    pub fn of_file(path: &Path, head: &[u8]) -> Option<&'static MeshFormat> {
+        MeshFormat::sniff(head).or_else(|| MeshFormat::of(path))
     }
 
     /// Every extension of every format, in table order.
@@ -171,13 +193,25 @@ pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
 /// [`load_mesh`], calling `progress` with the fraction of the file read so far (0 to 1) after
 /// each block.
 pub fn load_mesh_reporting(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
-    let format = MeshFormat::of(path).ok_or_else(|| unsupported(path))?;
+    let format = MeshFormat::of_file(path, &head(path)).ok_or_else(|| unsupported(path))?;
     (format.load)(path, progress)
 }
 
-/// Parses a file already in memory; `path` names it in messages and gives the format.
+/// The first bytes of a file, for its signature (none if it cannot be read: the reader then
+/// says why).
+fn head(path: &Path) -> Vec<u8> {
+    use std::io::Read as _;
+    let mut head = Vec::with_capacity(16);
+    if let Ok(file) = std::fs::File::open(path) {
+        let _ = file.take(16).read_to_end(&mut head);
+    }
+    head
+}
+
+/// Parses a file already in memory; `path` names it in messages and gives the format, unless
+/// the bytes carry a format's signature.
 pub fn parse_mesh(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
-    let format = MeshFormat::of(path).ok_or_else(|| unsupported(path))?;
+    let format = MeshFormat::of_file(path, bytes).ok_or_else(|| unsupported(path))?;
     (format.parse)(bytes, path)
 }
 
@@ -281,6 +315,38 @@ mod tests {
         }
         assert!(MeshFormat::of(Path::new("robot.urdf")).is_none());
         assert!(MeshFormat::of(Path::new("no_extension")).is_none());
+    }
+
+    /// A file with a signature is read by it whatever its name says: PLY and OFF named wrongly
+    /// or not at all; a name alone still decides for OBJ and STL, which have none.
+    #[test]
+    fn a_signature_decides_before_the_name() {
+        let ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n\
+                   property float z\nelement face 4\nproperty list uchar int vertex_indices\n\
+                   end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+        let off = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+        for (text, names) in [
+            (ply, ["tetra", "tetra.stl", "tetra.bin"]),
+            (off, ["tetra", "tetra.obj", "x.txt"]),
+        ] {
+            for name in names {
+                let volume = parse_mesh(text.as_bytes(), Path::new(name))
+                    .map_err(|e| e.to_string())
+                    .and_then(|f| crate::mass_properties(&f.mesh, 1.0).map_err(|e| e.to_string()))
+                    .map(|p| p.mass);
+                assert!(
+                    matches!(volume, Ok(v) if (v - 1.0 / 6.0).abs() < 1e-15),
+                    "{name}: {volume:?}"
+                );
+            }
+        }
+        assert!(MeshFormat::sniff(TETRA_OBJ.as_bytes()).is_none());
+        assert!(MeshFormat::sniff(TETRA_STL.as_bytes()).is_none());
+        let e = parse_mesh(TETRA_OBJ.as_bytes(), Path::new("tetra")).map(|_| ());
+        assert!(
+            matches!(e, Err(MeshError::UnsupportedFormat { .. })),
+            "{e:?}"
+        );
     }
 
     /// The table's readers read the unit tetrahedron (volume 1/6) from each format's text, and a
