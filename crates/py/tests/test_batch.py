@@ -1,6 +1,7 @@
 """The batch: one row per input row whatever the file holds, the same numbers as one file at a
 time, and a resumed run that writes no id twice."""
 
+import math
 import os
 import shutil
 import signal
@@ -11,6 +12,7 @@ import textwrap
 import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
+
 import pytest
 
 import inertialab as il
@@ -100,6 +102,22 @@ def test_bytes_and_densities(folder):
     # A RecordBatch is a batch too.
     batch = pa.record_batch({"path": paths[:1]})
     assert il.measure_table(batch).column("mass").to_pylist() == [il.analyze_file(paths[0]).mass]
+
+
+def test_bytes_named_by_no_extension_are_known_by_their_signature():
+    # A PLY unit tetrahedron whose row names no file type: its `ply` line says what it is.
+    ply = (
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+    ).encode()
+    table = il.measure_table(
+        pa.table({"path": ["scan-0042", "scan-0043.dat"], "data": [ply, b"hello"]}),
+        bytes_col="data",
+    )
+    rows = table.to_pylist()
+    assert rows[0]["status"] == "ok" and math.isclose(rows[0]["mass"], 1 / 6, rel_tol=1e-15)
+    assert rows[1]["status"] == "error"
 
 
 def test_measure_files_writes_every_file_once(folder, tmp_path_factory):
