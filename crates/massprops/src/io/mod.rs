@@ -94,8 +94,9 @@ pub struct MeshFormat {
     /// What a file of the format starts with, if it has a signature: a file is known by it
     /// before its extension, so one named wrongly, or not at all (bytes from a table), is read.
     pub magic: &'static [&'static [u8]],
-    /// Reads a file from disk in blocks, calling the progress callback with the fraction read.
-    load: LoadFn,
+    /// Reads a file from disk in blocks, calling the progress callback with the fraction read;
+    /// `None` for a format read whole and parsed.
+    load: Option<LoadFn>,
     /// Parses a file already in memory.
     parse: ParseFn,
 }
@@ -114,7 +115,7 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         extensions: &["obj"],
         holds_parts: true,
         magic: &[],
-        load: obj::load_obj,
+        load: Some(obj::load_obj),
         parse: parse_obj,
     },
     MeshFormat {
@@ -122,7 +123,7 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         extensions: &["stl"],
         holds_parts: true,
         magic: &[],
-        load: stl::load_stl,
+        load: Some(stl::load_stl),
         parse: parse_stl,
     },
     MeshFormat {
@@ -130,7 +131,7 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         extensions: &["ply"],
         holds_parts: false,
         magic: &[b"ply\n", b"ply\r\n"],
-        load: ply::load_ply,
+        load: None,
         parse: parse_ply,
     },
     MeshFormat {
@@ -141,7 +142,7 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         magic: &[
             b"OFF", b"COFF", b"NOFF", b"CNOFF", b"STOFF", b"STCOFF", b"STNOFF",
         ],
-        load: off::load_off,
+        load: None,
         parse: parse_off,
     },
 ];
@@ -194,7 +195,15 @@ pub fn load_mesh(path: &Path) -> Result<MeshFile, MeshError> {
 /// each block.
 pub fn load_mesh_reporting(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
     let format = MeshFormat::of_file(path, &head(path)).ok_or_else(|| unsupported(path))?;
-    (format.load)(path, progress)
+    if let Some(load) = format.load {
+        return load(path, progress);
+    }
+    let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
+        path: path.to_path_buf(),
+        source: source.into(),
+    })?;
+    progress(1.0);
+    (format.parse)(&bytes, path)
 }
 
 /// The first bytes of a file, for its signature (none if it cannot be read: the reader then
@@ -277,6 +286,14 @@ fn test_files(ext: &str, dirs: &str) -> Vec<std::path::PathBuf> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A mesh's faces as their corners' points, in order: what a reader must keep, whatever order
+    /// it numbers the vertices in (the readers' tests compare each format with the OBJ by it).
+    pub(super) fn face_points(mesh: &PolyMesh) -> Vec<Vec<nalgebra::Point3<f64>>> {
+        (0..mesh.face_count())
+            .map(|f| mesh.face_points(f).collect())
+            .collect()
+    }
 
     const TETRA_OBJ: &str =
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";

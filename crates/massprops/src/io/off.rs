@@ -159,18 +159,9 @@ pub fn parse_off(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     })
 }
 
-/// [`parse_off`] on a file, read whole.
-pub(super) fn load_off(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
-    let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
-        path: path.to_path_buf(),
-        source: source.into(),
-    })?;
-    progress(1.0);
-    parse_off(&bytes, path)
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::tests::face_points;
     use super::*;
 
     /// The unit cube: its corners and outward quads (as OBJ writes them, from 1).
@@ -187,12 +178,6 @@ mod tests {
          1 0 1 1 0 0 1\n1 1 1 1 0 0 1\n0 1 1 1 0 0 1\n4 0 3 2 1 0.5 0.5 0.5 1\n4 4 5 6 7\n\
          4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n",
     ];
-
-    fn face_points(mesh: &PolyMesh) -> Vec<Vec<Point3<f64>>> {
-        (0..mesh.face_count())
-            .map(|f| mesh.face_points(f).collect())
-            .collect()
-    }
 
     /// Each spelling has the OBJ's faces, corner for corner, and its mass properties bit for
     /// bit (volume 1); faces know their lines.

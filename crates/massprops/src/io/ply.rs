@@ -50,16 +50,6 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     finish(mesh, path)
 }
 
-/// [`parse_ply`] on a file, read whole.
-pub(super) fn load_ply(path: &Path, progress: &dyn Fn(f32)) -> Result<MeshFile, MeshError> {
-    let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
-        path: path.to_path_buf(),
-        source: source.into(),
-    })?;
-    progress(1.0);
-    parse_ply(&bytes, path)
-}
-
 /// How the records are written.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Encoding {
@@ -523,6 +513,7 @@ fn finish(read: Read, path: &Path) -> Result<MeshFile, MeshError> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::face_points;
     use super::*;
 
     /// The unit cube as eight corners and six outward quads.
@@ -609,14 +600,6 @@ mod tests {
             text += &format!("4 {} {} {} {}\r\n", q[0], q[1], q[2], q[3]);
         }
         text + "0 1\r\n"
-    }
-
-    /// A mesh's faces as their corners' points, in order (what a reader must keep, whatever
-    /// order it numbers the vertices in).
-    fn face_points(mesh: &PolyMesh) -> Vec<Vec<Point3<f64>>> {
-        (0..mesh.face_count())
-            .map(|f| mesh.face_points(f).collect())
-            .collect()
     }
 
     /// Every spelling of the cube has the OBJ's faces, corner for corner, and its mass
