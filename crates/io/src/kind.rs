@@ -75,15 +75,28 @@ impl Openable {
         }
     }
 
-    /// What may be dropped, for a hint ("a mesh (OBJ/STL), a body .toml or a robot .urdf/.xml").
-    pub fn words(self) -> String {
-        let meshes = MeshFormat::names("/");
+    /// What may be dropped, for a hint ("a mesh, a body .toml or a robot .urdf/.xml"). The
+    /// mesh formats are not listed in it, so that the hint (and the panel laid out around it)
+    /// stays the same as formats are added: [`mesh_formats_hint`] lists them.
+    pub fn words(self) -> &'static str {
         if self.robots {
-            format!("a mesh ({meshes}), a body .toml or a robot .urdf/.xml")
+            "a mesh, a body .toml or a robot .urdf/.xml"
         } else {
-            format!("a mesh ({meshes}), or a body .toml with its meshes")
+            "a mesh, or a body .toml with its meshes"
         }
     }
+}
+
+/// The mesh formats with their extensions, for a tooltip ("Meshes: OBJ (.obj), STL (.stl)").
+pub fn mesh_formats_hint() -> String {
+    let formats: Vec<String> = MESH_FORMATS
+        .iter()
+        .map(|f| {
+            let extensions: Vec<String> = f.extensions.iter().map(|e| format!(".{e}")).collect();
+            format!("{} ({})", f.name, extensions.join(", "))
+        })
+        .collect();
+    format!("Meshes: {}", formats.join(", "))
 }
 
 /// The extensions of a part's mesh, lower case, without the dot.
@@ -147,8 +160,8 @@ mod tests {
         assert_eq!(mesh_extension_words(), ".obj, .stl, .ply or .off");
         assert_eq!(part_label(), "Meshes (OBJ, STL, PLY, OFF)");
         assert_eq!(
-            Openable { robots: true }.words(),
-            "a mesh (OBJ/STL/PLY/OFF), a body .toml or a robot .urdf/.xml"
+            mesh_formats_hint(),
+            "Meshes: OBJ (.obj), STL (.stl), PLY (.ply), OFF (.off)"
         );
         assert_eq!(
             Openable { robots: false }.extensions(),

@@ -139,7 +139,8 @@ fn body_section(
                 {
                     state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
-                ui.label(platform::drop_hint());
+                ui.label(platform::drop_hint())
+                    .on_hover_text(inertia_io::kind::mesh_formats_hint());
             });
             if platform::READS_PATHS {
                 ui.horizontal(|ui| {
