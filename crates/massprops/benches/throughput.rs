@@ -3,7 +3,9 @@
 //!
 //! Run with `cargo bench -p massprops --bench throughput`; criterion prints the throughput of
 //! each (path, size) in Melem/s (= million triangles per second). The `cold_call` group times
-//! single calls made after a pause, the way a program that loads one mesh makes them.
+//! single calls made after a pause, the way a program that loads one mesh makes them. The
+//! `read` group parses the same 1M-triangle torus from memory as binary STL, binary PLY and ASCII
+//! PLY (the readers' cost per triangle, beside each other).
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -100,5 +102,70 @@ fn cold_call(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, throughput, cold_call);
+/// The torus's triangles as a binary STL and as PLY (binary little-endian floats, and ASCII),
+/// each as a writer other than ours would write them.
+fn files(mesh: &PolyMesh) -> [(&'static str, &'static str, Vec<u8>); 3] {
+    let triangles = mesh.as_triangles().expect("triangulated");
+    let points = mesh.positions();
+    let mut stl = vec![0u8; 80];
+    stl.extend_from_slice(&(triangles.len() as u32).to_le_bytes());
+    for t in triangles {
+        stl.extend_from_slice(&[0u8; 12]);
+        for &i in t {
+            for c in points[i as usize].iter() {
+                stl.extend_from_slice(&(*c as f32).to_le_bytes());
+            }
+        }
+        stl.extend_from_slice(&[0, 0]);
+    }
+    let header = |format: &str| {
+        format!(
+            "ply\nformat {format} 1.0\nelement vertex {}\nproperty float x\nproperty float y\n\
+             property float z\nelement face {}\nproperty list uchar int vertex_indices\n\
+             end_header\n",
+            points.len(),
+            triangles.len()
+        )
+    };
+    let mut binary = header("binary_little_endian").into_bytes();
+    for p in points {
+        for c in p.iter() {
+            binary.extend_from_slice(&(*c as f32).to_le_bytes());
+        }
+    }
+    for t in triangles {
+        binary.push(3);
+        for &i in t {
+            binary.extend_from_slice(&(i as i32).to_le_bytes());
+        }
+    }
+    let mut ascii = header("ascii");
+    for p in points {
+        ascii += &format!("{} {} {}\n", p.x as f32, p.y as f32, p.z as f32);
+    }
+    for t in triangles {
+        ascii += &format!("3 {} {} {}\n", t[0], t[1], t[2]);
+    }
+    [
+        ("binary_stl", "t.stl", stl),
+        ("binary_ply", "t.ply", binary),
+        ("ascii_ply", "t.ply", ascii.into_bytes()),
+    ]
+}
+
+fn read(c: &mut Criterion) {
+    let mut group = short_group(c, "read");
+    let mesh = torus_mesh(1_000_000);
+    let triangles = mesh.triangle_count();
+    group.throughput(Throughput::Elements(triangles as u64));
+    for (name, file, bytes) in files(&mesh) {
+        let path = std::path::Path::new(file);
+        group.bench_with_input(BenchmarkId::new(name, "1000k"), &bytes, |b, bytes| {
+            b.iter(|| massprops::parse_mesh(black_box(bytes), path).expect("reads"))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, throughput, cold_call, read);
 criterion_main!(benches);
