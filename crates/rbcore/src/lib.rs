@@ -28,6 +28,7 @@ mod error;
 mod forces;
 mod integrators;
 mod polhode;
+pub mod polhode_curves;
 mod simulation;
 
 pub use body::Body;

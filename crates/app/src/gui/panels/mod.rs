@@ -34,7 +34,6 @@ pub mod diagnostics;
 pub mod help;
 pub mod parts;
 pub mod plots;
-pub mod polhodes;
 pub mod robot;
 pub mod side;
 pub mod sphere;

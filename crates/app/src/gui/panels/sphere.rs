@@ -9,9 +9,9 @@ use nalgebra::{UnitQuaternion, Vector3};
 use rbcore::{Integrator, RotationModel, Stability};
 
 use super::PanelState;
-use super::polhodes::{self, Curve, CurveKind, polhodes};
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::Lab;
+use rbcore::polhode_curves::{self as polhodes, Curve, CurveKind, polhodes};
 
 const POLHODE_COLOR: Color32 = Color32::from_rgb(150, 150, 160);
 const SEPARATRIX_COLOR: Color32 = Color32::from_rgb(255, 170, 60);

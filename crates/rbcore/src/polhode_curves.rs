@@ -1,4 +1,5 @@
-//! The momentum sphere's geometry: the polhodes of a body at a given |L|, in its principal frame.
+//! The momentum sphere's geometry: the polhodes of a body at a given |L|, in its principal frame,
+//! as curves to draw (the app's momentum sphere draws them; [`crate::polhode`] classifies one).
 //!
 //! With no torque, body angular momentum stays on the sphere |L| = M and on the energy ellipsoid
 //! Σ Lₖ²/Iₖ = 2E; each polhode is their intersection (Landau & Lifshitz, *Mechanics* §37). With
@@ -69,7 +70,7 @@ pub fn polhodes(moments: &Vector3<f64>, m: f64, per_side: usize, samples: usize)
 /// curve the torque-free motion of `l` follows. `None` at rest, with three equal moments, in a
 /// steady spin or on the separatrix (drawn by [`polhodes`]).
 pub fn polhode_through(moments: &Vector3<f64>, l: &Vector3<f64>, samples: usize) -> Option<Curve> {
-    let rbcore::Polhode::Circles { axis, .. } = rbcore::polhode(moments, l) else {
+    let crate::Polhode::Circles { axis, .. } = crate::polhode(moments, l) else {
         return None;
     };
     let unit = l.normalize();
@@ -211,10 +212,10 @@ mod tests {
             let l0 = I.component_mul(&omega);
             let m = l0.norm();
             let curve = polhode_through(&I, &l0, 256).expect("a polhode").points;
-            let period = rbcore::torque_free_period(&I, &l0).expect("periodic");
+            let period = crate::torque_free_period(&I, &l0).expect("periodic");
             for k in 0..50 {
                 let t = period * f64::from(k) / 50.0;
-                let w = rbcore::torque_free_omega(&I, &l0, t).expect("periodic");
+                let w = crate::torque_free_omega(&I, &l0, t).expect("periodic");
                 let l = I.component_mul(&w) / m;
                 // Drawing tolerance: the view draws the unit sphere ~120 px wide, so 1e-3 is an
                 // eighth of a pixel; what remains is the chords' sagitta (measured ≤ 4.3e-4).
