@@ -122,6 +122,15 @@ pub enum Loaded {
     Joined(LoadedBody, String),
 }
 
+/// Where a load's files come from.
+#[derive(Debug)]
+pub enum LoadSource {
+    /// A file on disk (and the files it names).
+    Path(PathBuf),
+    /// Files given by their bytes (the browser's).
+    Files(FileSet),
+}
+
 /// A running load.
 #[derive(Debug)]
 pub struct Loading {
@@ -138,6 +147,15 @@ pub struct Loading {
 }
 
 impl Loading {
+    /// Starts loading `source` for `purpose` off the UI thread; `wake` is called after each
+    /// report (the UI passes a repaint request).
+    pub fn begin(source: LoadSource, purpose: Purpose, wake: impl Fn() + Send + 'static) -> Self {
+        match source {
+            LoadSource::Path(path) => Self::start(path, purpose, wake),
+            LoadSource::Files(files) => Self::start_files(FilesToLoad { files, purpose }, wake),
+        }
+    }
+
     /// Starts loading `path` for `purpose` on a worker thread; `wake` is called after each
     /// report (the UI passes a repaint request).
     pub fn start(path: PathBuf, purpose: Purpose, wake: impl Fn() + Send + 'static) -> Self {

@@ -38,7 +38,7 @@ use body::LoadedBody;
 use clock::FrameClock;
 pub use command::{Command, Message};
 pub use error::LabError;
-use loader::{FilesToLoad, Loaded, Loading, Purpose};
+use loader::{LoadSource, Loaded, Loading, Purpose};
 use robot::RobotModel;
 use settings::{AppSettings, InertiaSource};
 pub use specimen::{PokeFlash, Specimen, SpecimenId, StringView, Variant};
@@ -168,35 +168,15 @@ impl Lab {
             Command::Preset(axis) => self.restart(axis.min(2))?,
             Command::Settings(s) => self.set_settings(*s)?,
             Command::ResetSettings => self.set_settings(AppSettings::default())?,
-            Command::LoadFile(path) => {
-                let waker = self.waker.clone();
-                let loading = Loading::start(path, Purpose::Open, move || (waker.0)());
-                self.loading = Some(loading);
-            }
-            Command::LoadFiles(files) => {
-                let job = FilesToLoad {
-                    files,
-                    purpose: Purpose::Open,
-                };
-                let waker = self.waker.clone();
-                self.loading = Some(Loading::start_files(job, move || (waker.0)()));
-            }
+            Command::LoadFile(path) => self.start_load(LoadSource::Path(path), Purpose::Open),
+            Command::LoadFiles(files) => self.start_load(LoadSource::Files(files), Purpose::Open),
             Command::AddPart(path) => {
                 let purpose = self.adding_parts()?;
-                let waker = self.waker.clone();
-                let mut loading = Loading::start(path, purpose, move || (waker.0)());
-                loading.joins = Some(self.primary().body_arc().clone());
-                self.loading = Some(loading);
+                self.start_load(LoadSource::Path(path), purpose);
             }
             Command::AddPartFiles(files) => {
-                let job = FilesToLoad {
-                    files,
-                    purpose: self.adding_parts()?,
-                };
-                let waker = self.waker.clone();
-                let mut loading = Loading::start_files(job, move || (waker.0)());
-                loading.joins = Some(self.primary().body_arc().clone());
-                self.loading = Some(loading);
+                let purpose = self.adding_parts()?;
+                self.start_load(LoadSource::Files(files), purpose);
             }
             Command::LoadSample(label) => {
                 let body = LoadedBody::sample(&label)?;
@@ -443,6 +423,17 @@ impl Lab {
                 std::thread::sleep(Duration::from_millis(2));
             }
         }
+    }
+
+    /// Starts the one load path for `source`; new parts remember the body they join, which
+    /// must still be the one shown when they arrive.
+    fn start_load(&mut self, source: LoadSource, purpose: Purpose) {
+        let joins =
+            matches!(purpose, Purpose::AddParts { .. }).then(|| self.primary().body_arc().clone());
+        let waker = self.waker.clone();
+        let mut loading = Loading::begin(source, purpose, move || (waker.0)());
+        loading.joins = joins;
+        self.loading = Some(loading);
     }
 
     /// `joins`: for new parts, the body they were read to join.
