@@ -394,6 +394,10 @@ fn read_element(element: &Element, body: &mut Body<'_>, mesh: &mut Read) -> Resu
     if element.properties.is_empty() {
         return Ok(());
     }
+    // Which coordinate each property is, worked out once for all the records.
+    let axis_of: Vec<Option<usize>> = (0..element.properties.len())
+        .map(|k| xyz.and_then(|xyz| xyz.iter().position(|&p| p == k)))
+        .collect();
     for record in 0..element.count {
         let what = || format!("{name} {record} (counting from 0)");
         let mut point = [0.0; 3];
@@ -401,7 +405,7 @@ fn read_element(element: &Element, body: &mut Body<'_>, mesh: &mut Read) -> Resu
             match property {
                 Property::Scalar { ty, .. } => {
                     let v = body.value(*ty, &what)?;
-                    if let Some(axis) = xyz.and_then(|xyz| xyz.iter().position(|&p| p == k)) {
+                    if let Some(axis) = axis_of[k] {
                         point[axis] = v;
                     }
                 }
