@@ -104,7 +104,7 @@ pub enum Finding {
         /// Why.
         reasons: Vec<PlaceholderReason>,
     },
-    /// The stated mass over the geometry's volume is outside [`PLAUSIBLE_DENSITY`].
+    /// The stated mass over the geometry's volume is outside [`PLAUSIBLE_DENSITY`](crate::audit::PLAUSIBLE_DENSITY).
     ImplausibleDensity {
         /// kg/m³.
         density: f64,

@@ -171,7 +171,7 @@ pub enum RunError {
     Screenshot(String),
 }
 
-/// Opens the window and runs the app until it is closed (what it does first: [`Start`]).
+/// Opens the window and runs the app until it is closed (what it does first: `gui::start`).
 ///
 /// # Errors
 /// No window or GL context could be created (no display, no OpenGL 3); `--after` is not a
