@@ -1,11 +1,13 @@
 //! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII), PLY (`ply.rs`: ASCII or
-//! binary, either byte order) and OFF (`off.rs`), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
+//! binary, either byte order), OFF (`off.rs`) and glTF 2.0 (`gltf/`: `.gltf` and `.glb`, node
+//! trees and quantized positions), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
 //! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
 //! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
 //! identical coordinates are welded so per-corner splitting in a file never changes the
 //! topology; every object and group of a file forms one body.
 
 mod body;
+mod gltf;
 mod obj;
 mod obj_fast;
 mod obj_parsed;
@@ -16,6 +18,7 @@ mod stl;
 use std::path::Path;
 
 pub use body::{BODY_FILE_EXTENSION, BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
+pub use gltf::{parse_gltf, parse_gltf_with};
 #[cfg(fuzzing)]
 pub use obj::fast_path_agrees;
 pub use obj::parse_obj;
@@ -109,7 +112,7 @@ type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 /// Every mesh format the readers take. OBJ (free text) and STL (a binary header is 80 free bytes,
 /// which often begin "solid" like an ASCII file) have no signature: they are known by their
 /// extension alone.
-pub static MESH_FORMATS: [MeshFormat; 4] = [
+pub static MESH_FORMATS: [MeshFormat; 5] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
@@ -144,6 +147,15 @@ pub static MESH_FORMATS: [MeshFormat; 4] = [
         ],
         load: None,
         parse: parse_off,
+    },
+    MeshFormat {
+        name: "glTF",
+        extensions: &["glb", "gltf"],
+        holds_parts: true,
+        // A GLB's header; a .gltf is JSON, known by its extension.
+        magic: &[gltf::GLB_MAGIC],
+        load: None,
+        parse: parse_gltf,
     },
 ];
 
@@ -381,12 +393,15 @@ mod tests {
                 "{name}: {volume:?}"
             );
         }
-        let e = parse_mesh(b"", Path::new("a.glb"))
+        let e = parse_mesh(b"", Path::new("a.3mf"))
             .map(|_| ())
             .map_err(|e| e.to_string());
         assert_eq!(
             e,
-            Err("a.glb: unsupported file type (expected .obj, .stl, .ply or .off)".to_owned())
+            Err(
+                "a.3mf: unsupported file type (expected .obj, .stl, .ply, .off, .glb or .gltf)"
+                    .to_owned()
+            )
         );
     }
 }
