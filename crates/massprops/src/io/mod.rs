@@ -1,6 +1,6 @@
 //! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII), PLY (`ply.rs`: ASCII or
-//! binary, either byte order), OFF (`off.rs`) and glTF 2.0 (`gltf/`: `.gltf` and `.glb`, node
-//! trees and quantized positions), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
+//! binary, either byte order), OFF (`off.rs`), glTF 2.0 (`gltf/`: `.gltf` and `.glb`, node
+//! trees and quantized positions) and MuJoCo's `.msh` (`msh.rs`), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
 //! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
 //! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
 //! identical coordinates are welded so per-corner splitting in a file never changes the
@@ -8,6 +8,7 @@
 
 mod body;
 mod gltf;
+mod msh;
 mod obj;
 mod obj_fast;
 mod obj_parsed;
@@ -19,6 +20,7 @@ use std::path::Path;
 
 pub use body::{BODY_FILE_EXTENSION, BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
 pub use gltf::{parse_gltf, parse_gltf_with};
+pub use msh::parse_msh;
 #[cfg(fuzzing)]
 pub use obj::fast_path_agrees;
 pub use obj::parse_obj;
@@ -112,7 +114,7 @@ type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 /// Every mesh format the readers take. OBJ (free text) and STL (a binary header is 80 free bytes,
 /// which often begin "solid" like an ASCII file) have no signature: they are known by their
 /// extension alone.
-pub static MESH_FORMATS: [MeshFormat; 5] = [
+pub static MESH_FORMATS: [MeshFormat; 6] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
@@ -156,6 +158,14 @@ pub static MESH_FORMATS: [MeshFormat; 5] = [
         magic: &[gltf::GLB_MAGIC],
         load: None,
         parse: parse_gltf,
+    },
+    MeshFormat {
+        name: "MuJoCo MSH",
+        extensions: &["msh"],
+        holds_parts: false,
+        magic: &[],
+        load: None,
+        parse: parse_msh,
     },
 ];
 
@@ -399,7 +409,7 @@ mod tests {
         assert_eq!(
             e,
             Err(
-                "a.3mf: unsupported file type (expected .obj, .stl, .ply, .off, .glb or .gltf)"
+                "a.3mf: unsupported file type (expected .obj, .stl, .ply, .off, .glb, .gltf or .msh)"
                     .to_owned()
             )
         );
