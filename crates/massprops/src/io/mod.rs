@@ -1,12 +1,13 @@
 //! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII), PLY (`ply.rs`: ASCII or
 //! binary, either byte order), OFF (`off.rs`), glTF 2.0 (`gltf/`: `.gltf` and `.glb`, node
-//! trees and quantized positions) and MuJoCo's `.msh` (`msh.rs`), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
+//! trees and quantized positions) MuJoCo's `.msh` (`msh.rs`) and COLLADA (`collada.rs`: node trees, instances and units), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
 //! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
 //! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
 //! identical coordinates are welded so per-corner splitting in a file never changes the
 //! topology; every object and group of a file forms one body.
 
 mod body;
+mod collada;
 mod gltf;
 mod msh;
 mod obj;
@@ -19,6 +20,7 @@ mod stl;
 use std::path::Path;
 
 pub use body::{BODY_FILE_EXTENSION, BODY_FILE_VERSION, BodyFile, PartEntry, is_body_file};
+pub use collada::{ColladaFile, parse_collada, parse_collada_file};
 pub use gltf::{parse_gltf, parse_gltf_with};
 pub use msh::parse_msh;
 #[cfg(fuzzing)]
@@ -114,7 +116,7 @@ type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 /// Every mesh format the readers take. OBJ (free text) and STL (a binary header is 80 free bytes,
 /// which often begin "solid" like an ASCII file) have no signature: they are known by their
 /// extension alone.
-pub static MESH_FORMATS: [MeshFormat; 6] = [
+pub static MESH_FORMATS: [MeshFormat; 7] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
@@ -166,6 +168,14 @@ pub static MESH_FORMATS: [MeshFormat; 6] = [
         magic: &[],
         load: None,
         parse: parse_msh,
+    },
+    MeshFormat {
+        name: "COLLADA",
+        extensions: &["dae"],
+        holds_parts: true,
+        magic: &[],
+        load: None,
+        parse: parse_collada,
     },
 ];
 
@@ -261,6 +271,17 @@ fn unsupported(path: &Path) -> MeshError {
         path: path.to_path_buf(),
         expected,
     }
+}
+
+/// `name`, or `name 2`, `name 3`… if a part already has it: each instance stays its own part.
+fn unique_name(name: String, taken: &[String]) -> String {
+    if !taken.contains(&name) {
+        return name;
+    }
+    (2..)
+        .map(|k| format!("{name} {k}"))
+        .find(|n| !taken.contains(n))
+        .unwrap_or(name)
 }
 
 /// The file's extension, lower case.
@@ -409,7 +430,7 @@ mod tests {
         assert_eq!(
             e,
             Err(
-                "a.3mf: unsupported file type (expected .obj, .stl, .ply, .off, .glb, .gltf or .msh)"
+                "a.3mf: unsupported file type (expected .obj, .stl, .ply, .off, .glb, .gltf, .msh or .dae)"
                     .to_owned()
             )
         );

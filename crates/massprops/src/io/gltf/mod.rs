@@ -358,7 +358,9 @@ impl<'a> Document<'a> {
             .iter()
             .find_map(|v| v.get("name").and_then(Value::as_str))
             .map_or_else(|| format!("node {n}"), str::to_owned);
-        placed.part_names.push(unique(name, &placed.part_names));
+        placed
+            .part_names
+            .push(super::unique_name(name, &placed.part_names));
         for (p, primitive) in array(mesh, "primitives").iter().enumerate() {
             let what = format!("mesh {m}, primitive {p}");
             let mode = index(primitive, "mode", &what)?.unwrap_or(4);
@@ -655,17 +657,6 @@ impl Component {
             _ => c,
         }
     }
-}
-
-/// `name`, or `name 2`, `name 3`… if a part already has it: each instance stays its own part.
-fn unique(name: String, taken: &[String]) -> String {
-    if !taken.contains(&name) {
-        return name;
-    }
-    (2..)
-        .map(|k| format!("{name} {k}"))
-        .find(|n| !taken.contains(n))
-        .unwrap_or(name)
 }
 
 /// A URI's `%XX` escapes decoded (`my%20mesh.bin` is the file `my mesh.bin`).
