@@ -1,6 +1,7 @@
 //! Reading meshes from files: Wavefront OBJ, STL (binary or ASCII), PLY (`ply.rs`: ASCII or
 //! binary, either byte order), OFF (`off.rs`), glTF 2.0 (`gltf/`: `.gltf` and `.glb`, node
-//! trees and quantized positions) MuJoCo's `.msh` (`msh.rs`) and COLLADA (`collada.rs`: node trees, instances and units), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
+//! trees and quantized positions) MuJoCo's `.msh` (`msh.rs`), COLLADA (`collada/`: node trees, instances and units) and
+//! 3MF (`threemf/`, from its ZIP package, `zip.rs`), the formats of [`MESH_FORMATS`]; OBJ and STL by fast paths of our own
 //! for the records nearly every file is made of (`obj_fast.rs`, `stl.rs`), and through `tobj`
 //! and `stl_io` for every file they decline, with the same result bit for bit. Positions with
 //! identical coordinates are welded so per-corner splitting in a file never changes the
@@ -16,6 +17,8 @@ mod obj_parsed;
 mod off;
 mod ply;
 mod stl;
+mod threemf;
+mod zip;
 
 use std::path::Path;
 
@@ -29,6 +32,7 @@ pub use obj::parse_obj;
 pub use off::parse_off;
 pub use ply::parse_ply;
 pub use stl::parse_stl;
+pub use threemf::parse_3mf;
 
 use crate::{Analysis, MassSpec, MeshError, Method, PolyMesh, Repairs, Warning, analyze_with};
 
@@ -116,7 +120,7 @@ type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
 /// Every mesh format the readers take. OBJ (free text) and STL (a binary header is 80 free bytes,
 /// which often begin "solid" like an ASCII file) have no signature: they are known by their
 /// extension alone.
-pub static MESH_FORMATS: [MeshFormat; 7] = [
+pub static MESH_FORMATS: [MeshFormat; 8] = [
     MeshFormat {
         name: "OBJ",
         extensions: &["obj"],
@@ -176,6 +180,15 @@ pub static MESH_FORMATS: [MeshFormat; 7] = [
         magic: &[],
         load: None,
         parse: parse_collada,
+    },
+    MeshFormat {
+        name: "3MF",
+        extensions: &["3mf"],
+        holds_parts: true,
+        // A ZIP archive's first local header: 3MF is the only package format in the table.
+        magic: &[threemf::ZIP_MAGIC],
+        load: None,
+        parse: parse_3mf,
     },
 ];
 
@@ -424,13 +437,13 @@ mod tests {
                 "{name}: {volume:?}"
             );
         }
-        let e = parse_mesh(b"", Path::new("a.3mf"))
+        let e = parse_mesh(b"", Path::new("a.step"))
             .map(|_| ())
             .map_err(|e| e.to_string());
         assert_eq!(
             e,
             Err(
-                "a.3mf: unsupported file type (expected .obj, .stl, .ply, .off, .glb, .gltf, .msh or .dae)"
+                "a.step: unsupported file type (expected .obj, .stl, .ply, .off, .glb, .gltf, .msh, .dae or .3mf)"
                     .to_owned()
             )
         );

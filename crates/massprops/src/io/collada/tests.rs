@@ -143,21 +143,34 @@ fn the_cube_is_the_objs() {
     assert_eq!(file.file.face_lines.len(), 6);
 }
 
-/// A cube of 100 cm under a node that moves it (100, 200, 300) cm, turns it a quarter about z,
-/// scales it 2 × 3 × 4 and centres it, in document order: the 2 × 3 × 4 m box's closed form.
+/// A cube of 100 cm under a node that moves it (100, 200, 300) cm, turns it 30° about z,
+/// scales it 2 × 3 × 4 and centres it, in document order: the 2 × 3 × 4 m box's closed form; and
+/// the same as one row-major `<matrix>`.
 #[test]
 fn transforms_compose_in_document_order_in_metres() {
-    let quarter = Rotation3::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
-    let expected = placed_box([2.0, 3.0, 4.0], *quarter.matrix(), [1.0, 2.0, 3.0]);
+    let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), 30f64.to_radians());
+    let expected = placed_box([2.0, 3.0, 4.0], *turn.matrix(), [1.0, 2.0, 3.0]);
     let trs = r##"<node id="arm" name="arm"><translate>100 200 300</translate>
-        <rotate>0 0 1 90</rotate>
+        <rotate>0 0 1 30</rotate>
         <node id="brick" name="brick"><scale>2 3 4</scale><translate>-50 -50 -50</translate>
           <instance_geometry url="#cube"/></node></node>"##;
-    // The same as one matrix (row-major): the quarter turn with the scale, then the offsets.
-    let matrix = r##"<node id="brick" name="brick"><matrix>
-        0 -3 0 250   2 0 0 100   0 0 4 100   0 0 0 1</matrix>
-        <instance_geometry url="#cube"/></node>"##;
-    for (scene, what) in [(trs, "translate, rotate, scale"), (matrix, "matrix")] {
+    let m = nalgebra::Matrix4::new_translation(&Vector3::new(100.0, 200.0, 300.0))
+        * turn.to_homogeneous()
+        * nalgebra::Matrix4::new_nonuniform_scaling(&Vector3::new(2.0, 3.0, 4.0))
+        * nalgebra::Matrix4::new_translation(&Vector3::new(-50.0, -50.0, -50.0));
+    let rows: Vec<String> = (0..4)
+        .flat_map(|r| (0..4).map(move |c| (r, c)))
+        .map(|(r, c)| format!("{:?}", m[(r, c)]))
+        .collect();
+    let matrix = format!(
+        r##"<node id="brick" name="brick"><matrix>{}</matrix>
+        <instance_geometry url="#cube"/></node>"##,
+        rows.join(" ")
+    );
+    for (scene, what) in [
+        (trs, "translate, rotate, scale"),
+        (matrix.as_str(), "matrix"),
+    ] {
         let file = read(&dae(0.01, "Z_UP", &cube_geometry("cube", 100.0), "", scene));
         assert_close(&file.file, &expected, what);
         assert_eq!(file.file.part_names, ["brick"], "{what}");

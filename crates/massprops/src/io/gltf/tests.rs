@@ -254,24 +254,24 @@ fn assert_close(found: &MassProperties, expected: &MassProperties, what: &str) {
     );
 }
 
-/// The cube under a parent that turns a quarter turn about z and moves it, and a child that
-/// scales it to 2 × 3 × 4: the box's closed form, turned and moved.
+/// The cube under a parent that turns it 30° about z and moves it, and a child that scales it
+/// to 2 × 3 × 4: the box's closed form, turned and moved.
 fn nested_scene() -> Writer {
     let mut w = Writer::new();
     let cube = w.cube();
     let child = w.node(json!({"name": "brick", "mesh": cube, "scale": [2.0, 3.0, 4.0]}));
-    let half = std::f64::consts::FRAC_1_SQRT_2;
+    let half = 15f64.to_radians();
     let parent = w.node(json!({
         "name": "arm", "children": [child],
-        "rotation": [0.0, 0.0, half, half], "translation": [1.0, 2.0, 3.0]
+        "rotation": [0.0, 0.0, half.sin(), half.cos()], "translation": [1.0, 2.0, 3.0]
     }));
     w.root(parent);
     w
 }
 
 fn nested_expected() -> MassProperties {
-    let quarter = Rotation3::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_2);
-    placed_box([2.0, 3.0, 4.0], *quarter.matrix(), [1.0, 2.0, 3.0])
+    let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), 30f64.to_radians());
+    placed_box([2.0, 3.0, 4.0], *turn.matrix(), [1.0, 2.0, 3.0])
 }
 
 #[test]
