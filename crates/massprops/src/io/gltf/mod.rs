@@ -244,6 +244,12 @@ impl<'a> Document<'a> {
                         .ok_or_else(|| format!("{what}: a data URI that is not base64"))?;
                     Cow::Owned(base64(data).map_err(|e| format!("{what}: {e}"))?)
                 }
+                Some(uri) if uri.starts_with('/') || uri.contains("://") => {
+                    return Err(format!(
+                        "{what}: {uri} is not a path relative to the file, which is all a \
+                         buffer is read from"
+                    ));
+                }
                 Some(uri) => {
                     let name = percent_decoded(uri);
                     Cow::Owned(

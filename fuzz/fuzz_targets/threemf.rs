@@ -1,0 +1,15 @@
+//! 3MF packages (ZIP, stored or deflated; components and build items) through the reader and
+//! every analysis.
+#![no_main]
+
+use std::path::Path;
+
+use libfuzzer_sys::fuzz_target;
+
+mod common;
+
+fuzz_target!(|data: &[u8]| {
+    if let Ok(file) = massprops::parse_mesh(data, Path::new("fuzz.3mf")) {
+        common::analyze_every_way(&file);
+    }
+});
