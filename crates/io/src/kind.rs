@@ -156,16 +156,28 @@ mod tests {
     /// The words name every format of the table.
     #[test]
     fn the_words_name_every_format() {
-        assert_eq!(mesh_format_words(), "OBJ, STL, PLY or OFF");
-        assert_eq!(mesh_extension_words(), ".obj, .stl, .ply or .off");
-        assert_eq!(part_label(), "Meshes (OBJ, STL, PLY, OFF)");
+        assert_eq!(
+            mesh_format_words(),
+            "OBJ, STL, PLY, OFF, glTF, MuJoCo MSH, COLLADA or 3MF"
+        );
+        assert_eq!(
+            mesh_extension_words(),
+            ".obj, .stl, .ply, .off, .glb, .gltf, .msh, .dae or .3mf"
+        );
+        assert_eq!(
+            part_label(),
+            "Meshes (OBJ, STL, PLY, OFF, glTF, MuJoCo MSH, COLLADA, 3MF)"
+        );
         assert_eq!(
             mesh_formats_hint(),
-            "Meshes: OBJ (.obj), STL (.stl), PLY (.ply), OFF (.off)"
+            "Meshes: OBJ (.obj), STL (.stl), PLY (.ply), OFF (.off), glTF (.glb, .gltf), \
+             MuJoCo MSH (.msh), COLLADA (.dae), 3MF (.3mf)"
         );
         assert_eq!(
             Openable { robots: false }.extensions(),
-            ["obj", "stl", "ply", "off", "toml"]
+            [
+                "obj", "stl", "ply", "off", "glb", "gltf", "msh", "dae", "3mf", "toml"
+            ]
         );
     }
 }

@@ -118,6 +118,12 @@ pub enum Defect {
         /// The records the file holds, all read.
         records: u64,
     },
+    /// A COLLADA file whose `<up_axis>` is not Z_UP: its axes are used as they are (the numbers
+    /// are in the file's own axes), as rviz, MoveIt and Gazebo use a URDF's meshes.
+    UpAxisNotApplied {
+        /// The file's axis: "X_UP" or "Y_UP".
+        axis: String,
+    },
     /// Edges whose two faces traverse them in the same direction: some faces are wound the other
     /// way. For the volume, each shell's faces are turned to agree with their neighbours (the
     /// count is then the faces turned, the effect what they took away as wound); a shell whose
@@ -149,7 +155,7 @@ pub enum Defect {
 impl Defect {
     /// Every code [`Defect::code`] gives, in the order warnings are listed in (an analysis's
     /// `warnings` and every report).
-    pub const CODES: [&'static str; 14] = [
+    pub const CODES: [&'static str; 15] = [
         "duplicate_faces",
         "opposite_duplicate_faces",
         "overlapping_shells",
@@ -160,6 +166,7 @@ impl Defect {
         "nonplanar_faces",
         "two_corner_faces",
         "stl_triangle_count",
+        "up_axis_not_applied",
         "inconsistent_winding",
         "flipped",
         "degenerate_faces",
@@ -169,7 +176,7 @@ impl Defect {
     /// A stable snake_case identifier, for machine-readable output: `duplicate_faces`,
     /// `opposite_duplicate_faces`, `overlapping_shells`, `self_overlapping_shell`, `nested_shell`, `cracks_closed`,
     /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `stl_triangle_count`,
-    /// `inconsistent_winding`,
+    /// `up_axis_not_applied`, `inconsistent_winding`,
     /// `flipped`, `degenerate_faces`, `nonmanifold_edges`.
     pub fn code(&self) -> &'static str {
         match self {
@@ -183,6 +190,7 @@ impl Defect {
             Defect::NonplanarFaces { .. } => "nonplanar_faces",
             Defect::TwoCornerFaces { .. } => "two_corner_faces",
             Defect::StlTriangleCount { .. } => "stl_triangle_count",
+            Defect::UpAxisNotApplied { .. } => "up_axis_not_applied",
             Defect::InconsistentWinding { .. } => "inconsistent_winding",
             Defect::Flipped { .. } => "flipped",
             Defect::DegenerateFaces => "degenerate_faces",

@@ -552,7 +552,7 @@ fn unreadable_and_unsupported_files() {
     let e = load_mesh(&missing).expect_err("no such file");
     assert!(matches!(e, MeshError::Io { .. }), "{e:?}");
     assert!(e.to_string().contains("does-not-exist.obj"), "{e}");
-    for name in ["part.glb", "part", "part.obj.gz"] {
+    for name in ["part.step", "part", "part.obj.gz"] {
         let e = parse_mesh(CUBE_OBJ.as_bytes(), Path::new(name)).expect_err("unsupported");
         assert!(
             matches!(e, MeshError::UnsupportedFormat { .. }),

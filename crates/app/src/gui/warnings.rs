@@ -17,6 +17,7 @@ pub fn title(w: &Warning) -> String {
         Defect::NonplanarFaces { .. } => "Non-flat polygons",
         Defect::TwoCornerFaces { .. } => "Faces with two corners",
         Defect::StlTriangleCount { .. } => "Wrong triangle count in the file",
+        Defect::UpAxisNotApplied { .. } => "The file's up axis",
         Defect::InconsistentWinding { .. } => "Faces pointing the wrong way",
         Defect::Flipped { whole: true, .. } => "Inside-out mesh",
         Defect::Flipped { .. } => "Inside-out parts",
@@ -146,6 +147,11 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             "The file's header says it holds {header} triangles, but {records} follow it: all \
              {records} were read. The program that wrote it left the count wrong; nothing needs \
              fixing here."
+        ),
+        Defect::UpAxisNotApplied { axis } => format!(
+            "The file says {} is up. Its axes are used as they are, as robot tools (rviz, \
+             MoveIt, Gazebo) use a robot's meshes, so the numbers are in the file's own axes.",
+            axis.trim_end_matches("_UP")
         ),
         Defect::InconsistentWinding { face_pairs } => {
             let pairs: Vec<String> = face_pairs

@@ -227,6 +227,7 @@ fn warning_json(w: &Warning, lines: &[u32]) -> Value {
         Defect::StlTriangleCount { header, records } => {
             json!({ "header_count": header, "records": records })
         }
+        Defect::UpAxisNotApplied { axis } => json!({ "up_axis": axis }),
         Defect::InconsistentWinding { face_pairs } => json!({
             "face_pairs": face_pairs.iter().map(|&(a, b)| [a, b]).collect::<Vec<_>>(),
         }),

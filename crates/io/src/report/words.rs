@@ -124,6 +124,10 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
              records follow it: all {records} were read (the header's count is wrong; some \
              exporters leave it 0)"
         ),
+        Defect::UpAxisNotApplied { axis } => format!(
+            "the COLLADA file's <up_axis> is {axis}, not Z_UP: it is not applied, so the numbers \
+             are in the file's own axes (as rviz, MoveIt and Gazebo use a URDF's meshes)"
+        ),
         Defect::InconsistentWinding { face_pairs } => match w.effect_on_mass {
             Some(_) => format!(
                 "{count} face(s) wound against their neighbours ({faces}; pairs that met \

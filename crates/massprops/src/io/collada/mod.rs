@@ -10,8 +10,8 @@
 //! Units: `<asset><unit meter>` is applied, so results are in metres, as Gazebo, rviz and
 //! MoveIt's `geometric_shapes` apply it to a URDF's meshes. `<up_axis>` is not applied: rviz
 //! and `geometric_shapes` drop the rotation that assimp makes of it, so a robot's DAE mesh is
-//! used in its own axes; the reader reports the axis ([`ColladaFile::up_axis`]) for a front end
-//! to say so when it is not Z_UP. Reference: COLLADA 1.4.1 specification (Khronos, 2008),
+//! used in its own axes; the reader reports the axis ([`ColladaFile::up_axis`]) and warns
+//! (`up_axis_not_applied`) when it is not Z_UP. Reference: COLLADA 1.4.1 specification (Khronos, 2008),
 //! chapters 5 (`node`, transforms, `mesh`) and 8.
 
 use std::collections::HashMap;
@@ -118,11 +118,23 @@ pub fn parse_collada_file(bytes: &[u8], path: &Path) -> Result<ColladaFile, Mesh
         line: None,
         source: Box::new(e),
     })?;
+    let warnings = if up_axis == "Z_UP" {
+        Vec::new()
+    } else {
+        vec![crate::Warning {
+            defect: crate::Defect::UpAxisNotApplied {
+                axis: up_axis.clone(),
+            },
+            count: 1,
+            faces: Vec::new(),
+            effect_on_mass: None,
+        }]
+    };
     Ok(ColladaFile {
         file: MeshFile {
             mesh,
             face_lines: placed.face_lines,
-            warnings: Vec::new(),
+            warnings,
             part_names: placed.part_names,
             face_parts: placed.face_parts,
         },

@@ -140,6 +140,7 @@ fn the_cube_is_the_objs() {
     );
     assert_eq!(file.file.part_names, ["cube"]);
     assert_eq!(file.up_axis, "Z_UP");
+    assert_eq!(file.file.warnings, []);
     assert_eq!(file.file.face_lines.len(), 6);
 }
 
@@ -186,14 +187,26 @@ fn instances_are_parts_and_mirrors_stay_outward() {
     let scene = r##"<node id="a"><instance_node url="#wheel"/></node>
         <node id="b"><translate>4 0 0</translate><scale>-1 1 1</scale>
           <instance_node url="#wheel"/></node>"##;
-    let file = read(&dae(
+    let read_y = read(&dae(
         1.0,
         "Y_UP",
         &cube_geometry("cube", 1.0),
         library,
         scene,
-    ))
-    .file;
+    ));
+    assert_eq!(read_y.up_axis, "Y_UP");
+    let codes: Vec<&str> = read_y
+        .file
+        .warnings
+        .iter()
+        .map(crate::Warning::code)
+        .collect();
+    assert_eq!(
+        codes,
+        ["up_axis_not_applied"],
+        "Y_UP is reported, not applied"
+    );
+    let file = read_y.file;
     assert_eq!(file.part_names, ["wheel", "wheel 2"]);
     assert!((signed_volume(&file.mesh) - 2.0).abs() < 1e-12);
     let one = placed_box([1.0; 3], Matrix3::identity(), [0.0; 3]);
