@@ -99,7 +99,9 @@ def test_file_errors(tmp_path):
 
 def test_a_ply_file_is_read_as_props_reads_it(tmp_path):
     # The mesh-format table is the native module's: PLY is searched for and read like OBJ.
-    assert il.MESH_EXTENSIONS == (".obj", ".stl", ".ply", ".off", ".toml")
+    assert il.MESH_EXTENSIONS == (
+        ".obj", ".stl", ".ply", ".off", ".glb", ".gltf", ".msh", ".dae", ".3mf", ".toml"
+    )
     corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
     quads = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
     path = tmp_path / "box.ply"

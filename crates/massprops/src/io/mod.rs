@@ -105,6 +105,10 @@ pub struct MeshFormat {
     /// What a file of the format starts with, if it has a signature: a file is known by it
     /// before its extension, so one named wrongly, or not at all (bytes from a table), is read.
     pub magic: &'static [&'static [u8]],
+    /// For a format without a signature at its start, a test of a whole file's bytes that only
+    /// its files pass (COLLADA's root element, glTF's `"asset"`, a `.msh` length that its counts
+    /// give): how bytes without a name, or with a wrong one, are still read.
+    pub recognise: Option<fn(&[u8]) -> bool>,
     /// Reads a file from disk in blocks, calling the progress callback with the fraction read;
     /// `None` for a format read whole and parsed.
     load: Option<LoadFn>,
@@ -126,6 +130,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         extensions: &["obj"],
         holds_parts: true,
         magic: &[],
+        recognise: None,
         load: Some(obj::load_obj),
         parse: parse_obj,
     },
@@ -134,6 +139,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         extensions: &["stl"],
         holds_parts: true,
         magic: &[],
+        recognise: None,
         load: Some(stl::load_stl),
         parse: parse_stl,
     },
@@ -142,6 +148,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         extensions: &["ply"],
         holds_parts: false,
         magic: &[b"ply\n", b"ply\r\n"],
+        recognise: None,
         load: None,
         parse: parse_ply,
     },
@@ -153,6 +160,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         magic: &[
             b"OFF", b"COFF", b"NOFF", b"CNOFF", b"STOFF", b"STCOFF", b"STNOFF",
         ],
+        recognise: None,
         load: None,
         parse: parse_off,
     },
@@ -162,6 +170,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         holds_parts: true,
         // A GLB's header; a .gltf is JSON, known by its extension.
         magic: &[gltf::GLB_MAGIC],
+        recognise: Some(gltf::is_gltf_json),
         load: None,
         parse: parse_gltf,
     },
@@ -170,6 +179,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         extensions: &["msh"],
         holds_parts: false,
         magic: &[],
+        recognise: Some(msh::is_msh),
         load: None,
         parse: parse_msh,
     },
@@ -178,6 +188,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         extensions: &["dae"],
         holds_parts: true,
         magic: &[],
+        recognise: Some(collada::is_collada),
         load: None,
         parse: parse_collada,
     },
@@ -187,6 +198,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         holds_parts: true,
         // A ZIP archive's first local header: 3MF is the only package format in the table.
         magic: &[threemf::ZIP_MAGIC],
+        recognise: None,
         load: None,
         parse: parse_3mf,
     },
@@ -201,11 +213,17 @@ impl MeshFormat {
             .find(|f| f.extensions.contains(&extension.as_str()))
     }
 
-    /// The format whose signature `bytes` start with, if any.
+    /// The format whose signature `bytes` start with, else the one whose test they pass, if
+    /// any.
     pub fn sniff(bytes: &[u8]) -> Option<&'static MeshFormat> {
         MESH_FORMATS
             .iter()
             .find(|f| f.magic.iter().any(|m| bytes.starts_with(m)))
+            .or_else(|| {
+                MESH_FORMATS
+                    .iter()
+                    .find(|f| f.recognise.is_some_and(|test| test(bytes)))
+            })
     }
 
     /// The format of a file that starts with `head`: by its signature, else by its extension.
@@ -413,6 +431,62 @@ mod tests {
                 );
             }
         }
+        // Formats without a signature at their start, known by their content: glTF JSON by its
+        // "asset", COLLADA by its root, a .msh by the length its counts give.
+        let gltf = concat!(
+            r#"{"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"attributes":"#,
+            r#" {"POSITION": 0}, "indices": 1}]}], "nodes": [{"mesh": 0}], "accessors": ["#,
+            r#" {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},"#,
+            r#" {"bufferView": 1, "componentType": 5123, "count": 12, "type": "SCALAR"}],"#,
+            r#" "bufferViews": [{"buffer": 0, "byteLength": 48},"#,
+            r#" {"buffer": 0, "byteOffset": 48, "byteLength": 24}], "buffers": [{"byteLength": 72,"#,
+            r#" "uri": "data:application/octet-stream;base64,"#,
+            "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/",
+            r#"AAACAAEAAAABAAMAAAADAAIAAQACAAMA"}]}"#
+        );
+        let dae = r##"<?xml version="1.0"?><COLLADA version="1.4.1"><library_geometries>
+            <geometry id="g"><mesh><source id="p"><float_array id="a">0 0 0 1 0 0 0 1 0 0 0 1
+            </float_array><technique_common><accessor source="#a" count="4" stride="3"/>
+            </technique_common></source><vertices id="v"><input semantic="POSITION" source="#p"/>
+            </vertices><triangles><input semantic="VERTEX" source="#v"/>
+            <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles></mesh></geometry></library_geometries>
+            <asset><up_axis>Z_UP</up_axis></asset></COLLADA>"##;
+        let mut msh: Vec<u8> = [4i32, 0, 0, 4]
+            .iter()
+            .flat_map(|n| n.to_le_bytes())
+            .collect();
+        msh.extend(
+            [0f32, 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1.]
+                .iter()
+                .flat_map(|x| x.to_le_bytes()),
+        );
+        msh.extend(
+            [0i32, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3]
+                .iter()
+                .flat_map(|i| i.to_le_bytes()),
+        );
+        for (bytes, format) in [
+            (gltf.as_bytes(), "glTF"),
+            (dae.as_bytes(), "COLLADA"),
+            (msh.as_slice(), "MuJoCo MSH"),
+        ] {
+            assert_eq!(MeshFormat::sniff(bytes).map(|f| f.name), Some(format));
+            for name in ["tetra", "tetra.stl"] {
+                let volume = parse_mesh(bytes, Path::new(name))
+                    .map_err(|e| e.to_string())
+                    .and_then(|f| crate::mass_properties(&f.mesh, 1.0).map_err(|e| e.to_string()))
+                    .map(|p| p.mass);
+                assert!(
+                    matches!(volume, Ok(v) if (v - 1.0 / 6.0).abs() < 1e-15),
+                    "{format} named {name}: {volume:?}"
+                );
+            }
+        }
+        for (start, format) in [(&b"glTF\x02\0\0\0"[..], "glTF"), (b"PK\x03\x04", "3MF")] {
+            assert_eq!(MeshFormat::sniff(start).map(|f| f.name), Some(format));
+        }
+        // A .msh's length must be the one its counts give, to the byte.
+        assert!(MeshFormat::sniff(&msh[..msh.len() - 4]).is_none());
         assert!(MeshFormat::sniff(TETRA_OBJ.as_bytes()).is_none());
         assert!(MeshFormat::sniff(TETRA_STL.as_bytes()).is_none());
         let e = parse_mesh(TETRA_OBJ.as_bytes(), Path::new("tetra")).map(|_| ());

@@ -13,6 +13,22 @@ use super::MeshFile;
 use crate::mesh::weld_exact;
 use crate::{MeshError, PolyMesh};
 
+/// Whether `bytes` are a `.msh` file: four counts, none negative, with faces, that give exactly
+/// the file's length (MuJoCo's own test).
+pub(super) fn is_msh(bytes: &[u8]) -> bool {
+    let count = |k: usize| {
+        bytes
+            .get(4 * k..4 * k + 4)
+            .and_then(|w| u64::try_from(i32::from_le_bytes([w[0], w[1], w[2], w[3]])).ok())
+    };
+    match [count(0), count(1), count(2), count(3)] {
+        [Some(v), Some(n), Some(t), Some(f)] => {
+            f > 0 && 4 * (4 + 3 * (v + n + f) + 2 * t) == bytes.len() as u64
+        }
+        _ => false,
+    }
+}
+
 /// Reads a `.msh` file already in memory; `path` names it in messages.
 ///
 /// # Errors

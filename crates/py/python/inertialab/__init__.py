@@ -2,7 +2,7 @@
 mass, from Python.
 
 - ``mass_properties(vertices, faces, ...)``: one mesh from numpy arrays or a ``trimesh.Trimesh``;
-- ``analyze_file(path, ...)``: a mesh file (``MESH_EXTENSIONS``: OBJ, STL, PLY, OFF) or a body file,
+- ``analyze_file(path, ...)``: a mesh file (``MESH_EXTENSIONS``: OBJ, STL, PLY, OFF, glTF/GLB, MuJoCo MSH, COLLADA, 3MF) or a body file,
   as ``inertia-lab props`` reads it;
 - ``measure_table(batch, ...)``: an Arrow table of files in, the batch table out, one row each;
 - ``measure_files(paths, out, ...)``: a folder of files into resumable Parquet shards;

@@ -36,6 +36,13 @@ pub struct ColladaFile {
     pub metres_per_unit: f64,
 }
 
+/// Whether `bytes` are a COLLADA document: XML whose first kilobytes hold its `<COLLADA` root.
+pub(super) fn is_collada(bytes: &[u8]) -> bool {
+    let head = &bytes[..bytes.len().min(4096)];
+    head.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'<')
+        && head.windows(8).any(|w| w == b"<COLLADA")
+}
+
 /// Reads a COLLADA file already in memory as one mesh (see [`parse_collada_file`] for its axis).
 ///
 /// # Errors

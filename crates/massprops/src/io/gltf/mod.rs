@@ -38,6 +38,14 @@ const HARMLESS_PREFIXES: [&str; 5] = [
     "KHR_lights_",
 ];
 
+/// Whether `bytes` are a glTF JSON document: an object (after any byte-order mark and blanks)
+/// whose text has the `"asset"` key every glTF file must have.
+pub(super) fn is_gltf_json(bytes: &[u8]) -> bool {
+    let text = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    text.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{')
+        && text.windows(7).any(|w| w == b"\"asset\"")
+}
+
 /// Reads a glTF or GLB file already in memory; `path` names it in messages, and a buffer in a
 /// file of its own (`"uri": "mesh.bin"`) is read from beside it.
 ///
