@@ -182,10 +182,25 @@ impl FileSet {
         exact.or_else(by_name).map(|(_, b)| &b[..])
     }
 
-    /// The file that says what the body is: the first body file, else the first file.
+    /// The file that says what the body is: the first body file, else the first mesh (not a
+    /// glTF's `.bin` dropped before it), else the first file.
     pub fn main(&self) -> Option<&Path> {
         let body = self.names().find(|n| massprops::io::is_body_file(n));
-        body.or_else(|| self.names().next())
+        let mesh = || {
+            self.names()
+                .find(|n| massprops::io::MeshFormat::of(n).is_some())
+        };
+        body.or_else(mesh).or_else(|| self.names().next())
+    }
+
+    /// Reads a mesh of the set, its companions (a glTF's `.bin` files) from the set too.
+    pub fn parse_mesh(&self, bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
+        let beside = |name: &str| {
+            self.get(Path::new(name))
+                .map(<[u8]>::to_vec)
+                .ok_or_else(|| format!("{name} is not among the files given with it"))
+        };
+        massprops::parse_mesh_with(bytes, path, &beside)
     }
 }
 
@@ -244,7 +259,7 @@ pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputE
                 .and_then(|body| {
                     let read = |mesh: &Path| {
                         set.get(mesh)
-                            .map(|bytes| massprops::parse_mesh(bytes, mesh))
+                            .map(|bytes| set.parse_mesh(bytes, mesh))
                             .transpose()
                     };
                     body.load_with(&read).map(|parts| (body, parts))
@@ -260,7 +275,7 @@ pub fn resolve(source: Source<'_>, request: &Request) -> Result<Resolved, InputE
         Source::Set(set, p) => set
             .get(p)
             .ok_or_else(|| missing(p))
-            .and_then(|bytes| massprops::parse_mesh(bytes, p)),
+            .and_then(|bytes| set.parse_mesh(bytes, p)),
     }
     .map_err(InputError::Read)?;
     resolve_mesh(path, file, request)
@@ -427,6 +442,65 @@ mod tests {
         meshes.add("a.obj", b"".to_vec());
         assert_eq!(meshes.main(), Some(Path::new("b.stl")));
         assert_eq!(FileSet::default().main(), None);
+    }
+
+    /// A `.gltf` whose buffer is a `.bin` beside it opens from a set that holds both, whatever
+    /// their order, and as a body file's mesh; without the `.bin`, the error names it.
+    #[test]
+    fn a_gltf_from_a_set_reads_its_bin_from_the_set() {
+        let gltf = r#"{"asset": {"version": "2.0"}, "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                          {"bufferView": 1, "componentType": 5123, "count": 12, "type": "SCALAR"}],
+            "bufferViews": [{"buffer": 0, "byteLength": 48},
+                            {"buffer": 0, "byteOffset": 48, "byteLength": 24}],
+            "buffers": [{"byteLength": 72, "uri": "tetra.bin"}]}"#;
+        let mut bin: Vec<u8> = [0f32, 0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1.]
+            .iter()
+            .flat_map(|x| x.to_le_bytes())
+            .collect();
+        bin.extend(
+            [0u16, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3]
+                .iter()
+                .flat_map(|i| i.to_le_bytes()),
+        );
+        let body = "version = 1\nunits = \"m\"\n\n[[part]]\nname = \"tip\"\n\
+                    mesh = \"meshes/tetra.gltf\"\ndensity = 3.0\n";
+        let request = Request::default();
+        let volume = |set: &FileSet| -> Result<f64, String> {
+            let main = set.main().ok_or("no file")?.to_path_buf();
+            match resolve(Source::Set(set, &main), &request).map_err(|e| e.to_string())? {
+                Resolved::Mesh { analysis, .. } => Ok(analysis.properties.mass),
+                Resolved::Parts(parts) => Ok(parts.composite.properties.mass / 3.0),
+            }
+        };
+        for order in [["tetra.bin", "tetra.gltf"], ["tetra.gltf", "tetra.bin"]] {
+            let mut set = FileSet::default();
+            for name in order {
+                let bytes = if name.ends_with("bin") {
+                    bin.clone()
+                } else {
+                    gltf.into()
+                };
+                set.add(name, bytes);
+            }
+            assert_eq!(set.main(), Some(Path::new("tetra.gltf")));
+            let v = volume(&set).expect("reads");
+            assert!((v - 1.0 / 6.0).abs() < 1e-15, "{order:?}: {v}");
+            set.add("tip.toml", body.as_bytes().to_vec());
+            let v = volume(&set).expect("the body file's mesh");
+            assert!((v - 1.0 / 6.0).abs() < 1e-15, "as a part: {v}");
+        }
+        let mut alone = FileSet::default();
+        alone.add("tetra.gltf", gltf.as_bytes().to_vec());
+        assert_eq!(
+            volume(&alone),
+            Err(
+                "tetra.gltf: buffer 0: cannot read tetra.bin: tetra.bin is not among the files \
+                 given with it"
+                    .to_owned()
+            )
+        );
     }
 
     #[test]

@@ -4,8 +4,8 @@
 //! Run with `cargo bench -p massprops --bench throughput`; criterion prints the throughput of
 //! each (path, size) in Melem/s (= million triangles per second). The `cold_call` group times
 //! single calls made after a pause, the way a program that loads one mesh makes them. The
-//! `read` group parses the same 1M-triangle torus from memory as binary STL, binary PLY and ASCII
-//! PLY (the readers' cost per triangle, beside each other).
+//! `read` group parses the same 1M-triangle torus from memory as GLB, MuJoCo MSH, binary STL,
+//! binary PLY and ASCII PLY (the readers' cost per triangle, beside each other).
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -102,9 +102,10 @@ fn cold_call(c: &mut Criterion) {
     group.finish();
 }
 
-/// The torus's triangles as a binary STL and as PLY (binary little-endian floats, and ASCII),
-/// each as a writer other than ours would write them.
-fn files(mesh: &PolyMesh) -> [(&'static str, &'static str, Vec<u8>); 3] {
+/// The torus's triangles as a binary STL, as PLY (binary little-endian floats, and ASCII), as
+/// GLB (float positions, u32 indices, one node) and as MuJoCo's `.msh`, each as a writer other
+/// than ours would write them.
+fn files(mesh: &PolyMesh) -> [(&'static str, &'static str, Vec<u8>); 5] {
     let triangles = mesh.as_triangles().expect("triangulated");
     let points = mesh.positions();
     let mut stl = vec![0u8; 80];
@@ -146,10 +147,47 @@ fn files(mesh: &PolyMesh) -> [(&'static str, &'static str, Vec<u8>); 3] {
     for t in triangles {
         ascii += &format!("3 {} {} {}\n", t[0], t[1], t[2]);
     }
+    let coordinates: Vec<u8> = points
+        .iter()
+        .flat_map(|p| p.iter().map(|&c| c as f32).collect::<Vec<_>>())
+        .flat_map(f32::to_le_bytes)
+        .collect();
+    let corners: Vec<u8> = triangles
+        .iter()
+        .flatten()
+        .flat_map(|i| i.to_le_bytes())
+        .collect();
+    let json = format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0]}}],"nodes":[{{"mesh":0}}],"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}},"indices":1}}]}}],"accessors":[{{"bufferView":0,"componentType":5126,"count":{},"type":"VEC3"}},{{"bufferView":1,"componentType":5125,"count":{},"type":"SCALAR"}}],"bufferViews":[{{"buffer":0,"byteLength":{}}},{{"buffer":0,"byteOffset":{},"byteLength":{}}}],"buffers":[{{"byteLength":{}}}]}}    "#,
+        points.len(),
+        3 * triangles.len(),
+        coordinates.len(),
+        coordinates.len(),
+        corners.len(),
+        coordinates.len() + corners.len()
+    );
+    let json = &json.as_bytes()[..json.len() / 4 * 4];
+    let bin_length = coordinates.len() + corners.len();
+    let mut glb = b"glTF".to_vec();
+    glb.extend_from_slice(&2u32.to_le_bytes());
+    glb.extend_from_slice(&((12 + 8 + json.len() + 8 + bin_length) as u32).to_le_bytes());
+    glb.extend_from_slice(&(json.len() as u32).to_le_bytes());
+    glb.extend_from_slice(b"JSON");
+    glb.extend_from_slice(json);
+    glb.extend_from_slice(&(bin_length as u32).to_le_bytes());
+    glb.extend_from_slice(b"BIN\0");
+    glb.extend_from_slice(&coordinates);
+    glb.extend_from_slice(&corners);
+    let counts = [points.len(), 0, 0, triangles.len()].map(|n| n as i32);
+    let mut msh: Vec<u8> = counts.iter().flat_map(|n| n.to_le_bytes()).collect();
+    msh.extend_from_slice(&coordinates);
+    msh.extend_from_slice(&corners);
     [
         ("binary_stl", "t.stl", stl),
         ("binary_ply", "t.ply", binary),
         ("ascii_ply", "t.ply", ascii.into_bytes()),
+        ("glb", "t.glb", glb),
+        ("msh", "t.msh", msh),
     ]
 }
 

@@ -66,7 +66,9 @@ pub use composite::{
 pub use defects::Repairs;
 pub use error::MeshError;
 #[cfg(feature = "io")]
-pub use io::{BodyFile, MeshFile, PartEntry, load_mesh, load_mesh_reporting, parse_mesh};
+pub use io::{
+    BodyFile, MeshFile, PartEntry, load_mesh, load_mesh_reporting, parse_mesh, parse_mesh_with,
+};
 pub use materials::{Material, material};
 pub use mesh::PolyMesh;
 pub use principal::PrincipalInertia;

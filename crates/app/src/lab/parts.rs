@@ -218,11 +218,13 @@ pub fn from_mesh_file(path: &Path) -> Result<PartModel, LabError> {
 
 /// Each file of `files` (meshes given by their bytes) as a new part, as [`from_mesh_file`].
 pub fn from_files(files: &FileSet) -> Result<Vec<PartModel>, LabError> {
+    // A glTF's `.bin` files come with it: they are read through it, not as parts.
     files
         .names()
+        .filter(|path| massprops::io::MeshFormat::of(path).is_some())
         .map(|path| {
             let bytes = files.get(path).unwrap_or_default();
-            from_mesh(path, massprops::parse_mesh(bytes, path)?)
+            from_mesh(path, files.parse_mesh(bytes, path)?)
         })
         .collect()
 }

@@ -114,12 +114,19 @@ pub struct MeshFormat {
     load: Option<LoadFn>,
     /// Parses a file already in memory.
     parse: ParseFn,
+    /// For a format whose file names other files beside it (glTF's buffers), the reader that
+    /// takes them from a caller (the files a browser was given) rather than from the disk.
+    parse_with: Option<ParseWithFn>,
 }
 
 /// A reader of files on disk: the path, and a callback given the fraction read so far.
 type LoadFn = fn(&Path, &dyn Fn(f32)) -> Result<MeshFile, MeshError>;
 /// A reader of files in memory: the bytes, and the path that names them in messages.
 type ParseFn = fn(&[u8], &Path) -> Result<MeshFile, MeshError>;
+/// The bytes of a file named beside another (by the name the file gives), or why not.
+pub type Beside<'a> = &'a dyn Fn(&str) -> Result<Vec<u8>, String>;
+/// A reader of files in memory that name files beside them, given how to read those.
+type ParseWithFn = fn(&[u8], &Path, Beside) -> Result<MeshFile, MeshError>;
 
 /// Every mesh format the readers take. OBJ (free text) and STL (a binary header is 80 free bytes,
 /// which often begin "solid" like an ASCII file) have no signature: they are known by their
@@ -133,6 +140,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: None,
         load: Some(obj::load_obj),
         parse: parse_obj,
+        parse_with: None,
     },
     MeshFormat {
         name: "STL",
@@ -142,6 +150,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: None,
         load: Some(stl::load_stl),
         parse: parse_stl,
+        parse_with: None,
     },
     MeshFormat {
         name: "PLY",
@@ -151,6 +160,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: None,
         load: None,
         parse: parse_ply,
+        parse_with: None,
     },
     MeshFormat {
         name: "OFF",
@@ -163,6 +173,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: None,
         load: None,
         parse: parse_off,
+        parse_with: None,
     },
     MeshFormat {
         name: "glTF",
@@ -173,6 +184,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: Some(gltf::is_gltf_json),
         load: None,
         parse: parse_gltf,
+        parse_with: Some(parse_gltf_with),
     },
     MeshFormat {
         name: "MuJoCo MSH",
@@ -182,6 +194,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: Some(msh::is_msh),
         load: None,
         parse: parse_msh,
+        parse_with: None,
     },
     MeshFormat {
         name: "COLLADA",
@@ -191,6 +204,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: Some(collada::is_collada),
         load: None,
         parse: parse_collada,
+        parse_with: None,
     },
     MeshFormat {
         name: "3MF",
@@ -201,6 +215,7 @@ pub static MESH_FORMATS: [MeshFormat; 8] = [
         recognise: None,
         load: None,
         parse: parse_3mf,
+        parse_with: None,
     },
 ];
 
@@ -285,6 +300,16 @@ fn head(path: &Path) -> Vec<u8> {
 pub fn parse_mesh(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
     let format = MeshFormat::of_file(path, bytes).ok_or_else(|| unsupported(path))?;
     (format.parse)(bytes, path)
+}
+
+/// [`parse_mesh`] for a file whose companions (glTF's `.bin` files) come from `beside`, not
+/// from the disk: the browser's dropped files.
+pub fn parse_mesh_with(bytes: &[u8], path: &Path, beside: Beside) -> Result<MeshFile, MeshError> {
+    let format = MeshFormat::of_file(path, bytes).ok_or_else(|| unsupported(path))?;
+    match format.parse_with {
+        Some(parse) => parse(bytes, path, beside),
+        None => (format.parse)(bytes, path),
+    }
 }
 
 /// The error for a file of no format in the table, listing the extensions there are.

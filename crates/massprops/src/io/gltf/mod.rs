@@ -68,7 +68,7 @@ pub fn parse_gltf(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
 pub fn parse_gltf_with(
     bytes: &[u8],
     path: &Path,
-    external: &dyn Fn(&str) -> Result<Vec<u8>, String>,
+    external: super::Beside,
 ) -> Result<MeshFile, MeshError> {
     let bad = |message: String| MeshError::Malformed {
         path: path.to_path_buf(),
