@@ -114,7 +114,12 @@ fn web_page_runs_the_lab() {
         root().join("assets/hammer.toml"),
         root().join("assets/hammer.obj"),
     ];
+    let gltf = write_box_gltf(&work);
     let driven = Command::new("node")
+        .env(
+            "DROP_GLTF",
+            format!("{}:{}", work.join("box.bin").display(), gltf.display()),
+        )
         .arg(&script)
         .arg(&base)
         .arg(&work)
@@ -194,6 +199,14 @@ fn web_page_runs_the_lab() {
             "{name}: the page shows {shown} kg, props {props} kg"
         );
     }
+    // A .gltf dropped with its .bin (the .bin first): the 2 × 3 × 4 box its node scales the
+    // unit cube to, of water, as props reads it from the disk.
+    let shown = number(&s["drop_gltf"]["mass"]);
+    assert!(
+        (shown - 24_000.0).abs() <= 1e-9 * 24_000.0 && (shown - props_mass(&gltf)).abs() <= 1e-9,
+        "drop_gltf: the page shows {shown} kg, props {} kg, the box 24000 kg",
+        props_mass(&gltf)
+    );
     check_busy_page(&s["busy"], 0.0);
     // Dropped on a body of parts it joins it: the hammer's volume and the sphere's.
     check_busy_page(&s["busy_part"], number(&s["busy_part"]["before"]["volume"]));
@@ -311,6 +324,37 @@ fn view(v: &serde_json::Value) -> [usize; 4] {
 }
 
 /// `props --json FILE`'s mass, at the app's density for a mesh (a body file gives its own).
+/// Writes `box.gltf` and the `box.bin` it names into `dir`: the unit cube centred on the origin,
+/// scaled 2 × 3 × 4 by its node. Returns the `.gltf`'s path.
+fn write_box_gltf(dir: &Path) -> PathBuf {
+    let corners: Vec<u8> = (0..8)
+        .flat_map(|i| [0, 1, 2].map(|a| ((i >> a) & 1) as f32 - 0.5))
+        .flat_map(f32::to_le_bytes)
+        .collect();
+    let triangles: [u16; 36] = [
+        0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2,
+        1, 3, 7, 1, 7, 5,
+    ];
+    let mut bin = corners;
+    bin.extend(triangles.iter().flat_map(|i| i.to_le_bytes()));
+    std::fs::write(dir.join("box.bin"), &bin).expect("box.bin");
+    let json = serde_json::json!({
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0, "scale": [2.0, 3.0, 4.0]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+             "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+            {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}],
+        "bufferViews": [{"buffer": 0, "byteLength": 96},
+                        {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+        "buffers": [{"byteLength": 168, "uri": "box.bin"}]
+    });
+    let path = dir.join("box.gltf");
+    std::fs::write(&path, json.to_string()).expect("box.gltf");
+    path
+}
+
 fn props_mass(file: &Path) -> f64 {
     let mut args = vec!["props", "--json", file.to_str().expect("utf-8")];
     if file.extension().is_some_and(|e| e != "toml") {

@@ -226,6 +226,22 @@ await scenario("drop", async () => {
   await page.close();
 });
 
+// 5b. A .gltf dropped with the .bin it names, the .bin first: the page reads the buffer from
+// the files dropped together (DROP_GLTF: the two paths, colon-separated).
+await scenario("drop_gltf", async () => {
+  const page = await open("drop_gltf", "/");
+  const files = encoded(process.env.DROP_GLTF.split(":"));
+  await page.evaluate((files) => {
+    const dataTransfer = transfer(files);
+    const canvas = document.getElementById("inertia-lab");
+    for (const type of ["dragenter", "dragover", "drop"]) {
+      canvas.dispatchEvent(new DragEvent(type, { dataTransfer, bubbles: true, cancelable: true }));
+    }
+  }, files);
+  result.scenarios.drop_gltf = await loaded(page, files.find(([n]) => n.endsWith(".gltf"))[0]);
+  await page.close();
+});
+
 // 6. A big mesh dropped (a UV sphere of 2 × 600 × 300 triangles, binary STL made in the page):
 // the page keeps drawing while the worker loads it, says the stage, and then shows the mesh's
 // volume. The frames are recorded in the page (busy.mjs).
