@@ -118,6 +118,39 @@ def test_a_ply_file_is_read_as_props_reads_it(tmp_path):
     assert math.isclose(result.principal_moments[0], 60.0 * (4 + 9) / 12, rel_tol=1e-14)
 
 
+def test_a_collada_file_is_read_in_metres_and_known_by_its_content(tmp_path):
+    # A 20 × 30 × 50 cm box in a COLLADA file of centimetres: 0.03 m³; its bytes named wrongly
+    # in a table are known by their <COLLADA root, as they are without a name.
+    import pyarrow as pa
+    corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    quads = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
+    positions = " ".join(f"{20 * x} {30 * y} {50 * z}" for x, y, z in corners)
+    text = (
+        '<?xml version="1.0"?><COLLADA version="1.4.1"><asset><unit meter="0.01"/>'
+        "<up_axis>Z_UP</up_axis></asset><library_geometries><geometry id=\"g\"><mesh>"
+        f'<source id="p"><float_array id="a" count="24">{positions}</float_array>'
+        '<technique_common><accessor source="#a" count="8" stride="3"/></technique_common>'
+        '</source><vertices id="v"><input semantic="POSITION" source="#p"/></vertices>'
+        '<polylist count="6"><input semantic="VERTEX" source="#v" offset="0"/>'
+        "<vcount>4 4 4 4 4 4</vcount><p>" + " ".join("%d %d %d %d" % q for q in quads)
+        + '</p></polylist></mesh></geometry></library_geometries><library_visual_scenes>'
+        '<visual_scene id="s"><node name="box"><instance_geometry url="#g"/></node>'
+        '</visual_scene></library_visual_scenes><scene><instance_visual_scene url="#s"/></scene>'
+        "</COLLADA>"
+    )
+    path = tmp_path / "box.dae"
+    path.write_text(text)
+    result = il.analyze_file(path)
+    assert result.to_dict() == props_json(
+        "test_a_collada_file_is_read_in_metres_and_known_by_its_content", path
+    )
+    assert math.isclose(result.volume, 0.2 * 0.3 * 0.5, rel_tol=1e-14)
+    table = il.measure_table(
+        pa.table({"path": ["box.bin"], "bytes": [text.encode()]}), bytes_col="bytes"
+    )
+    assert table.column("volume").to_pylist() == [result.volume]
+
+
 def test_exports_are_the_clis(tmp_path):
     import subprocess
 
