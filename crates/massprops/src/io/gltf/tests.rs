@@ -286,6 +286,29 @@ fn a_node_tree_places_the_box_by_its_closed_form() {
     assert_eq!(file.face_parts, vec![0; 12]);
 }
 
+/// The tetrahedron as GLB, with no node placement, is the OBJ's mesh corner for corner and its
+/// mass properties bit for bit.
+#[test]
+fn the_tetrahedron_is_the_objs() {
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    let obj = super::super::parse_obj(obj.as_bytes(), Path::new("t.obj")).expect("obj");
+    let mut w = Writer::new();
+    let p = w.positions(&[[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
+    let i = w.indices(&[0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3], 5125);
+    let mesh = w.mesh(
+        "tetra",
+        json!([{"attributes": {"POSITION": p}, "indices": i}]),
+    );
+    let node = w.node(json!({"mesh": mesh}));
+    w.root(node);
+    let file = read(&w.glb());
+    assert_eq!(
+        super::super::tests::face_points(&file.mesh),
+        super::super::tests::face_points(&obj.mesh)
+    );
+    assert_eq!(properties(&file), properties(&obj));
+}
+
 /// A matrix says the same as translation, rotation and scale.
 #[test]
 fn a_matrix_places_as_its_trs_does() {
