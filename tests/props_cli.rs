@@ -1166,3 +1166,46 @@ fn the_lab_shows_the_volume_props_gives_every_sample() {
         }
     }
 }
+
+/// A COLLADA file of two nodes (a 1 m cube "head" and a 0.2 × 0.2 × 2 m "handle", both the unit
+/// cube placed by their nodes, in centimetres) is a body of two parts: `--density-of` gives each
+/// its own, and the mass is the closed form's.
+#[test]
+fn the_parts_of_a_collada_file_take_their_own_densities() {
+    let dae = r##"<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit meter="0.01"/><up_axis>Z_UP</up_axis></asset>
+  <library_geometries><geometry id="cube"><mesh>
+    <source id="p"><float_array id="a" count="24">0 0 0 100 0 0 100 100 0 0 100 0 0 0 100 100 0 100 100 100 100 0 100 100</float_array>
+      <technique_common><accessor source="#a" count="8" stride="3"/></technique_common></source>
+    <vertices id="v"><input semantic="POSITION" source="#p"/></vertices>
+    <polylist count="6"><input semantic="VERTEX" source="#v" offset="0"/>
+      <vcount>4 4 4 4 4 4</vcount><p>0 3 2 1 4 5 6 7 0 1 5 4 1 2 6 5 2 3 7 6 3 0 4 7</p></polylist>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s">
+    <node id="head" name="head"><translate>0 0 200</translate><instance_geometry url="#cube"/></node>
+    <node id="handle" name="handle"><scale>0.2 0.2 2</scale><instance_geometry url="#cube"/></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>"##;
+    let file = TempFile::new("hammer.dae", dae.as_bytes());
+    let j = props_json(&[
+        file.path(),
+        "--density-of",
+        "head=7800",
+        "--density-of",
+        "handle=600",
+    ]);
+    let mass = 7800.0 * 1.0 + 600.0 * 0.08;
+    assert!(close(f(&j["mass"]), mass, 1e-13), "{}", j["mass"]);
+    // The head's centre is 2.5 m up, the handle's 1 m: the centre of mass between them.
+    let z = (7800.0 * 2.5 + 48.0 * 1.0) / mass;
+    assert!(
+        close(f(&j["center_of_mass"][2]), z, 1e-13),
+        "{}",
+        j["center_of_mass"]
+    );
+    let parts = j["parts"].as_array().expect("parts");
+    let names: Vec<&str> = parts.iter().filter_map(|p| p["name"].as_str()).collect();
+    assert_eq!(names, ["head", "handle"]);
+}
