@@ -52,3 +52,39 @@ def test_random_closed_meshes_agree_with_trimesh(trimesh):
         assert np.allclose(unchecked.inertia, ours.inertia, rtol=0, atol=1e-12 * scale)
         checked += 1
     assert checked == 40
+
+
+def test_files_trimesh_writes_read_as_its_meshes(trimesh, tmp_path):
+    # trimesh as the writer (float32 GLB, binary PLY, OFF) and the reference: each file read
+    # back gives trimesh's numbers for the mesh as written (its float32 positions for GLB).
+    checked = 0
+    for k, m in enumerate(random_meshes(trimesh, count=12)):
+        if m.volume < 0:
+            m.invert()
+        for ext in ("glb", "ply", "off"):
+            path = tmp_path / f"mesh{k}.{ext}"
+            m.export(path)
+            # The reference reads the file back itself (float32 for GLB, as written).
+            ref = trimesh.load(path, force="mesh", process=False)
+            ours = il.analyze_file(path)
+            scale = np.abs(ref.moment_inertia).max()
+            assert abs(ours.volume - ref.volume) < 1e-9 * ref.volume, (ext, ours.volume, ref.volume)
+            assert np.allclose(ours.center_of_mass, ref.center_mass, rtol=0, atol=1e-9 * np.abs(ref.bounds).max())
+            assert np.allclose(ours.inertia, ref.moment_inertia, rtol=0, atol=1e-8 * scale), ext
+            checked += 1
+    assert checked == 36
+    # A scene of one mesh in two nodes, one turned and moved: two parts, each placed as
+    # trimesh places it.
+    box = trimesh.creation.box(extents=(1.0, 2.0, 3.0))
+    scene = trimesh.Scene()
+    scene.add_geometry(box, node_name="left", geom_name="box")
+    turn = trimesh.transformations.rotation_matrix(0.3, (0, 0, 1))
+    turn[:3, 3] = (5.0, 0.0, 0.0)
+    scene.add_geometry(box, node_name="right", geom_name="box", transform=turn)
+    path = tmp_path / "two.glb"
+    scene.export(path)
+    ours = il.analyze_file(path)
+    ref = trimesh.load(path, force="mesh")
+    assert abs(ours.volume - 12.0) < 1e-12
+    assert np.allclose(ours.center_of_mass, ref.center_mass, rtol=0, atol=1e-9)
+    assert np.allclose(ours.inertia, ref.moment_inertia, rtol=0, atol=1e-9 * np.abs(ref.moment_inertia).max())

@@ -42,12 +42,17 @@ pub fn read(root: &Element, mut sources: Vec<SourceFile>) -> Result<Robot, Robot
         .parent()
         .map(Path::to_owned)
         .unwrap_or_default();
-    let root = expand_includes(root, &dir, &mut sources, 0)?;
+    let root = expand_includes(root, &dir, &dir, &mut sources, 0)?;
+    let source_dirs = sources
+        .iter()
+        .map(|s| s.path.parent().map(Path::to_owned).unwrap_or_default())
+        .collect();
     let mut reader = Reader {
         compiler: Compiler::default(),
         defaults: HashMap::new(),
         meshes: HashMap::new(),
         dir,
+        source_dirs,
         links: Vec::new(),
         unsupported: Vec::new(),
     };
@@ -88,10 +93,13 @@ pub fn read(root: &Element, mut sources: Vec<SourceFile>) -> Result<Robot, Robot
     })
 }
 
-/// `root` with every `<include file>` replaced by the children of the file's `<mujoco>`.
+/// `root` with every `<include file>` replaced by the children of the file's `<mujoco>`. An
+/// include's path is taken, as MuJoCo 4.0 takes it, beside the model file (`dir`) or else beside
+/// the file that writes it (`here`).
 fn expand_includes(
     e: &Element,
     dir: &Path,
+    here: &Path,
     sources: &mut Vec<SourceFile>,
     depth: usize,
 ) -> Result<Element, RobotError> {
@@ -99,7 +107,8 @@ fn expand_includes(
     out.children.clear();
     for c in &e.children {
         if c.name != "include" {
-            out.children.push(expand_includes(c, dir, sources, depth)?);
+            out.children
+                .push(expand_includes(c, dir, here, sources, depth)?);
             continue;
         }
         if depth >= MAX_INCLUDE_DEPTH {
@@ -110,7 +119,12 @@ fn expand_includes(
         let written = c
             .get("file")
             .ok_or_else(|| c.wrong("the attribute file is missing"))?;
-        let path = dir.join(written);
+        let beside_model = dir.join(written);
+        let path = if beside_model.is_file() {
+            beside_model
+        } else {
+            here.join(written)
+        };
         let text = xml::read_file(&path).map_err(|e| match e {
             RobotError::Io { source, .. } => c.bad(
                 "file",
@@ -121,13 +135,14 @@ fn expand_includes(
         })?;
         let index = sources.len();
         let included = xml::parse(&text, &path, index)?;
+        let included_dir = path.parent().map(Path::to_owned).unwrap_or_default();
         sources.push(SourceFile { path, text });
         // MuJoCo takes either root for an included file.
         if included.name != "mujoco" && included.name != "mujocoinclude" {
             return Err(included
                 .wrong("an included file's root element must be <mujoco> or <mujocoinclude>"));
         }
-        let expanded = expand_includes(&included, dir, sources, depth + 1)?;
+        let expanded = expand_includes(&included, dir, &included_dir, sources, depth + 1)?;
         out.children.extend(expanded.children);
     }
     Ok(out)
@@ -181,6 +196,8 @@ struct Reader {
     defaults: HashMap<String, DefaultClass>,
     meshes: HashMap<String, MeshAsset>,
     dir: PathBuf,
+    /// The folder of each source file (the model's first, then each included file's).
+    source_dirs: Vec<PathBuf>,
     links: Vec<Link>,
     unsupported: Vec<Unsupported>,
 }
@@ -340,16 +357,23 @@ impl Reader {
             .as_deref()
             .or(self.compiler.assetdir.as_deref())
             .unwrap_or("");
+        // As MuJoCo 4.0 looks: beside the model (in meshdir), then, for a mesh written in an
+        // included file, beside that file (without meshdir).
         let path = Path::new(written);
-        let candidate = if path.is_absolute() {
+        let mut tried = vec![if path.is_absolute() {
             path.to_owned()
         } else {
             self.dir.join(base).join(path)
-        };
-        let file = if candidate.is_file() {
-            Ok(candidate)
-        } else {
-            Err(vec![candidate])
+        }];
+        if m.file != 0
+            && !path.is_absolute()
+            && let Some(here) = self.source_dirs.get(m.file)
+        {
+            tried.push(here.join(path));
+        }
+        let file = match tried.iter().find(|p| p.is_file()) {
+            Some(found) => Ok(found.clone()),
+            None => Err(tried),
         };
         self.meshes.insert(
             name,
@@ -601,7 +625,7 @@ impl Reader {
             self.unsupported(raw, "shellinertia=\"true\": MuJoCo takes this geom as a thin shell; the audit integrates it as a solid");
         }
         if let Shape::Unsupported { what } = &shape {
-            let what = format!("{what} is not integrated: its body's computed mass leaves it out");
+            let what = format!("{what} — not integrated: its body's computed mass leaves it out");
             self.unsupported(raw, what);
         }
         let mass = match (e.number("mass")?, e.number("density")?) {

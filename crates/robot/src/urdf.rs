@@ -307,7 +307,9 @@ fn resolve_mesh(written: &str, dir: &Path, options: &ReadOptions) -> Result<Path
         // Descriptions copied out of their package often keep the package-relative path.
         tried.push(dir.join(inner));
     } else if let Some(path) = written.strip_prefix("file://") {
-        tried.push(PathBuf::from(path));
+        // `file:///abs` is absolute; a relative `file://meshes/…` is taken beside the
+        // description, as Gazebo and yourdfpy take it, not in the working folder.
+        tried.push(dir.join(path));
     } else {
         tried.push(dir.join(written));
     }

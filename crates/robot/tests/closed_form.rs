@@ -408,6 +408,149 @@ fn an_mjcf_body_without_inertial_weighs_every_geom_and_includes_mujocoinclude() 
     );
 }
 
+/// A relative `file://meshes/…` is beside the description, whatever the working folder (as
+/// gym-ignition-models' panda writes it); `file:///…` is absolute.
+#[test]
+fn a_relative_file_uri_is_beside_the_description() {
+    let root = scratch("file_uri");
+    std::fs::create_dir_all(root.join("meshes")).expect("present");
+    std::fs::write(root.join("meshes/cube.obj"), cube_obj()).expect("present");
+    let absolute = root.join("meshes/cube.obj");
+    for written in [
+        "file://meshes/cube.obj".to_owned(),
+        format!("file://{}", absolute.display()),
+    ] {
+        let urdf = format!(
+            r#"<robot name="f"><link name="block"><collision><geometry>
+  <mesh filename="{written}" scale="0.1 0.2 0.3"/></geometry></collision></link></robot>"#
+        );
+        let path = root.join("f.urdf");
+        std::fs::write(&path, urdf).expect("present");
+        let robot = read(&path, &ReadOptions::default()).expect("present");
+        let report = audit(&robot, &AuditOptions::default());
+        let c = report.links[0].computed.as_ref();
+        let mass = c
+            .map(|c| c.properties.mass)
+            .map_err(|_| codes(&report.links[0].findings));
+        assert!(
+            matches!(mass, Ok(m) if (m - 6.0).abs() < 1e-12),
+            "{written}: {mass:?}"
+        );
+    }
+}
+
+/// Mesh and include paths written in included files are found where MuJoCo 4.0.0 finds them
+/// (measured with MuJoCo's own loader on these layouts): a mesh beside the model (in meshdir)
+/// first, else beside the included file that writes it (without meshdir), never beside the
+/// model file's own meshes otherwise; a nested include beside the model, else beside the file
+/// that includes it. Each tetrahedron has its own size, so its volume says which was read.
+#[test]
+fn included_files_find_their_meshes_and_includes_as_mujoco_does() {
+    let dir = scratch("mjcf-include-paths");
+    let tetra = |side: f64| {
+        format!(
+            "v 0 0 0\nv {side} 0 0\nv 0 {side} 0\nv 0 0 {side}\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+        )
+    };
+    for (path, side) in [
+        ("sub/meshes/m.obj", 1.0),
+        ("meshes/m.obj", 2.0),
+        ("sub/m.obj", 3.0),
+        ("sub/deeper/m.obj", 5.0),
+    ] {
+        let file = dir.join(path);
+        std::fs::create_dir_all(file.parent().expect("a folder")).expect("folders");
+        std::fs::write(file, tetra(side)).expect("write");
+    }
+    let body =
+        r#"<worldbody><body name="b"><freejoint/><geom type="mesh" mesh="m"/></body></worldbody>"#;
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).expect("write");
+    let side_read = |main: &str| -> Result<f64, String> {
+        let robot = read(&dir.join(main), &ReadOptions::default()).map_err(|e| e.to_string())?;
+        let report = audit(&robot, &AuditOptions::default());
+        let b = robot
+            .links
+            .iter()
+            .position(|l| l.name == "b")
+            .ok_or("no link b")?;
+        let link = report
+            .links
+            .iter()
+            .find(|l| l.link == b)
+            .ok_or("no audit of b")?;
+        let c = link
+            .computed
+            .as_ref()
+            .map_err(|why| format!("not weighed ({why:?}): {:?}", codes(&link.findings)))?;
+        Ok((c.properties.mass / 1000.0 * 6.0).cbrt())
+    };
+    write(
+        "sub/inc.xml",
+        r#"<mujocoinclude><asset><mesh name="m" file="meshes/m.obj"/></asset></mujocoinclude>"#,
+    );
+    write(
+        "main.xml",
+        &format!(r#"<mujoco><include file="sub/inc.xml"/>{body}</mujoco>"#),
+    );
+    write(
+        "sub/inc2.xml",
+        r#"<mujocoinclude><asset><mesh name="m" file="m.obj"/></asset></mujocoinclude>"#,
+    );
+    write(
+        "main2.xml",
+        &format!(
+            r#"<mujoco><compiler meshdir="meshes"/><include file="sub/inc2.xml"/>{body}</mujoco>"#
+        ),
+    );
+    write(
+        "sub/inc3.xml",
+        r#"<mujocoinclude><include file="deeper/inc4.xml"/></mujocoinclude>"#,
+    );
+    write(
+        "sub/deeper/inc4.xml",
+        r#"<mujocoinclude><asset><mesh name="m" file="m.obj"/></asset></mujocoinclude>"#,
+    );
+    write(
+        "main3.xml",
+        &format!(r#"<mujoco><include file="sub/inc3.xml"/>{body}</mujoco>"#),
+    );
+    write(
+        "main6.xml",
+        &format!(
+            r#"<mujoco><compiler meshdir="meshes"/><asset><mesh name="m" file="m.obj"/></asset>{body}</mujoco>"#
+        ),
+    );
+    let near = |found: Result<f64, String>, side: f64, what: &str| {
+        assert!(
+            matches!(found, Ok(s) if (s - side).abs() < 1e-9),
+            "{what}: {found:?}, expected the tetrahedron of side {side}"
+        );
+    };
+    // Beside the model first: meshes/m.obj (side 2) over sub/meshes/m.obj (side 1).
+    near(
+        side_read("main.xml"),
+        2.0,
+        "an included file's mesh, both there",
+    );
+    // meshdir's meshes/m.obj is there: side 2.
+    near(side_read("main2.xml"), 2.0, "meshdir, both there");
+    std::fs::remove_file(dir.join("meshes/m.obj")).expect("remove");
+    near(side_read("main.xml"), 1.0, "beside the included file");
+    near(
+        side_read("main2.xml"),
+        3.0,
+        "beside the included file, without meshdir",
+    );
+    // The nested include beside the file that includes it; its mesh beside itself.
+    near(side_read("main3.xml"), 5.0, "a nested include");
+    // The model file's own mesh has no second place to look.
+    let own = side_read("main6.xml");
+    assert!(
+        matches!(&own, Err(e) if e.contains("mesh_missing")),
+        "{own:?}"
+    );
+}
+
 /// What the fuzz target does with an input (`fuzz/fuzz_targets/robot.rs`), shared with it.
 #[path = "../../../fuzz/fuzz_targets/robot_common.rs"]
 mod fuzz_target;

@@ -157,7 +157,7 @@ pub fn finding_text(
             format!("mesh {} cannot be weighed: {error}", file.display())
         }
         Finding::GeometryUnsupported { what } => {
-            format!("{what} is not integrated, so the link is not weighed")
+            format!("{what} — not integrated, so the link is not weighed")
         }
         Finding::MeshDefect { geometry, warning } => {
             format!("{geometry}: {}", mesh_words(warning))
@@ -180,5 +180,34 @@ fn region_text(region: Region) -> String {
     match region {
         Region::Both => "collision and visual geometry".to_owned(),
         Region::Only(kind) => format!("{} geometry", kind.name()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The reason a shape is not integrated and the consequence read as two clauses, never as
+    /// one ("must be positive is not integrated").
+    #[test]
+    fn an_unintegrated_shape_keeps_its_reason_apart() {
+        let urdf = r#"<robot name="t"><link name="toe">
+  <collision><geometry><sphere radius="0.00"/></geometry></collision></link></robot>"#;
+        let robot = robot::read_str(urdf, std::path::Path::new("t.urdf"), &Default::default())
+            .expect("read");
+        let report = robot::audit(&robot, &Default::default());
+        let words: Vec<String> = report.links[0]
+            .findings
+            .iter()
+            .filter(|f| f.code() == "geometry_unsupported")
+            .map(|f| finding_text(f, "collision", |_| String::new()))
+            .collect();
+        assert_eq!(
+            words,
+            [
+                "t.urdf:2:24: <sphere radius=\"0.00\">: must be positive — not integrated, so the \
+              link is not weighed"
+            ]
+        );
     }
 }
