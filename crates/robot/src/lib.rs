@@ -48,7 +48,7 @@ pub use model::{
     DescriptionFormat, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span,
     Unsupported,
 };
-pub use xml::SourceFile;
+pub use xml::{Leniency, SourceFile};
 
 /// How to find what a description refers to.
 #[derive(Debug, Clone, Default)]
@@ -65,7 +65,7 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Robot, RobotError> {
 
 /// Reads a description from its text, as if from `path` (relative files are found beside it).
 pub fn read_str(text: &str, path: &Path, options: &ReadOptions) -> Result<Robot, RobotError> {
-    let root = xml::parse(text, path, 0)?;
+    let (root, read_leniently) = xml::parse(text, path, 0)?;
     if let Some((e, what)) = root.xacro() {
         return Err(RobotError::Xacro {
             file: path.to_owned(),
@@ -76,6 +76,7 @@ pub fn read_str(text: &str, path: &Path, options: &ReadOptions) -> Result<Robot,
     let sources = vec![SourceFile {
         path: path.to_owned(),
         text: text.to_owned(),
+        read_leniently,
     }];
     match root.name.as_str() {
         "robot" => urdf::read(&root, sources, options),

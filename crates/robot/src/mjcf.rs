@@ -134,9 +134,13 @@ fn expand_includes(
             other => other,
         })?;
         let index = sources.len();
-        let included = xml::parse(&text, &path, index)?;
+        let (included, read_leniently) = xml::parse(&text, &path, index)?;
         let included_dir = path.parent().map(Path::to_owned).unwrap_or_default();
-        sources.push(SourceFile { path, text });
+        sources.push(SourceFile {
+            path,
+            text,
+            read_leniently,
+        });
         // MuJoCo takes either root for an included file.
         if included.name != "mujoco" && included.name != "mujocoinclude" {
             return Err(included

@@ -15,6 +15,18 @@ pub struct SourceFile {
     pub path: PathBuf,
     /// Its text.
     pub text: String,
+    /// What strict XML refuses in it that MuJoCo (TinyXML2) and urdfdom accept, and which was
+    /// therefore read as they read it: each place and fault.
+    pub read_leniently: Vec<Leniency>,
+}
+
+/// A fault of a file's XML that the engines read past, read past here too.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Leniency {
+    /// Where strict parsing stopped.
+    pub at: Location,
+    /// The fault, and how it was read.
+    pub what: String,
 }
 
 /// One element: name, attributes in file order, child elements, and where it is.
@@ -45,23 +57,126 @@ pub fn read_file(path: &Path) -> Result<String, RobotError> {
 }
 
 /// Parses `text` (file number `file`, at `path`) into its root element.
-pub fn parse(text: &str, path: &Path, file: usize) -> Result<Element, RobotError> {
+pub fn parse(text: &str, path: &Path, file: usize) -> Result<(Element, Vec<Leniency>), RobotError> {
     let options = roxmltree::ParsingOptions {
         allow_dtd: true,
         ..roxmltree::ParsingOptions::default()
     };
-    let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
-        let pos = e.pos();
-        RobotError::Xml {
-            at: Box::new(Location {
-                file: path.to_owned(),
-                line: pos.row,
-                column: pos.col,
-            }),
-            message: e.to_string(),
+    let at = |pos: roxmltree::TextPos| Location {
+        file: path.to_owned(),
+        line: pos.row,
+        column: pos.col,
+    };
+    // Each fault the engines read past is mended in a copy of the same length (so every byte
+    // range still points into the file as written, for the fix) and parsing starts again.
+    let mut mended = std::borrow::Cow::Borrowed(text);
+    let mut leniencies = Vec::new();
+    loop {
+        match roxmltree::Document::parse_with_options(&mended, options) {
+            Ok(doc) => return Ok((convert(&doc, doc.root_element(), path, file), leniencies)),
+            Err(e) => {
+                let Some((next, what)) = mend(&mended, &e) else {
+                    return Err(RobotError::Xml {
+                        at: Box::new(at(e.pos())),
+                        message: e.to_string(),
+                    });
+                };
+                // A fault mended twice in one place would loop: the text must change.
+                if next == *mended || leniencies.len() > 1000 {
+                    return Err(RobotError::Xml {
+                        at: Box::new(at(e.pos())),
+                        message: e.to_string(),
+                    });
+                }
+                leniencies.push(Leniency {
+                    at: at(e.pos()),
+                    what,
+                });
+                mended = std::borrow::Cow::Owned(next);
+            }
         }
-    })?;
-    Ok(convert(&doc, doc.root_element(), path, file))
+    }
+}
+
+/// `text` with the fault `e` mended as MuJoCo's TinyXML2 and urdfdom read it, in the same number
+/// of bytes, and what was done; `None` for a fault they refuse too.
+fn mend(text: &str, e: &roxmltree::Error) -> Option<(String, String)> {
+    match e {
+        // `drake:acceleration="…"` without xmlns:drake (airo-models' UR5e): the prefix is part
+        // of the name, as for a parser without namespaces.
+        roxmltree::Error::UnknownNamespace(prefix, _) => {
+            let written = format!("{prefix}:");
+            let read = format!("{prefix}_");
+            let bytes = text.as_bytes();
+            let mut out = String::with_capacity(text.len());
+            let mut rest = 0;
+            for (i, _) in text.match_indices(&written) {
+                let before = i.checked_sub(1).map(|k| bytes[k]);
+                let in_a_name = matches!(before, Some(b'<' | b'/' | b' ' | b'\t' | b'\n' | b'\r'));
+                if in_a_name {
+                    out.push_str(&text[rest..i]);
+                    out.push_str(&read);
+                    rest = i + written.len();
+                }
+            }
+            out.push_str(&text[rest..]);
+            Some((
+                out,
+                format!(
+                    "the namespace prefix {prefix}: is not declared: read as part of the names"
+                ),
+            ))
+        }
+        // `--` inside a comment: TinyXML2 reads the comment to its `-->`.
+        roxmltree::Error::InvalidComment(_) => {
+            let mut out = String::with_capacity(text.len());
+            let mut rest = text;
+            while let Some(start) = rest.find("<!--") {
+                out.push_str(&rest[..start + 4]);
+                let body = &rest[start + 4..];
+                let end = body.find("-->").unwrap_or(body.len());
+                // Every hyphen of the comment's own text becomes a space.
+                out.extend(body[..end].chars().map(|c| if c == '-' { ' ' } else { c }));
+                rest = &body[end..];
+            }
+            out.push_str(rest);
+            Some((
+                out,
+                "a comment holds \"--\": read to its \"-->\"".to_owned(),
+            ))
+        }
+        // `<?xml …?>` after blank lines: the declaration is read past.
+        roxmltree::Error::UnexpectedDeclaration(_) => {
+            let start = text.find("<?xml")?;
+            let end = start + text[start..].find("?>")? + 2;
+            if !text[..start].trim().is_empty() {
+                return None;
+            }
+            let mut out = text[..start].to_owned();
+            out.extend(std::iter::repeat_n(' ', end - start));
+            out.push_str(&text[end..]);
+            Some((
+                out,
+                "the XML declaration comes after blank text: read past".to_owned(),
+            ))
+        }
+        // NUL bytes after the root element (pybullet's humanoid.urdf ends with one): TinyXML
+        // stops at a NUL, as C strings do.
+        roxmltree::Error::UnknownToken(_) => {
+            let content = text.trim_end_matches(|c: char| c == '\0' || c.is_whitespace());
+            let tail = &text[content.len()..];
+            if !tail.contains('\0') {
+                return None;
+            }
+            let mut out = content.to_owned();
+            out.extend(tail.chars().map(|c| if c == '\0' { ' ' } else { c }));
+            Some((
+                out,
+                "NUL bytes after the root element: read past".to_owned(),
+            ))
+        }
+        _ => None,
+    }
 }
 
 fn convert(

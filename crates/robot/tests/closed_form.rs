@@ -551,6 +551,74 @@ fn included_files_find_their_meshes_and_includes_as_mujoco_does() {
     );
 }
 
+/// XML that strict parsers refuse and urdfdom and MuJoCo's TinyXML2 read (airo-models' UR5e
+/// carries Drake's attributes without declaring their prefix; `--` in comments; a declaration
+/// after blank lines): read, each fault named with its line, and the fix still splices the
+/// file's own bytes, the undeclared attributes kept as written.
+#[test]
+fn xml_the_engines_accept_is_read_with_its_faults_named() {
+    let urdf = "\n\n<?xml version=\"1.0\"?>\n<robot name=\"r\">\n\
+        <!-- a -- comment --->\n\
+        <link name=\"a\" drake:accel=\"1\"><inertial><mass value=\"6\"/>\
+        <inertia ixx=\"0.1\" ixy=\"0\" ixz=\"0\" iyy=\"0.1\" iyz=\"0\" izz=\"0.1\"/></inertial>\
+        <collision><geometry><box size=\"1 2 3\"/></geometry></collision></link>\n\
+        <drake:collision_filter_group name=\"g\"></drake:collision_filter_group>\n</robot>\n";
+    let robot = read_str(urdf, Path::new("r.urdf"), &ReadOptions::default()).expect("read");
+    let faults: Vec<(u32, &str)> = robot.sources[0]
+        .read_leniently
+        .iter()
+        .map(|l| (l.at.line, l.what.as_str()))
+        .collect();
+    assert_eq!(faults.len(), 3, "{faults:?}");
+    assert_eq!(faults[0].0, 3, "the declaration: {faults:?}");
+    assert!(
+        faults
+            .iter()
+            .any(|(line, what)| *line == 5 && what.contains("\"--\"")),
+        "{faults:?}"
+    );
+    assert!(
+        faults.iter().any(|(_, what)| what.contains("drake:")),
+        "{faults:?}"
+    );
+    // The box of 6 kg: the audit weighs the link.
+    let report = audit(&robot, &AuditOptions::default());
+    let c = report.links[0].computed.as_ref().expect("weighed");
+    assert!((c.properties.mass - 6.0).abs() < 1e-12);
+    let fixed = robot::fix::splice(
+        &robot,
+        &[robot::fix::Replacement {
+            link: 0,
+            text: "<inertial><mass value=\"6\"/></inertial>".to_owned(),
+        }],
+    )
+    .expect("spliced");
+    assert!(
+        fixed.contains(
+            "<link name=\"a\" drake:accel=\"1\"><inertial><mass value=\"6\"/></inertial><collision>"
+        ),
+        "{fixed}"
+    );
+    assert!(
+        fixed.starts_with("\n\n<?xml") && fixed.contains("<!-- a -- comment --->"),
+        "{fixed}"
+    );
+    // A NUL after the root element (pybullet's humanoid.urdf) is read past too.
+    let nul = format!("{urdf}\0");
+    let with_nul = read_str(&nul, Path::new("r.urdf"), &ReadOptions::default()).expect("read");
+    assert!(
+        with_nul.sources[0]
+            .read_leniently
+            .iter()
+            .any(|l| l.what.contains("NUL")),
+        "{:?}",
+        with_nul.sources[0].read_leniently
+    );
+    // Two attributes run together are still refused: no mend of the same length reads them.
+    let joined = urdf.replace("name=\"a\" drake", "name=\"a\"drake");
+    assert!(read_str(&joined, Path::new("r.urdf"), &ReadOptions::default()).is_err());
+}
+
 /// What the fuzz target does with an input (`fuzz/fuzz_targets/robot.rs`), shared with it.
 #[path = "../../../fuzz/fuzz_targets/robot_common.rs"]
 mod fuzz_target;

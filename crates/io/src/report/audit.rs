@@ -145,6 +145,20 @@ pub fn table(file: &str, robot: &Robot, report: &Audit) -> String {
             );
         }
     }
+    let leniencies: Vec<_> = robot
+        .sources
+        .iter()
+        .flat_map(|f| &f.read_leniently)
+        .collect();
+    if !leniencies.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nRead as MuJoCo and urdfdom read it (strict XML refuses it):"
+        );
+        for l in leniencies {
+            let _ = writeln!(s, "  {}: {}", l.at, l.what);
+        }
+    }
     if !robot.unsupported.is_empty() {
         let _ = writeln!(s, "\nNot modelled (named, not skipped):");
         for u in &robot.unsupported {
@@ -287,6 +301,12 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
             ("computed", "uniform density over the geometry (an estimate for a real link)"),
         ]),
         "links": links,
+        "read_leniently": robot.sources.iter().flat_map(|f| &f.read_leniently).map(|l| json!({
+            "file": l.at.file.display().to_string(),
+            "line": l.at.line,
+            "column": l.at.column,
+            "message": l.what,
+        })).collect::<Vec<_>>(),
         "unsupported": robot.unsupported.iter().map(|u| json!({
             "file": u.at.file.display().to_string(),
             "line": u.at.line,
