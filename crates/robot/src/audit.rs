@@ -24,7 +24,7 @@ use massprops::composite::{PartMass, combine};
 use massprops::principal::Degeneracy;
 use massprops::{MassProperties, MeshError, Repairs};
 
-use crate::findings::{Finding, ImpossibleAxis, PlaceholderReason, Region};
+use crate::findings::{Finding, ImpossibleAxis, PlaceholderReason, Region, UnitSlip};
 use crate::geometry::{self, Extent, Meshes, Problem, Ready};
 use crate::model::{DescriptionFormat, GeometryKind, GeometryMass, Link, Robot, Shape};
 
@@ -334,6 +334,10 @@ fn audit_link(
                     volume: c.volume,
                     mass: s.mass,
                 });
+                findings.extend(mass_slip(s.mass, density));
+            }
+            if s.mass > 0.0 {
+                findings.extend(moment_slip(s, &c.properties));
             }
         }
         let written = &link
@@ -662,4 +666,61 @@ fn differ(a: &LinkAudit, b: &LinkAudit, robot: &Robot) -> bool {
             !sa.is_empty() && !sb.is_empty() && sa != sb
         }
     }
+}
+
+/// The densities a unit slip is judged against: those of real parts (foams to tungsten), the
+/// plausible range's core, so that a slip is named only when undoing it lands well inside.
+const SLIP_DENSITY: (f64, f64) = (300.0, 20_000.0);
+
+/// The slip of the stated mass, or of the mesh's unit, that its implausible `density` points to:
+/// the first whose undoing lands the density among real parts' ([`SLIP_DENSITY`]).
+fn mass_slip(mass: f64, density: f64) -> Option<Finding> {
+    let real = |d: f64| (SLIP_DENSITY.0..=SLIP_DENSITY.1).contains(&d);
+    // The mesh in millimetres makes the volume 10⁹ too large: the density 10⁹ too small.
+    if real(density * 1e9) {
+        return Some(Finding::LikelyUnitError {
+            slip: UnitSlip::MeshInMillimetres,
+            stated: density,
+            would_be: density * 1e9,
+        });
+    }
+    if real(density / 1e3) {
+        return Some(Finding::LikelyUnitError {
+            slip: UnitSlip::MassInGrams,
+            stated: mass,
+            would_be: mass / 1e3,
+        });
+    }
+    // Only a mass too large: a density too small is as often an enclosed hollow part.
+    [1, 2].into_iter().find_map(|power: i32| {
+        let factor = 10f64.powi(power);
+        real(density / factor).then(|| Finding::LikelyUnitError {
+            slip: UnitSlip::MassDecimalPoint { power },
+            stated: mass,
+            would_be: mass / factor,
+        })
+    })
+}
+
+/// Moments stated in kg·mm² or g·mm²: the stated tensor 10⁶ or 10⁹ × the geometry's (at the
+/// stated mass) within a factor of two, and within 50 % once divided.
+fn moment_slip(stated: &MassProperties, computed: &MassProperties) -> Option<Finding> {
+    let (s, c) = (stated.inertia_com.trace(), computed.inertia_com.trace());
+    if !(s > 0.0 && c > 0.0) {
+        return None;
+    }
+    [
+        (1e6, UnitSlip::MomentsInKgMm2),
+        (1e9, UnitSlip::MomentsInGMm2),
+    ]
+    .into_iter()
+    .find_map(|(factor, slip)| {
+        let undone = stated.inertia_com / factor;
+        let error = (undone - computed.inertia_com).norm() / computed.inertia_com.norm();
+        (error < 0.5).then(|| Finding::LikelyUnitError {
+            slip,
+            stated: stated.principal.moments.z,
+            would_be: stated.principal.moments.z / factor,
+        })
+    })
 }

@@ -99,6 +99,17 @@ pub enum Finding {
         /// How far outside the 26-sided polytope around the hull, at least, m.
         distance: f64,
     },
+    /// A stated value off from the geometry's by a power of ten that a unit slip explains: the
+    /// value it would have, once the slip is undone, is plausible.
+    LikelyUnitError {
+        /// Which slip.
+        slip: UnitSlip,
+        /// The stated value (kg for the mass, kg·m² for the largest moment), or for a mesh in
+        /// millimetres the density it gives, kg/m³.
+        stated: f64,
+        /// The value with the slip undone, in the same unit.
+        would_be: f64,
+    },
     /// The stated tensor looks like a placeholder.
     Placeholder {
         /// Why.
@@ -166,6 +177,7 @@ impl Finding {
             Finding::ImpossibleMoment { .. } => "impossible_moment",
             Finding::ComOutsideGeometry { .. } => "com_outside_geometry",
             Finding::Placeholder { .. } => "placeholder",
+            Finding::LikelyUnitError { .. } => "likely_unit_error",
             Finding::ImplausibleDensity { .. } => "implausible_density",
             Finding::MomentsFar { .. } => "moments_far",
             Finding::ComFar { .. } => "com_far",
@@ -183,7 +195,7 @@ impl Finding {
             Finding::NotPositiveDefinite { .. } | Finding::TriangleInequality { .. } => 1,
             Finding::NonpositiveMass { .. } => 2,
             Finding::MissingInertial { .. } => 3,
-            Finding::Placeholder { .. } => 4,
+            Finding::Placeholder { .. } | Finding::LikelyUnitError { .. } => 4,
             Finding::ImplausibleDensity { .. } => 5,
             Finding::MomentsFar { .. } | Finding::ComFar { .. } => 6,
             Finding::MeshMissing { .. }
@@ -198,4 +210,23 @@ impl Finding {
     pub fn flags_inertial(&self) -> bool {
         self.severity() <= 6
     }
+}
+
+/// A unit or typing slip that puts a stated value a power of ten from the geometry's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UnitSlip {
+    /// The mass written in grams (1000 × the kilograms).
+    MassInGrams,
+    /// The mass with its decimal point one or two places to the right (`power`: the stated
+    /// mass is 10^power × the plausible one; 1 or 2).
+    MassDecimalPoint {
+        /// The power of ten.
+        power: i32,
+    },
+    /// The mesh's coordinates in millimetres, read as metres: a volume 10⁹ too large.
+    MeshInMillimetres,
+    /// The moments in kg·mm² (10⁶ × kg·m²).
+    MomentsInKgMm2,
+    /// The moments in g·mm² (10⁹ × kg·m²).
+    MomentsInGMm2,
 }

@@ -43,7 +43,7 @@ pub use audit::{
     Unweighed, audit,
 };
 pub use error::{Location, RobotError};
-pub use findings::{Finding, ImpossibleAxis, PlaceholderReason, Region};
+pub use findings::{Finding, ImpossibleAxis, PlaceholderReason, Region, UnitSlip};
 pub use model::{
     DescriptionFormat, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span,
     Unsupported,

@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
 use nalgebra::{Matrix3, Vector3};
-use robot::{AuditOptions, Finding, ReadOptions, Region, audit, read, read_str};
+use robot::{AuditOptions, Finding, ReadOptions, Region, UnitSlip, audit, read, read_str};
 
 /// `a` equals `b` to `tol` relative to the larger entry of `b`.
 fn close(a: &Matrix3<f64>, b: &Matrix3<f64>, tol: f64) {
@@ -617,6 +617,72 @@ fn xml_the_engines_accept_is_read_with_its_faults_named() {
     // Two attributes run together are still refused: no mend of the same length reads them.
     let joined = urdf.replace("name=\"a\" drake", "name=\"a\"drake");
     assert!(read_str(&joined, Path::new("r.urdf"), &ReadOptions::default()).is_err());
+}
+
+/// Unit and typing slips named with the value they would have: a 0.1 × 0.2 × 0.3 m aluminium
+/// block (16.2 kg, 2700 kg/m³) stated in grams, with its decimal point one place off, its mesh
+/// in millimetres, its moments in kg·mm²; nothing named when the link is right, or light
+/// (a density too low is as often a hollow part).
+#[test]
+fn unit_slips_are_named_with_the_value_they_would_have() {
+    let root = scratch("unit_slips");
+    std::fs::write(root.join("cube.obj"), cube_obj()).expect("present");
+    let (a, b, c) = (0.1f64, 0.2f64, 0.3f64);
+    let m = 2700.0 * a * b * c;
+    let moments = [
+        m * (b * b + c * c) / 12.0,
+        m * (a * a + c * c) / 12.0,
+        m * (a * a + b * b) / 12.0,
+    ];
+    let link = |mass: f64, scale: &str, factor: f64| {
+        let [ixx, iyy, izz] = moments.map(|i| i * factor);
+        let urdf = format!(
+            r#"<robot name="u"><link name="block"><inertial><mass value="{mass}"/>
+  <inertia ixx="{ixx}" ixy="0" ixz="0" iyy="{iyy}" iyz="0" izz="{izz}"/></inertial>
+  <collision><geometry><mesh filename="cube.obj" scale="{scale}"/></geometry></collision></link></robot>"#
+        );
+        let path = root.join("u.urdf");
+        std::fs::write(&path, urdf).expect("present");
+        let robot = read(&path, &ReadOptions::default()).expect("read");
+        let report = audit(&robot, &AuditOptions::default());
+        report.links[0]
+            .findings
+            .iter()
+            .filter_map(|f| match f {
+                Finding::LikelyUnitError {
+                    slip,
+                    stated,
+                    would_be,
+                } => Some((*slip, *stated, *would_be)),
+                _ => None,
+            })
+            .collect::<Vec<_>>()
+    };
+    let metres = "0.1 0.2 0.3";
+    let near = |x: f64, y: f64| (x - y).abs() <= 1e-9 * y.abs();
+    assert_eq!(link(m, metres, 1.0), [], "a right link");
+    assert_eq!(link(0.03 * m, metres, 0.03), [], "a light (hollow) link");
+    let grams = link(1000.0 * m, metres, 1000.0);
+    assert!(
+        matches!(grams.as_slice(), [(UnitSlip::MassInGrams, s, w)] if near(*s, 1000.0 * m) && near(*w, m)),
+        "{grams:?}"
+    );
+    let decimal = link(10.0 * m, metres, 10.0);
+    assert!(
+        matches!(decimal.as_slice(), [(UnitSlip::MassDecimalPoint { power: 1 }, _, w)] if near(*w, m)),
+        "{decimal:?}"
+    );
+    let mm = link(m, "100 200 300", 1.0);
+    assert!(
+        mm.iter()
+            .any(|(slip, _, w)| *slip == UnitSlip::MeshInMillimetres && near(*w, 2700.0)),
+        "{mm:?}"
+    );
+    let kg_mm2 = link(m, metres, 1e6);
+    assert!(
+        matches!(kg_mm2.as_slice(), [(UnitSlip::MomentsInKgMm2, s, w)] if near(*s, 1e6 * moments[0]) && near(*w, moments[0])),
+        "{kg_mm2:?}"
+    );
 }
 
 /// What the fuzz target does with an input (`fuzz/fuzz_targets/robot.rs`), shared with it.

@@ -218,6 +218,11 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
             robot::PlaceholderReason::RoundNumbers { written } => json!({"kind": "round_numbers", "written": written}),
             robot::PlaceholderReason::SharedTensor { links } => json!({"kind": "shared_tensor", "links": links}),
         }).collect::<Vec<_>>()}),
+        F::LikelyUnitError {
+            slip,
+            stated,
+            would_be,
+        } => json!({"slip": slip_code(*slip), "stated": stated, "would_be": would_be}),
         F::ImplausibleDensity {
             density,
             volume,
@@ -315,4 +320,15 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
             "message": u.what,
         })).collect::<Vec<_>>(),
     })
+}
+
+/// A unit slip's stable name in `audit --json`.
+fn slip_code(slip: robot::UnitSlip) -> String {
+    match slip {
+        robot::UnitSlip::MassInGrams => "mass_in_grams".to_owned(),
+        robot::UnitSlip::MassDecimalPoint { power } => format!("mass_decimal_point_{power}"),
+        robot::UnitSlip::MeshInMillimetres => "mesh_in_millimetres".to_owned(),
+        robot::UnitSlip::MomentsInKgMm2 => "moments_in_kg_mm2".to_owned(),
+        robot::UnitSlip::MomentsInGMm2 => "moments_in_g_mm2".to_owned(),
+    }
 }

@@ -117,6 +117,44 @@ pub fn finding_text(
                 .collect();
             format!("placeholder inertia: {}", why.join("; "))
         }
+        Finding::LikelyUnitError {
+            slip,
+            stated,
+            would_be,
+        } => match slip {
+            robot::UnitSlip::MassInGrams => format!(
+                "likely unit error: the stated mass {} kg looks like grams; as {} kg its density \
+                 is that of a real part",
+                num(*stated),
+                num(*would_be)
+            ),
+            robot::UnitSlip::MassDecimalPoint { power } => format!(
+                "likely typing slip: the stated mass {} kg looks like {} kg with its decimal \
+                 point {power} place(s) to the right; as {} kg its density is that of a real part",
+                num(*stated),
+                num(*would_be),
+                num(*would_be)
+            ),
+            robot::UnitSlip::MeshInMillimetres => format!(
+                "likely unit error: the {geometry} mesh looks like millimetres read as metres \
+                 (density {} kg/m^3; with a mesh scale of 0.001 it would be {} kg/m^3)",
+                num(*stated),
+                num(*would_be)
+            ),
+            robot::UnitSlip::MomentsInKgMm2 | robot::UnitSlip::MomentsInGMm2 => {
+                let unit = if *slip == robot::UnitSlip::MomentsInKgMm2 {
+                    "kg*mm^2"
+                } else {
+                    "g*mm^2"
+                };
+                format!(
+                    "likely unit error: the stated moments look like {unit} (largest {}); in \
+                     kg*m^2 ({}) they are within 50 % of the geometry's",
+                    num(*stated),
+                    num(*would_be)
+                )
+            }
+        },
         Finding::ImplausibleDensity {
             density,
             volume,
