@@ -334,7 +334,7 @@ fn audit_link(
                     volume: c.volume,
                     mass: s.mass,
                 });
-                findings.extend(mass_slip(s.mass, density));
+                findings.extend(mass_slip(s, &c.properties, density));
             }
             if s.mass > 0.0 {
                 findings.extend(moment_slip(s, &c.properties));
@@ -672,19 +672,46 @@ fn differ(a: &LinkAudit, b: &LinkAudit, robot: &Robot) -> bool {
 /// plausible range's core, so that a slip is named only when undoing it lands well inside.
 const SLIP_DENSITY: (f64, f64) = (300.0, 20_000.0);
 
-/// The slip of the stated mass, or of the mesh's unit, that its implausible `density` points to:
-/// the first whose undoing lands the density among real parts' ([`SLIP_DENSITY`]).
-fn mass_slip(mass: f64, density: f64) -> Option<Finding> {
+/// Whether the stated tensor agrees, within 50 %, with `expected` (the geometry's, for the
+/// value the slip would give): the second, independent witness a slip is named on.
+fn agrees(stated: &MassProperties, expected: &Matrix3<f64>) -> bool {
+    (stated.inertia_com - expected).norm() < 0.5 * expected.norm()
+}
+
+/// Whether the stated moments look made up (all three equal), so that they witness nothing.
+fn made_up(stated: &MassProperties) -> bool {
+    let m = stated.principal.moments;
+    m.z - m.x <= 1e-3 * m.z
+}
+
+/// The slip of the stated mass, or of the mesh's unit, that an implausible `density` points to,
+/// named only when two witnesses agree: undoing it lands the density among real parts
+/// ([`SLIP_DENSITY`]), and the stated moments are the geometry's for the value it gives (the
+/// tensor worked out right, the mass or the mesh scale typed wrong; for grams, also the whole
+/// inertial in grams). A decimal slip of 10 or 100 needs the first kind: a tensor that agrees
+/// only in shape fits an undersized collision geometry as well.
+fn mass_slip(stated: &MassProperties, computed: &MassProperties, density: f64) -> Option<Finding> {
     let real = |d: f64| (SLIP_DENSITY.0..=SLIP_DENSITY.1).contains(&d);
-    // The mesh in millimetres makes the volume 10⁹ too large: the density 10⁹ too small.
-    if real(density * 1e9) {
+    if made_up(stated) {
+        return None;
+    }
+    // The computed tensor is at the stated mass: linear in the mass, quadratic in lengths.
+    let at_mass = |mass: f64| computed.inertia_com * (mass / stated.mass);
+    // The mesh in millimetres makes the volume 10⁹ too large (the density 10⁹ too small) and
+    // every moment 10⁶ too large.
+    if real(density * 1e9) && agrees(stated, &(computed.inertia_com * 1e-6)) {
         return Some(Finding::LikelyUnitError {
             slip: UnitSlip::MeshInMillimetres,
             stated: density,
             would_be: density * 1e9,
         });
     }
-    if real(density / 1e3) {
+    let mass = stated.mass;
+    // Grams: the tensor right for the mass in kilograms, or the whole inertial in grams (the
+    // tensor the geometry's at the stated mass: the shape right, the unit of mass wrong).
+    let grams_witnessed =
+        agrees(stated, &at_mass(mass / 1e3)) || agrees(stated, &computed.inertia_com);
+    if real(density / 1e3) && grams_witnessed {
         return Some(Finding::LikelyUnitError {
             slip: UnitSlip::MassInGrams,
             stated: mass,
@@ -694,19 +721,20 @@ fn mass_slip(mass: f64, density: f64) -> Option<Finding> {
     // Only a mass too large: a density too small is as often an enclosed hollow part.
     [1, 2].into_iter().find_map(|power: i32| {
         let factor = 10f64.powi(power);
-        real(density / factor).then(|| Finding::LikelyUnitError {
-            slip: UnitSlip::MassDecimalPoint { power },
-            stated: mass,
-            would_be: mass / factor,
+        (real(density / factor) && agrees(stated, &at_mass(mass / factor))).then(|| {
+            Finding::LikelyUnitError {
+                slip: UnitSlip::MassDecimalPoint { power },
+                stated: mass,
+                would_be: mass / factor,
+            }
         })
     })
 }
 
 /// Moments stated in kg·mm² or g·mm²: the stated tensor 10⁶ or 10⁹ × the geometry's (at the
-/// stated mass) within a factor of two, and within 50 % once divided.
+/// stated mass), within 50 % once divided; never for moments that look made up (all equal).
 fn moment_slip(stated: &MassProperties, computed: &MassProperties) -> Option<Finding> {
-    let (s, c) = (stated.inertia_com.trace(), computed.inertia_com.trace());
-    if !(s > 0.0 && c > 0.0) {
+    if made_up(stated) || !(computed.inertia_com.norm() > 0.0) {
         return None;
     }
     [
@@ -715,9 +743,7 @@ fn moment_slip(stated: &MassProperties, computed: &MassProperties) -> Option<Fin
     ]
     .into_iter()
     .find_map(|(factor, slip)| {
-        let undone = stated.inertia_com / factor;
-        let error = (undone - computed.inertia_com).norm() / computed.inertia_com.norm();
-        (error < 0.5).then(|| Finding::LikelyUnitError {
+        agrees(stated, &(computed.inertia_com * factor)).then(|| Finding::LikelyUnitError {
             slip,
             stated: stated.principal.moments.z,
             would_be: stated.principal.moments.z / factor,

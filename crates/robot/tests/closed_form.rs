@@ -621,8 +621,8 @@ fn xml_the_engines_accept_is_read_with_its_faults_named() {
 
 /// Unit and typing slips named with the value they would have: a 0.1 × 0.2 × 0.3 m aluminium
 /// block (16.2 kg, 2700 kg/m³) stated in grams, with its decimal point one place off, its mesh
-/// in millimetres, its moments in kg·mm²; nothing named when the link is right, or light
-/// (a density too low is as often a hollow part).
+/// in millimetres, its moments in kg·mm²; nothing named when the link is right, light (a
+/// density too low is as often a hollow part) or only its shape witnesses the slip.
 #[test]
 fn unit_slips_are_named_with_the_value_they_would_have() {
     let root = scratch("unit_slips");
@@ -662,12 +662,19 @@ fn unit_slips_are_named_with_the_value_they_would_have() {
     let near = |x: f64, y: f64| (x - y).abs() <= 1e-9 * y.abs();
     assert_eq!(link(m, metres, 1.0), [], "a right link");
     assert_eq!(link(0.03 * m, metres, 0.03), [], "a light (hollow) link");
-    let grams = link(1000.0 * m, metres, 1000.0);
-    assert!(
-        matches!(grams.as_slice(), [(UnitSlip::MassInGrams, s, w)] if near(*s, 1000.0 * m) && near(*w, m)),
-        "{grams:?}"
-    );
-    let decimal = link(10.0 * m, metres, 10.0);
+    // The whole inertial in grams, and the mass alone.
+    for moments_factor in [1000.0, 1.0] {
+        let grams = link(1000.0 * m, metres, moments_factor);
+        assert!(
+            matches!(grams.as_slice(), [(UnitSlip::MassInGrams, s, w)] if near(*s, 1000.0 * m) && near(*w, m)),
+            "{grams:?}"
+        );
+    }
+    // Ten times too dense with a tensor of the same shape: an undersized geometry as well as a
+    // slip, so nothing is named.
+    assert_eq!(link(10.0 * m, metres, 10.0), [], "shape alone");
+    // The mass typed ten times too large beside a tensor worked out right.
+    let decimal = link(10.0 * m, metres, 1.0);
     assert!(
         matches!(decimal.as_slice(), [(UnitSlip::MassDecimalPoint { power: 1 }, _, w)] if near(*w, m)),
         "{decimal:?}"
