@@ -734,7 +734,7 @@ fn mass_slip(stated: &MassProperties, computed: &MassProperties, density: f64) -
 /// Moments stated in kg·mm² or g·mm²: the stated tensor 10⁶ or 10⁹ × the geometry's (at the
 /// stated mass), within 50 % once divided; never for moments that look made up (all equal).
 fn moment_slip(stated: &MassProperties, computed: &MassProperties) -> Option<Finding> {
-    if made_up(stated) || !(computed.inertia_com.norm() > 0.0) {
+    if made_up(stated) || computed.inertia_com.norm() <= 0.0 {
         return None;
     }
     [
