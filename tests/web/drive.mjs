@@ -210,10 +210,8 @@ await scenario("picker", async () => {
   await page.close();
 });
 
-// 5. Files dropped on the page: a body file with its meshes.
-await scenario("drop", async () => {
-  const page = await open("drop", "/");
-  const files = encoded(dropped);
+// Drops files (as [name, base64 bytes]) on the page's canvas, as a person's drop arrives.
+async function drop(page, files) {
   await page.evaluate((files) => {
     const dataTransfer = transfer(files);
     const canvas = document.getElementById("inertia-lab");
@@ -221,6 +219,13 @@ await scenario("drop", async () => {
       canvas.dispatchEvent(new DragEvent(type, { dataTransfer, bubbles: true, cancelable: true }));
     }
   }, files);
+}
+
+// 5. Files dropped on the page: a body file with its meshes.
+await scenario("drop", async () => {
+  const page = await open("drop", "/");
+  const files = encoded(dropped);
+  await drop(page, files);
   const main = files.find(([n]) => n.endsWith(".toml"))?.[0] ?? files[0][0];
   result.scenarios.drop = await loaded(page, main);
   await page.close();
@@ -231,13 +236,7 @@ await scenario("drop", async () => {
 await scenario("drop_gltf", async () => {
   const page = await open("drop_gltf", "/");
   const files = encoded(process.env.DROP_GLTF.split(":"));
-  await page.evaluate((files) => {
-    const dataTransfer = transfer(files);
-    const canvas = document.getElementById("inertia-lab");
-    for (const type of ["dragenter", "dragover", "drop"]) {
-      canvas.dispatchEvent(new DragEvent(type, { dataTransfer, bubbles: true, cancelable: true }));
-    }
-  }, files);
+  await drop(page, files);
   result.scenarios.drop_gltf = await loaded(page, files.find(([n]) => n.endsWith(".gltf"))[0]);
   await page.close();
 });

@@ -329,6 +329,24 @@ fn unsupported(path: &Path) -> MeshError {
     }
 }
 
+/// A reader's faces as a mesh: positions welded exactly (a file's per-corner copies of a point
+/// become one vertex), each face's corners (indices into `positions`, `arities[f]` of them)
+/// renumbered; a problem of the mesh is named with the file.
+fn welded_mesh(
+    path: &Path,
+    positions: &[nalgebra::Point3<f64>],
+    corners: impl IntoIterator<Item = usize>,
+    arities: &[usize],
+) -> Result<PolyMesh, MeshError> {
+    let (welded, remap) = crate::mesh::weld_exact(positions);
+    let indices = corners.into_iter().map(|i| remap[i]).collect();
+    PolyMesh::from_flat(welded, indices, arities).map_err(|e| MeshError::InFile {
+        path: path.to_path_buf(),
+        line: None,
+        source: Box::new(e),
+    })
+}
+
 /// `name`, or `name 2`, `name 3`… if a part already has it: each instance stays its own part.
 fn unique_name(name: String, taken: &[String]) -> String {
     if !taken.contains(&name) {
@@ -392,6 +410,70 @@ mod tests {
         (0..mesh.face_count())
             .map(|f| mesh.face_points(f).collect())
             .collect()
+    }
+
+    /// A solid box of sides `sides` (density 1), turned by `rotation` and centred at `center`:
+    /// the closed form the readers' placements are checked against.
+    pub(super) fn placed_box(
+        sides: [f64; 3],
+        rotation: nalgebra::Matrix3<f64>,
+        center: [f64; 3],
+    ) -> crate::MassProperties {
+        let [a, b, c] = sides;
+        let m = a * b * c;
+        let own = nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::new(
+            m * (b * b + c * c) / 12.0,
+            m * (a * a + c * c) / 12.0,
+            m * (a * a + b * b) / 12.0,
+        ));
+        crate::MassProperties::new(
+            m,
+            nalgebra::Point3::from(center),
+            rotation * own * rotation.transpose(),
+        )
+    }
+
+    /// Two unit cubes (density 1) centred at the origin and at (4, 0, 0): each is 2 from their
+    /// centre, adding m d² = 4 to Iyy and Izz (the readers' instancing tests).
+    pub(super) fn two_unit_cubes_four_apart() -> crate::MassProperties {
+        let one = placed_box([1.0; 3], nalgebra::Matrix3::identity(), [0.0; 3]);
+        let mut pair = one.inertia_com * 2.0;
+        pair[(1, 1)] += 8.0;
+        pair[(2, 2)] += 8.0;
+        crate::MassProperties::new(2.0, nalgebra::Point3::new(2.0, 0.0, 0.0), pair)
+    }
+
+    /// `found` is `expected` to 1e-12 (mass and tensor relative, centre absolute).
+    pub(super) fn assert_close(
+        found: &crate::MassProperties,
+        expected: &crate::MassProperties,
+        what: &str,
+    ) {
+        let scale = expected.inertia_com.norm();
+        assert!(
+            (found.mass - expected.mass).abs() < 1e-12 * expected.mass
+                && (found.center_of_mass - expected.center_of_mass).norm() < 1e-12
+                && (found.inertia_com - expected.inertia_com).norm() < 1e-12 * scale,
+            "{what}: found {found:?}, expected {expected:?}"
+        );
+    }
+
+    /// The volume the faces enclose, signed: positive when they are wound outward (mass
+    /// properties turn an inside-out body round, so winding is checked by this).
+    pub(super) fn signed_volume(mesh: &PolyMesh) -> f64 {
+        (0..mesh.face_count())
+            .map(|f| {
+                let p: Vec<nalgebra::Point3<f64>> = mesh.face_points(f).collect();
+                (1..p.len() - 1)
+                    .map(|k| p[0].coords.dot(&p[k].coords.cross(&p[k + 1].coords)) / 6.0)
+                    .sum::<f64>()
+            })
+            .sum()
+    }
+
+    /// A file's mass properties at density 1.
+    pub(super) fn properties(file: &MeshFile) -> crate::MassProperties {
+        crate::mass_properties(&file.mesh, 1.0).expect("integrates")
     }
 
     const TETRA_OBJ: &str =

@@ -10,8 +10,7 @@ use std::path::Path;
 use nalgebra::Point3;
 
 use super::MeshFile;
-use crate::mesh::weld_exact;
-use crate::{MeshError, PolyMesh};
+use crate::MeshError;
 
 /// Whether `bytes` are a `.msh` file: four counts, none negative, with faces, that give exactly
 /// the file's length (MuJoCo's own test).
@@ -105,14 +104,7 @@ pub fn parse_msh(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             indices.push(i);
         }
     }
-    let (welded, remap) = weld_exact(&positions);
-    let indices = indices.into_iter().map(|i| remap[i]).collect();
-    let mesh =
-        PolyMesh::from_flat(welded, indices, &vec![3; faces]).map_err(|e| MeshError::InFile {
-            path: path.to_path_buf(),
-            line: None,
-            source: Box::new(e),
-        })?;
+    let mesh = super::welded_mesh(path, &positions, indices, &vec![3; faces])?;
     Ok(MeshFile {
         mesh,
         face_lines: Vec::new(),

@@ -11,8 +11,7 @@ use std::path::Path;
 use nalgebra::Point3;
 
 use super::MeshFile;
-use crate::mesh::weld_exact;
-use crate::{MeshError, PolyMesh};
+use crate::MeshError;
 
 /// Reads an OFF file already in memory; `path` names it in messages.
 ///
@@ -143,13 +142,7 @@ pub fn parse_off(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             ),
         ));
     }
-    let (welded, remap) = weld_exact(&positions);
-    let indices = indices.into_iter().map(|i| remap[i]).collect();
-    let mesh = PolyMesh::from_flat(welded, indices, &arities).map_err(|e| MeshError::InFile {
-        path: path.to_path_buf(),
-        line: None,
-        source: Box::new(e),
-    })?;
+    let mesh = super::welded_mesh(path, &positions, indices, &arities)?;
     Ok(MeshFile {
         mesh,
         face_lines,

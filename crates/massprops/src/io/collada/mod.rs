@@ -21,8 +21,7 @@ use nalgebra::{Matrix3, Matrix4, Point3, Rotation3, Unit, Vector3};
 use roxmltree::Node;
 
 use super::MeshFile;
-use crate::mesh::weld_exact;
-use crate::{MeshError, PolyMesh};
+use crate::MeshError;
 
 /// A COLLADA file's mesh and what its `<asset>` says of its axes.
 #[derive(Debug, Clone, PartialEq)]
@@ -112,19 +111,9 @@ pub fn parse_collada_file(bytes: &[u8], path: &Path) -> Result<ColladaFile, Mesh
                 .to_owned(),
         ));
     }
-    let (welded, remap) = weld_exact(&placed.positions);
     let arities: Vec<usize> = placed.faces.iter().map(Vec::len).collect();
-    let indices = placed
-        .faces
-        .iter()
-        .flatten()
-        .map(|&i| remap[i as usize])
-        .collect();
-    let mesh = PolyMesh::from_flat(welded, indices, &arities).map_err(|e| MeshError::InFile {
-        path: path.to_path_buf(),
-        line: None,
-        source: Box::new(e),
-    })?;
+    let corners = placed.faces.iter().flatten().map(|&i| i as usize);
+    let mesh = super::welded_mesh(path, &placed.positions, corners, &arities)?;
     let warnings = if up_axis == "Z_UP" {
         Vec::new()
     } else {

@@ -4,10 +4,13 @@
 
 use std::path::Path;
 
-use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+use nalgebra::{Rotation3, Vector3};
 
+use super::super::tests::{
+    assert_close, placed_box, properties, signed_volume, two_unit_cubes_four_apart,
+};
 use super::*;
-use crate::{MassProperties, mass_properties};
+use crate::mass_properties;
 
 /// The unit cube [0, 1]³ as OBJ writes it (from 1), outward quads.
 const CUBE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\n\
@@ -85,45 +88,6 @@ fn read(text: &str) -> ColladaFile {
     parse_collada_file(text.as_bytes(), Path::new("scene.dae")).expect("reads")
 }
 
-/// A solid box of sides `sides` (density 1), turned by `rotation` and centred at `center`.
-fn placed_box(sides: [f64; 3], rotation: Matrix3<f64>, center: [f64; 3]) -> MassProperties {
-    let [a, b, c] = sides;
-    let m = a * b * c;
-    let own = Matrix3::from_diagonal(&Vector3::new(
-        m * (b * b + c * c) / 12.0,
-        m * (a * a + c * c) / 12.0,
-        m * (a * a + b * b) / 12.0,
-    ));
-    MassProperties::new(
-        m,
-        Point3::from(center),
-        rotation * own * rotation.transpose(),
-    )
-}
-
-fn assert_close(file: &MeshFile, expected: &MassProperties, what: &str) {
-    let found = mass_properties(&file.mesh, 1.0).expect(what);
-    let scale = expected.inertia_com.norm();
-    assert!(
-        (found.mass - expected.mass).abs() < 1e-12 * expected.mass
-            && (found.center_of_mass - expected.center_of_mass).norm() < 1e-12
-            && (found.inertia_com - expected.inertia_com).norm() < 1e-12 * scale,
-        "{what}: found {found:?}, expected {expected:?}"
-    );
-}
-
-/// The faces' enclosed volume, signed: positive when wound outward.
-fn signed_volume(mesh: &PolyMesh) -> f64 {
-    (0..mesh.face_count())
-        .map(|f| {
-            let p: Vec<Point3<f64>> = mesh.face_points(f).collect();
-            (1..p.len() - 1)
-                .map(|k| p[0].coords.dot(&p[k].coords.cross(&p[k + 1].coords)) / 6.0)
-                .sum::<f64>()
-        })
-        .sum()
-}
-
 /// The cube in metres, placed nowhere, is the OBJ's mesh corner for corner.
 #[test]
 fn the_cube_is_the_objs() {
@@ -173,7 +137,7 @@ fn transforms_compose_in_document_order_in_metres() {
         (matrix.as_str(), "matrix"),
     ] {
         let file = read(&dae(0.01, "Z_UP", &cube_geometry("cube", 100.0), "", scene));
-        assert_close(&file.file, &expected, what);
+        assert_close(&properties(&file.file), &expected, what);
         assert_eq!(file.file.part_names, ["brick"], "{what}");
         assert_eq!(file.metres_per_unit, 0.01);
     }
@@ -209,13 +173,9 @@ fn instances_are_parts_and_mirrors_stay_outward() {
     let file = read_y.file;
     assert_eq!(file.part_names, ["wheel", "wheel 2"]);
     assert!((signed_volume(&file.mesh) - 2.0).abs() < 1e-12);
-    let one = placed_box([1.0; 3], Matrix3::identity(), [0.0; 3]);
-    let mut pair = one.inertia_com * 2.0;
-    pair[(1, 1)] += 8.0;
-    pair[(2, 2)] += 8.0;
     assert_close(
-        &file,
-        &MassProperties::new(2.0, Point3::new(2.0, 0.0, 0.0), pair),
+        &properties(&file),
+        &two_unit_cubes_four_apart(),
         "two instances",
     );
 }

@@ -19,8 +19,7 @@ use nalgebra::{Matrix3, Matrix4, Point3, Quaternion, UnitQuaternion, Vector3};
 use serde_json::Value;
 
 use super::MeshFile;
-use crate::mesh::weld_exact;
-use crate::{MeshError, PolyMesh};
+use crate::MeshError;
 
 /// What a binary glTF file starts with.
 pub(super) const GLB_MAGIC: &[u8] = b"glTF";
@@ -94,21 +93,13 @@ pub fn parse_gltf_with(
                 .to_owned(),
         ));
     }
-    let (welded, remap) = weld_exact(&placed.positions);
-    let indices: Vec<u32> = placed
-        .triangles
-        .iter()
-        .flatten()
-        .map(|&i| remap[i as usize])
-        .collect();
-    let mesh =
-        PolyMesh::from_flat(welded, indices, &vec![3; placed.triangles.len()]).map_err(|e| {
-            MeshError::InFile {
-                path: path.to_path_buf(),
-                line: None,
-                source: Box::new(e),
-            }
-        })?;
+    let corners = placed.triangles.iter().flatten().map(|&i| i as usize);
+    let mesh = super::welded_mesh(
+        path,
+        &placed.positions,
+        corners,
+        &vec![3; placed.triangles.len()],
+    )?;
     Ok(MeshFile {
         mesh,
         face_lines: Vec::new(),

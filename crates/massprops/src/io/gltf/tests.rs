@@ -5,11 +5,14 @@
 
 use std::path::Path;
 
-use nalgebra::{Matrix3, Point3, Rotation3, Vector3};
+use nalgebra::{Matrix3, Rotation3, Vector3};
 use serde_json::{Value, json};
 
+use super::super::tests::{
+    assert_close, placed_box, properties, signed_volume, two_unit_cubes_four_apart,
+};
 use super::*;
-use crate::{MassProperties, mass_properties};
+use crate::MassProperties;
 
 /// The unit cube centred on the origin: corner `i` has coordinate `bit − ½` on each axis (x is
 /// bit 0, y bit 1, z bit 2).
@@ -211,49 +214,6 @@ fn read(bytes: &[u8]) -> MeshFile {
     parse_gltf(bytes, Path::new("scene.glb")).expect("reads")
 }
 
-fn properties(file: &MeshFile) -> MassProperties {
-    mass_properties(&file.mesh, 1.0).expect("integrates")
-}
-
-/// A solid box of sides `sides` (density 1), turned by `rotation` and centred at `center`.
-fn placed_box(sides: [f64; 3], rotation: Matrix3<f64>, center: [f64; 3]) -> MassProperties {
-    let [a, b, c] = sides;
-    let m = a * b * c;
-    let own = Matrix3::from_diagonal(&Vector3::new(
-        m * (b * b + c * c) / 12.0,
-        m * (a * a + c * c) / 12.0,
-        m * (a * a + b * b) / 12.0,
-    ));
-    MassProperties::new(
-        m,
-        Point3::from(center),
-        rotation * own * rotation.transpose(),
-    )
-}
-
-/// The volume the faces enclose, signed: positive when they are wound outward (mass properties
-/// turn an inside-out body round, so the winding is checked by this).
-fn signed_volume(mesh: &PolyMesh) -> f64 {
-    (0..mesh.face_count())
-        .map(|f| {
-            let p: Vec<Point3<f64>> = mesh.face_points(f).collect();
-            (1..p.len() - 1)
-                .map(|k| p[0].coords.dot(&p[k].coords.cross(&p[k + 1].coords)) / 6.0)
-                .sum::<f64>()
-        })
-        .sum()
-}
-
-fn assert_close(found: &MassProperties, expected: &MassProperties, what: &str) {
-    let scale = expected.inertia_com.norm();
-    assert!(
-        (found.mass - expected.mass).abs() < 1e-12 * expected.mass
-            && (found.center_of_mass - expected.center_of_mass).norm() < 1e-12
-            && (found.inertia_com - expected.inertia_com).norm() < 1e-12 * scale,
-        "{what}: found {found:?}, expected {expected:?}"
-    );
-}
-
 /// The cube under a parent that turns it 30° about z and moves it, and a child that scales it
 /// to 2 × 3 × 4: the box's closed form, turned and moved.
 fn nested_scene() -> Writer {
@@ -372,14 +332,9 @@ fn instances_are_parts() {
         file.parts().iter().map(|p| p.1.len()).collect::<Vec<_>>(),
         [12, 12]
     );
-    let one = placed_box([1.0; 3], Matrix3::identity(), [0.0; 3]);
-    // Two unit cubes 4 apart: each is 2 from the centre, adding m d² = 4 to Iyy and Izz.
-    let mut pair = one.inertia_com * 2.0;
-    pair[(1, 1)] += 8.0;
-    pair[(2, 2)] += 8.0;
     assert_close(
         &properties(&file),
-        &MassProperties::new(2.0, Point3::new(2.0, 0.0, 0.0), pair),
+        &two_unit_cubes_four_apart(),
         "two instances",
     );
 }

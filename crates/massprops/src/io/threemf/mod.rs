@@ -17,8 +17,7 @@ use roxmltree::Node;
 
 use super::MeshFile;
 use super::zip::Archive;
-use crate::mesh::weld_exact;
-use crate::{MeshError, PolyMesh};
+use crate::MeshError;
 
 /// What a 3MF package starts with: a ZIP local file header.
 pub(super) const ZIP_MAGIC: &[u8] = b"PK\x03\x04";
@@ -61,21 +60,13 @@ pub fn parse_3mf(bytes: &[u8], path: &Path) -> Result<MeshFile, MeshError> {
             "the build has no triangles, so it encloses no volume".to_owned()
         ));
     }
-    let (welded, remap) = weld_exact(&placed.positions);
-    let indices = placed
-        .triangles
-        .iter()
-        .flatten()
-        .map(|&i| remap[i as usize])
-        .collect();
-    let mesh =
-        PolyMesh::from_flat(welded, indices, &vec![3; placed.triangles.len()]).map_err(|e| {
-            MeshError::InFile {
-                path: path.to_path_buf(),
-                line: None,
-                source: Box::new(e),
-            }
-        })?;
+    let corners = placed.triangles.iter().flatten().map(|&i| i as usize);
+    let mesh = super::welded_mesh(
+        path,
+        &placed.positions,
+        corners,
+        &vec![3; placed.triangles.len()],
+    )?;
     Ok(MeshFile {
         mesh,
         face_lines: placed.face_lines,
