@@ -25,6 +25,9 @@ use crate::MeshError;
 pub(super) const GLB_MAGIC: &[u8] = b"glTF";
 const JSON_CHUNK: u32 = 0x4E4F_534A;
 const BIN_CHUNK: u32 = 0x004E_4942;
+/// How many zero values an accessor without a buffer view may have beyond its file's buffer
+/// bytes: enough for any small file's placeholder, far from a hostile count's gigabytes.
+const ZEROS_SLACK: usize = 1 << 16;
 
 /// Extensions a file may require that change nothing of its geometry (materials, textures,
 /// lights), or whose geometry this reader reads (quantization). Any other required extension is
@@ -445,16 +448,24 @@ impl<'a> Document<'a> {
             index(accessor, "count", &what)?.ok_or_else(|| format!("{what} has no \"count\""))?;
         let element = width * component.size;
         let mut values = match index(accessor, "bufferView", &what)? {
-            // No view: zeros, which a sparse part may replace (the specification's rule).
-            None => vec![
-                0.0;
-                count
+            // No view: zeros, which a sparse part may replace (the specification's rule). A
+            // count is only a number in the JSON, so zeros are capped by what the file's
+            // buffers could index (plus a little for small files) lest a few bytes ask for
+            // gigabytes.
+            None => {
+                let cap = self.buffers.iter().map(|b| b.len()).sum::<usize>() + ZEROS_SLACK;
+                let n = count
                     .checked_mul(width)
-                    .filter(|&n| n <= 1 << 28)
-                    .ok_or_else(|| format!(
-                        "{what}: {count} elements of zeros is more than a file can mean"
-                    ),)?
-            ],
+                    .filter(|&n| n <= cap)
+                    .ok_or_else(|| {
+                        format!(
+                            "{what}: {count} elements of zeros is more than a file whose buffers \
+                             hold {} bytes can mean",
+                            cap - ZEROS_SLACK
+                        )
+                    })?;
+                vec![0.0; n]
+            }
             Some(v) => {
                 let offset = index(accessor, "byteOffset", &what)?.unwrap_or(0);
                 let (data, stride) = self.view(v, offset, element)?;

@@ -558,6 +558,15 @@ fn bad_files_are_refused_by_name() {
             "node 1: \"rotation\" must be 4 finite numbers, not [0,0,0]",
         ),
         (
+            // A count without a view asks for zeros; a few bytes must not ask for gigabytes.
+            with(
+                "/accessors/0",
+                json!({"componentType": 5126, "count": 100_000_000, "type": "VEC3"}),
+            ),
+            "accessor 0: 100000000 elements of zeros is more than a file whose buffers hold \
+             168 bytes can mean",
+        ),
+        (
             with("/meshes/0/primitives/0/attributes/POSITION", json!(7)),
             "accessor 7 does not exist (the file has 2)",
         ),
