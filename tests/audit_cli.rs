@@ -243,6 +243,90 @@ fn the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values() {
     }
 }
 
+/// The findings that prove a stated inertial impossible (what the nearest fix must remove).
+const IMPOSSIBLE: [&str; 4] = [
+    "impossible_moment",
+    "triangle_inequality",
+    "not_positive_definite",
+    "com_outside_geometry",
+];
+
+/// `--fix-mode nearest` on the Panda: every link proved impossible gets the valid inertial
+/// nearest to its stated one (stated mass kept), which the audit of the fixed file then finds
+/// nothing impossible in, and which yourdfpy and MuJoCo read back as written.
+#[test]
+fn the_nearest_fix_lands_inside_and_loads_as_written() {
+    let test = "the_nearest_fix_lands_inside_and_loads_as_written";
+    let dir = panda_copy("panda_nearest");
+    let original = dir.join("panda.urdf");
+    let fixed = dir.join("panda_nearest.urdf");
+    let report = audit_json(&[
+        original.to_str().expect("present"),
+        "--fix",
+        "--fix-mode",
+        "nearest",
+        "-o",
+        fixed.to_str().expect("present"),
+    ]);
+    let impossible: Vec<&Value> = report["links"]
+        .as_array()
+        .expect("present")
+        .iter()
+        .filter(|l| IMPOSSIBLE.iter().any(|c| finding(l, c).is_some()))
+        .collect();
+    assert!(impossible.len() >= 5, "{}", impossible.len());
+    let changed: Vec<&str> = report["fixed"]["links"]
+        .as_array()
+        .expect("present")
+        .iter()
+        .map(|v| v.as_str().expect("present"))
+        .collect();
+    for l in &impossible {
+        let name = l["name"].as_str().expect("a name");
+        assert!(changed.contains(&name), "{name} not fixed: {changed:?}");
+        let n = &l["nearest"];
+        assert_eq!(n["mass"], l["stated"]["mass"], "{name}");
+        assert!(n["moved"].as_f64().expect("moved") > 0.0, "{name}");
+        assert!(!n["held_by"].as_array().expect("held_by").is_empty(), "{name}");
+    }
+
+    let before = std::fs::read_to_string(&original).expect("present");
+    let after = std::fs::read_to_string(&fixed).expect("present");
+    assert_eq!(
+        without_inertials(&before),
+        // The comment's head as the geometry fix writes it, which without_inertials knows.
+        without_inertials(&after.replace("fixed (nearest):", "fixed:")),
+        "only inertials change"
+    );
+    let again = audit_json(&[fixed.to_str().expect("present")]);
+    for name in &changed {
+        let l = link(&again, name);
+        for code in IMPOSSIBLE {
+            assert!(finding(l, code).is_none(), "{name}: still {code}");
+        }
+        let n = &link(&report, name)["nearest"];
+        assert!(relative(&l["stated"]["inertia"], &n["inertia"]) < 1e-15, "{name}");
+        assert!(relative(&l["stated"]["center_of_mass"], &n["center_of_mass"]) < 1e-15, "{name}");
+    }
+    if python_has(test, "yourdfpy", "0.0.60") {
+        let read = bodies("yourdfpy", &fixed);
+        for name in &changed {
+            let (b, n) = (&read["bodies"][name], &link(&report, name)["nearest"]);
+            assert_eq!(b["mass"], n["mass"], "{name}");
+            assert!(relative(&b["tensor"], &n["inertia"]) < 1e-15, "{name}");
+        }
+    }
+    if python_has(test, "mujoco", "4.0.0") {
+        let read = bodies("mujoco", &fixed);
+        for name in &changed {
+            let (b, n) = (&read["bodies"][name], &link(&report, name)["nearest"]);
+            assert!(relative(&b["mass"], &n["mass"]) < 1e-12, "{name}");
+            assert!(relative(&b["com"], &n["center_of_mass"]) < 1e-9, "{name}");
+            assert!(relative(&b["tensor"], &n["inertia"]) < 1e-9, "{name}");
+        }
+    }
+}
+
 /// Bodies whose inertia MuJoCo infers from primitive geoms, one fixed from a placeholder, and
 /// one with a rotated, offset inertial.
 const MJCF: &str = r#"<mujoco model="shapes">

@@ -17,7 +17,7 @@
 
 use std::collections::HashMap;
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Matrix3, Point3, Vector3};
 use rayon::prelude::*;
 
 use massprops::composite::{PartMass, combine};
@@ -27,6 +27,7 @@ use massprops::{MassProperties, MeshError, Repairs};
 use crate::findings::{Finding, ImpossibleAxis, PlaceholderReason, Region, UnitSlip};
 use crate::geometry::{self, Extent, Meshes, Problem, Ready};
 use crate::model::{DescriptionFormat, GeometryKind, GeometryMass, Link, Robot, Shape};
+use crate::nearest::{self, Nearest, NearestError};
 
 /// Relative slack for round-off in the laws and the bounds.
 const SLACK: f64 = 1e-9;
@@ -54,6 +55,8 @@ pub struct AuditOptions {
     pub max_com_offset: Option<f64>,
     /// How each mesh's defects are handled (as `props`).
     pub repairs: Repairs,
+    /// Also find each stated inertial's nearest valid one ([`crate::nearest`]).
+    pub nearest: bool,
 }
 
 impl Default for AuditOptions {
@@ -65,6 +68,7 @@ impl Default for AuditOptions {
             max_moment_error: None,
             max_com_offset: None,
             repairs: Repairs::default(),
+            nearest: false,
         }
     }
 }
@@ -138,6 +142,9 @@ pub struct LinkAudit {
     pub comparison: Option<InertialComparison>,
     /// What is wrong, worst first.
     pub findings: Vec<Finding>,
+    /// The valid inertial nearest to the stated one, when asked for and there is one stated
+    /// and geometry to hold it.
+    pub nearest: Option<Result<Nearest, NearestError>>,
 }
 
 impl LinkAudit {
@@ -370,6 +377,12 @@ fn audit_link(
             findings.push(Finding::Placeholder { reasons });
         }
     }
+    let nearest = match (&stated, &region) {
+        (Some(s), Some((_, extents))) if options.nearest => {
+            Some(nearest_inertial(s, extents, computed.as_ref().ok()))
+        }
+        _ => None,
+    };
     LinkAudit {
         link: i,
         stated,
@@ -377,6 +390,7 @@ fn audit_link(
         size,
         comparison,
         findings,
+        nearest,
     }
 }
 
@@ -433,9 +447,19 @@ fn bounds(
             axes,
         });
     }
-    let size = box_diagonal(extents);
-    let c = s.center_of_mass.coords;
-    let outside = directions()
+    let outside = outside_hull(extents, &s.center_of_mass);
+    if outside > SLACK * box_diagonal(extents) {
+        findings.push(Finding::ComOutsideGeometry {
+            region,
+            center_of_mass: s.center_of_mass,
+            distance: outside,
+        });
+    }
+}
+
+/// How far `point` lies outside the 26-sided polytope about the geometry (negative inside).
+fn outside_hull(extents: &[&Extent<'_>], point: &Point3<f64>) -> f64 {
+    directions()
         .iter()
         .map(|d| {
             let hi = extents
@@ -446,17 +470,41 @@ fn bounds(
                 .iter()
                 .map(|e| e.support(&-d))
                 .fold(f64::NEG_INFINITY, f64::max);
-            let t = d.dot(&c);
+            let t = d.dot(&point.coords);
             (t - hi).max(lo - t)
         })
-        .fold(f64::NEG_INFINITY, f64::max);
-    if outside > SLACK * size {
-        findings.push(Finding::ComOutsideGeometry {
-            region,
-            center_of_mass: s.center_of_mass,
-            distance: outside,
-        });
-    }
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// The stated inertial's nearest valid one within the link's geometry (all of it: the region
+/// the proofs use), centred at the computed centre where the stated one is outside.
+fn nearest_inertial(
+    stated: &MassProperties,
+    extents: &[&Extent<'_>],
+    computed: Option<&Computed>,
+) -> Result<Nearest, NearestError> {
+    let hull: Vec<Point3<f64>> = extents.iter().flat_map(|e| e.hull_points()).collect();
+    let center = computed.map_or_else(
+        || Point3::from(hull.iter().map(|p| p.coords).sum::<Vector3<f64>>() / hull.len().max(1) as f64),
+        |c| c.properties.center_of_mass,
+    );
+    let size = box_diagonal(extents);
+    let farthest = |c: &Point3<f64>, u: &Vector3<f64>| {
+        extents
+            .iter()
+            .map(|e| e.farthest_from_line(c, u))
+            .fold(0.0, f64::max)
+    };
+    let contains = |c: &Point3<f64>| outside_hull(extents, c) <= SLACK * size;
+    nearest::nearest(
+        stated,
+        &nearest::Region {
+            hull: &hull,
+            farthest_from_line: &farthest,
+            contains: &contains,
+            center,
+        },
+    )
 }
 
 /// The 13 unit directions of a 26-sided discrete oriented polytope: the axes, the face

@@ -177,6 +177,18 @@ impl Extent<'_> {
         }
     }
 
+    /// Points (link frame) whose convex hull contains the region.
+    pub fn hull_points(&self) -> Vec<Point3<f64>> {
+        match self {
+            Extent::Primitive { shape, pose } => primitives::hull_points(shape)
+                .unwrap_or_default()
+                .iter()
+                .map(|p| pose * p)
+                .collect(),
+            Extent::Points { points, pose } => points.iter().map(|p| pose * p).collect(),
+        }
+    }
+
     /// An upper bound (exact for points, boxes, spheres, capsules) of the distance of the
     /// region's farthest point from the line through `point` along unit `direction`.
     pub fn farthest_from_line(&self, point: &Point3<f64>, direction: &Vector3<f64>) -> f64 {

@@ -32,6 +32,7 @@ pub mod fix;
 pub mod geometry;
 mod mjcf;
 mod model;
+pub mod nearest;
 pub mod primitives;
 mod urdf;
 mod xml;
@@ -48,7 +49,7 @@ pub use model::{
     DescriptionFormat, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span,
     Unsupported,
 };
-pub use xml::{Leniency, SourceFile};
+pub use xml::{Leniency, SourceFile, unexpanded_substitution};
 
 /// How to find what a description refers to.
 #[derive(Debug, Clone, Default)]

@@ -10,7 +10,8 @@
 //!
 //! Also what the impossibility bound and the hull test need of a primitive, exactly or as an
 //! upper bound that keeps them proofs: its support function h(n) = max over the solid of n·x,
-//! and the farthest its points lie from a line.
+//! and the farthest its points lie from a line; and, for a bounding ellipsoid, points whose
+//! convex hull contains it.
 
 use std::f64::consts::PI;
 
@@ -136,9 +137,127 @@ pub fn farthest_from_line(
     })
 }
 
+/// Points whose convex hull contains the primitive (its own frame); `None` for a mesh or an
+/// unsupported shape. A box gives its corners. A round shape gives points on a larger sphere or
+/// circle: a hull of points on a sphere of radius R whose every direction lies within angle ρ of
+/// one of them contains the ball of radius R·cos ρ (each face of the hull cuts from the sphere
+/// a cap with no point inside, whose angular radius is therefore at most ρ), and a regular
+/// n-gon of circumradius r / cos(π/n) contains its inscribed circle of radius r.
+pub fn hull_points(shape: &Shape) -> Option<Vec<Point3<f64>>> {
+    Some(match *shape {
+        Shape::Box { half_extents: h } => (0..8)
+            .map(|k| {
+                let sign = |bit: usize| if k >> bit & 1 == 0 { -1.0 } else { 1.0 };
+                Point3::new(sign(0) * h.x, sign(1) * h.y, sign(2) * h.z)
+            })
+            .collect(),
+        Shape::Sphere { radius } => covering_sphere().map(|d| Point3::from(d * radius)).collect(),
+        Shape::Ellipsoid { radii } => covering_sphere()
+            .map(|d| Point3::from(d.component_mul(&radii)))
+            .collect(),
+        Shape::Capsule {
+            radius,
+            half_length,
+        } => covering_sphere()
+            .flat_map(|d| {
+                let p = d * radius;
+                [-1.0, 1.0].map(|s| Point3::new(p.x, p.y, p.z + s * half_length))
+            })
+            .collect(),
+        Shape::Cylinder {
+            radius,
+            half_length,
+        } => {
+            let r = radius / (PI / f64::from(RING)).cos();
+            (0..RING)
+                .flat_map(|k| {
+                    let a = 2.0 * PI * f64::from(k) / f64::from(RING);
+                    [-1.0, 1.0].map(|s| Point3::new(r * a.cos(), r * a.sin(), s * half_length))
+                })
+                .collect()
+        }
+        Shape::Mesh { .. } | Shape::MissingMesh { .. } | Shape::Unsupported { .. } => return None,
+    })
+}
+
+/// Corners of the polygon around a cylinder's circle.
+const RING: u32 = 64;
+/// Latitude bands of the points around a sphere (longitudes: twice as many).
+const BANDS: u32 = 24;
+
+/// Points on a sphere whose hull contains the unit ball: a latitude-longitude grid of step
+/// δ = π/BANDS, where any direction lies within δ/2 of a grid latitude and then within δ/2
+/// along it of a grid longitude, so within δ of a point; the grid's radius is 1 / cos δ.
+fn covering_sphere() -> impl Iterator<Item = Vector3<f64>> {
+    let step = PI / f64::from(BANDS);
+    let radius = 1.0 / step.cos();
+    (0..=BANDS).flat_map(move |i| {
+        let latitude = -PI / 2.0 + step * f64::from(i);
+        let longitudes = if i == 0 || i == BANDS { 1 } else { 2 * BANDS };
+        (0..longitudes).map(move |j| {
+            let longitude = step * f64::from(j);
+            radius
+                * Vector3::new(
+                    latitude.cos() * longitude.cos(),
+                    latitude.cos() * longitude.sin(),
+                    latitude.sin(),
+                )
+        })
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The hull of a primitive's points contains it (their support function is at least the
+    /// shape's in every direction, tried on a dense spiral of directions) and is within 1 % of
+    /// it. Points on the shape itself (radius factor 1) fall short between the grid's points.
+    #[test]
+    fn hull_points_contain_the_shape() {
+        let shapes = [
+            Shape::Box {
+                half_extents: Vector3::new(0.1, 0.2, 0.3),
+            },
+            Shape::Sphere { radius: 0.3 },
+            Shape::Ellipsoid {
+                radii: Vector3::new(0.1, 0.2, 0.4),
+            },
+            Shape::Cylinder {
+                radius: 0.05,
+                half_length: 0.2,
+            },
+            Shape::Capsule {
+                radius: 0.05,
+                half_length: 0.2,
+            },
+        ];
+        // A Fibonacci spiral: 20 000 directions spread evenly over the sphere.
+        let n = 20_000;
+        let golden = PI * (3.0 - 5f64.sqrt());
+        let directions: Vec<Vector3<f64>> = (0..n)
+            .map(|k| {
+                let z = 1.0 - 2.0 * (f64::from(k) + 0.5) / f64::from(n);
+                let r = (1.0 - z * z).sqrt();
+                let a = golden * f64::from(k);
+                Vector3::new(r * a.cos(), r * a.sin(), z)
+            })
+            .collect();
+        for shape in &shapes {
+            let points = hull_points(shape).expect("a primitive");
+            let mut worst: f64 = 0.0;
+            for d in &directions {
+                let hull = points
+                    .iter()
+                    .map(|p| d.dot(&p.coords))
+                    .fold(f64::NEG_INFINITY, f64::max);
+                let exact = support(shape, d).expect("a primitive");
+                assert!(hull >= exact * (1.0 - 1e-12), "{shape:?} along {d:?}");
+                worst = worst.max(hull / exact);
+            }
+            assert!(worst < 1.01, "{shape:?}: {worst}");
+        }
+    }
 
     /// A box's tensor by the general formula of a mesh: the closed forms agree with massprops'
     /// exact integrals of a tessellation where one is exact (the box), and the curved ones with

@@ -221,10 +221,13 @@ impl Element {
         {
             return Some((self, format!("the xacro element <xacro:{}>", self.name)));
         }
+        // A mesh's file name is only a name: a substitution left in it makes that one mesh
+        // missing (named in its finding), not the whole description unreadable.
+        let file_name = |k: &str| self.name == "mesh" && (k == "filename" || k == "file");
         if let Some((k, v)) = self
             .attributes
             .iter()
-            .find(|(_, v)| v.contains("${") || v.contains("$("))
+            .find(|(k, v)| unexpanded_substitution(v).is_some() && !file_name(k))
         {
             return Some((self, format!("the substitution {k}=\"{v}\"")));
         }
@@ -312,3 +315,14 @@ fn numbers(text: &str) -> Result<Vec<f64>, String> {
         })
         .collect()
 }
+
+/// The first substitution of xacro's (`${…}` or `$(…)`) left in `text`, if any.
+pub fn unexpanded_substitution(text: &str) -> Option<&str> {
+    let start = text.find("${").or_else(|| text.find("$("))?;
+    let close = if text[start + 1..].starts_with('{') { '}' } else { ')' };
+    let end = text[start..]
+        .find(close)
+        .map_or(text.len(), |e| start + e + 1);
+    Some(&text[start..end])
+}
+

@@ -326,16 +326,40 @@ fn xacro_markup_in_comments_is_not_xacro_but_a_substitution_is() {
     let commented = r#"<robot name="c"><!-- <xacro:arm prefix="${p}"/> -->
   <link name="a"><visual><geometry><box size="1 1 1"/></geometry></visual></link></robot>"#;
     assert!(read_str(commented, Path::new("c.urdf"), &ReadOptions::default()).is_ok());
-    // As Husky's: a roslaunch substitution in an attribute, on line 2.
-    let husky = "<robot name=\"h\">\n<link name=\"a\"><visual><geometry>\
-        <mesh filename=\"$(optenv HUSKY_MESH base.stl)\"/></geometry></visual></link></robot>";
+    // As Husky's: a roslaunch substitution in an attribute, on line 2, refuses the file.
+    let husky = "<robot name=\"h\">\n<link name=\"a\"><visual><origin \
+        rpy=\"$(optenv HUSKY_IMU_RPY 0 -1.5708 3.1416)\"/><geometry><box size=\"1 1 1\"/>\
+        </geometry></visual></link></robot>";
     let text = read_str(husky, Path::new("h.urdf"), &ReadOptions::default())
         .expect_err("refused")
         .to_string();
     assert!(
-        text.starts_with("h.urdf:2:") && text.contains("substitution filename"),
+        text.starts_with("h.urdf:2:") && text.contains("substitution rpy"),
         "{text}"
     );
+    // In a mesh's file name it makes that mesh missing, named, and the rest is audited.
+    let leftover = r#"<robot name="l">
+  <link name="leg"><collision><geometry>
+    <mesh filename="package://l/meshes/${direction}_leg.stl"/></geometry></collision></link>
+  <link name="body"><collision><geometry><box size="1 1 1"/></geometry></collision></link>
+</robot>"#;
+    let robot = read_str(leftover, Path::new("l.urdf"), &ReadOptions::default()).expect("read");
+    let report = audit(&robot, &AuditOptions::default());
+    let missing = report.links[0]
+        .findings
+        .iter()
+        .find_map(|f| match f {
+            Finding::MeshMissing { written, .. } => Some(written.clone()),
+            _ => None,
+        })
+        .expect("mesh_missing");
+    assert_eq!(
+        robot::unexpanded_substitution(&missing),
+        Some("${direction}")
+    );
+    assert!(report.links[1].computed.is_ok());
+    assert_eq!(robot::unexpanded_substitution("a$(find x)/b"), Some("$(find x)"));
+    assert_eq!(robot::unexpanded_substitution("plain.stl"), None);
 }
 
 #[test]

@@ -7,10 +7,12 @@ use std::time::Instant;
 
 use clap::{Args, ValueEnum};
 use inertia_io::export;
-use inertia_io::report::audit::{basis_text, json_report, table};
+use inertia_io::report::audit::{basis_text, held_text, json_report, table};
 use inertia_io::report::findings::unweighed_text;
 use inertia_io::wording::significant;
+use massprops::MassProperties;
 use robot::fix::{Replacement, splice};
+use robot::nearest::Nearest;
 use robot::{
     Audit, AuditOptions, DescriptionFormat, GeometryKind, LinkAudit, ReadOptions, Robot, audit,
 };
@@ -26,6 +28,16 @@ pub enum GeometryArg {
     Collision,
     /// URDF `<visual>`; MJCF geoms with contype and conaffinity 0.
     Visual,
+}
+
+/// What `--fix` writes for a chosen link.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FixMode {
+    /// The exact mass properties of the link's geometry at the stated mass.
+    Geometry,
+    /// The valid inertial nearest to the stated one: its mass, its centre where that lies
+    /// inside the geometry, the tensor changed least (Frobenius norm).
+    Nearest,
 }
 
 /// Arguments of `audit`.
@@ -64,6 +76,9 @@ pub struct AuditArgs {
     /// a comma-separated list of names.
     #[arg(long, default_value = "flagged", value_name = "flagged|all|NAME,…")]
     pub fix_links: String,
+    /// What --fix writes: the geometry's inertial, or the valid one nearest to the stated one.
+    #[arg(long, value_enum, default_value_t = FixMode::Geometry)]
+    pub fix_mode: FixMode,
     /// Where --fix writes the fixed description.
     #[arg(short = 'o', long, value_name = "FIXED")]
     pub output: Option<PathBuf>,
@@ -93,6 +108,7 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
             .map(|t| positive("--max-com-offset", t))
             .transpose()?,
         repairs: args.repair.repairs(1.0)?,
+        nearest: args.fix_mode == FixMode::Nearest,
     };
     let read_options = ReadOptions {
         packages: args
@@ -133,7 +149,7 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
             .output
             .as_ref()
             .ok_or_else(|| CliError::Usage("--fix needs -o FIXED".to_owned()))?;
-        Some(write_fix(&robot, &report, &args.fix_links, out)?)
+        Some(write_fix(&robot, &report, &args.fix_links, args.fix_mode, out)?)
     } else {
         None
     };
@@ -169,6 +185,7 @@ fn write_fix(
     robot: &Robot,
     report: &Audit,
     which: &str,
+    mode: FixMode,
     out: &Path,
 ) -> Result<(PathBuf, Vec<String>), CliError> {
     let names: Vec<&str> = match which {
@@ -229,9 +246,51 @@ fn write_fix(
             );
             continue;
         }
-        let element = export::inertial_element(&c.properties, format)
+        let (properties, comment) = match (mode, &l.nearest) {
+            (FixMode::Geometry, _) => (&c.properties, fix_comment(robot, l, c, report.options.geometry)),
+            (FixMode::Nearest, Some(Ok(n))) if n.held_by.is_empty() => {
+                eprintln!(
+                    "warning: link {name:?} is left as stated: its inertial is valid already \
+                     (the nearest valid one is itself)"
+                );
+                continue;
+            }
+            (FixMode::Nearest, Some(Ok(n))) => {
+                let from_geometry = relative_distance(&n.properties, &c.properties);
+                let uncertainty = report.options.max_moment_error.unwrap_or(NEAREST_UNCERTAINTY);
+                if from_geometry > uncertainty {
+                    eprintln!(
+                        "warning: link {name:?}: the nearest valid inertial is {:.0} % from the \
+                         geometry's (Frobenius), more than the {:.0} % allowed{}",
+                        from_geometry * 100.0,
+                        uncertainty * 100.0,
+                        if report.options.max_moment_error.is_none() {
+                            " by default (--max-moment-error sets it); the stated values may be \
+                             far from the link's, --fix-mode geometry writes the geometry's"
+                        } else {
+                            ""
+                        }
+                    );
+                }
+                (&n.properties, nearest_comment(l, n, report.options.geometry))
+            }
+            (FixMode::Nearest, Some(Err(why))) => {
+                eprintln!(
+                    "warning: link {name:?} is not fixed: there is no nearest valid inertial: \
+                     {why} (--fix-mode geometry writes the geometry's)"
+                );
+                continue;
+            }
+            (FixMode::Nearest, None) => {
+                eprintln!(
+                    "warning: link {name:?} is not fixed: it states no inertial to be near to \
+                     (--fix-mode geometry writes the geometry's)"
+                );
+                continue;
+            }
+        };
+        let element = export::inertial_element(properties, format)
             .map_err(|e| CliError::Input(format!("link {name:?}: {e}")))?;
-        let comment = fix_comment(robot, l, c, report.options.geometry);
         replacements.push(Replacement {
             link: l.link,
             text: format!("{comment}\n{element}"),
@@ -248,6 +307,45 @@ fn write_fix(
     std::fs::write(out, text)
         .map_err(|e| CliError::Runtime(format!("cannot write {}: {e}", out.display())))?;
     Ok((out.to_owned(), changed))
+}
+
+/// How far apart two tensors are: ‖I_a − I_b‖_F / ‖I_b‖_F.
+fn relative_distance(a: &MassProperties, b: &MassProperties) -> f64 {
+    (a.inertia_com - b.inertia_com).norm() / b.inertia_com.norm()
+}
+
+/// How far the nearest valid inertial may be from the geometry's before a warning, when
+/// --max-moment-error does not say.
+const NEAREST_UNCERTAINTY: f64 = 0.5;
+
+/// The comment above a nearest-fixed inertial: what was kept, how far the tensor moved, and
+/// what holds it there.
+fn nearest_comment(l: &LinkAudit, n: &Nearest, geometry: GeometryKind) -> String {
+    let held: Vec<String> = n.held_by.iter().map(held_text).collect();
+    let center = if n.center_kept {
+        "centre kept"
+    } else {
+        "centre moved to the geometry's (the stated one is outside it)"
+    };
+    let was = l.stated.as_ref().map_or(String::new(), |s| {
+        format!(
+            " Before, moments {} {} {} kg*m^2.",
+            significant(s.principal.moments.x, 6),
+            significant(s.principal.moments.y, 6),
+            significant(s.principal.moments.z, 6)
+        )
+    });
+    let text = format!(
+        "inertia-lab audit, fixed (nearest): the valid inertial nearest to the stated one within \
+         the link's geometry ({} and the rest): mass kept, {center}, tensor moved by {} kg*m^2 \
+         ({:.1} % of it, Frobenius norm), held by {}. SI units, about the centre of mass, link \
+         axes, off-diagonals -sum(m*x*y).{was}",
+        geometry.name(),
+        significant(n.moved, 4),
+        n.moved_fraction * 100.0,
+        held.join(" and ")
+    );
+    format!("<!-- {} -->", text.replace("--", "- -"))
 }
 
 /// The comment above a fixed inertial: where its numbers came from, and what was there.

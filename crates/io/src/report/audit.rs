@@ -4,12 +4,14 @@
 use std::fmt::Write as _;
 
 use massprops::MassProperties;
+use robot::nearest::{Held, Nearest, NearestError};
 use robot::{Audit, LinkAudit, MassBasis, Robot};
 use serde_json::{Value, json};
 
 use super::findings::{finding_text, unweighed_text};
 use super::json::{point, rows, vector};
-use super::{significant, warning_text};
+use super::warning_text;
+use crate::wording::significant;
 use crate::conventions::{self, TENSOR};
 
 /// Version of the `audit --json` schema; bumped on any incompatible change.
@@ -136,6 +138,9 @@ pub fn table(file: &str, robot: &Robot, report: &Audit) -> String {
         } else if let Err(why) = &l.computed {
             let _ = writeln!(s, "    not weighed: {}", unweighed_text(why, kind));
         }
+        if let Some(n) = &l.nearest {
+            let _ = writeln!(s, "{}", nearest_text(n));
+        }
         for f in &l.findings {
             let _ = writeln!(
                 s,
@@ -166,6 +171,79 @@ pub fn table(file: &str, robot: &Robot, report: &Audit) -> String {
         }
     }
     s
+}
+
+/// A constraint that holds a nearest inertial, in words.
+pub fn held_text(held: &Held) -> String {
+    match held {
+        Held::TriangleInequality => {
+            "the triangle inequality (one moment is the sum of the other two)".to_owned()
+        }
+        Held::Ellipsoid => "the geometry's bounding ellipsoid".to_owned(),
+        Held::AxisBound { axis, radius } => format!(
+            "m*r^2 about axis ({}, {}, {}) with r = {} m",
+            significant(axis.x, 3),
+            significant(axis.y, 3),
+            significant(axis.z, 3),
+            significant(*radius, 4)
+        ),
+    }
+}
+
+/// A link's nearest valid inertial in words (two lines), or why it has none.
+fn nearest_text(nearest: &Result<Nearest, NearestError>) -> String {
+    match nearest {
+        Ok(n) if n.held_by.is_empty() => {
+            "    nearest valid: the stated inertial itself (it is valid)".to_owned()
+        }
+        Ok(n) => {
+            let m = n.properties.principal.moments;
+            let held: Vec<String> = n.held_by.iter().map(held_text).collect();
+            format!(
+                "    nearest valid principal moments {} {} {} kg*m^2 ({}), moved {} kg*m^2 \
+                 ({:.1} % of the stated tensor)\n    held there by {}",
+                num(m.x),
+                num(m.y),
+                num(m.z),
+                if n.center_kept {
+                    "stated mass and centre"
+                } else {
+                    "stated mass, the geometry's centre"
+                },
+                num(n.moved),
+                n.moved_fraction * 100.0,
+                held.join(" and ")
+            )
+        }
+        Err(why) => format!("    no nearest valid inertial: {why}"),
+    }
+}
+
+fn nearest_json(nearest: &Result<Nearest, NearestError>) -> Value {
+    match nearest {
+        Ok(n) => {
+            let mut v = properties_json(&n.properties);
+            v["center_kept"] = json!(n.center_kept);
+            v["moved"] = json!(n.moved);
+            v["moved_fraction"] = json!(n.moved_fraction);
+            v["held_by"] = n
+                .held_by
+                .iter()
+                .map(|h| match h {
+                    Held::AxisBound { axis, radius } => json!({
+                        "constraint": h.code(), "axis": vector(axis), "radius": radius,
+                    }),
+                    _ => json!({"constraint": h.code()}),
+                })
+                .collect();
+            v["ellipsoid"] = json!({
+                "center": point(&n.ellipsoid.center),
+                "shape": rows(&n.ellipsoid.shape),
+            });
+            v
+        }
+        Err(why) => json!({"error": why.to_string()}),
+    }
 }
 
 fn properties_json(p: &MassProperties) -> Value {
@@ -237,6 +315,7 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
         } => json!({"fraction": fraction, "threshold": threshold}),
         F::MeshMissing { written, tried } => json!({
             "written": written,
+            "unexpanded_substitution": robot::unexpanded_substitution(written),
             "tried": tried.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
         }),
         F::MeshUnreadable { file, .. } => json!({"file": file.display().to_string()}),
@@ -290,6 +369,7 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
                     "principal_axis_angle_deg": c.axis_angles.map(|a| a.map(f64::to_degrees)),
                 })),
                 "findings": l.findings.iter().map(|f| finding_json(f, kind)).collect::<Vec<_>>(),
+                "nearest": l.nearest.as_ref().map(nearest_json),
             })
         })
         .collect();

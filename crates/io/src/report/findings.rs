@@ -184,12 +184,16 @@ pub fn finding_text(
             threshold * 100.0
         ),
         Finding::MeshMissing { written, tried } => format!(
-            "mesh {written} not found; tried {}",
+            "mesh {written} not found; tried {}{}",
             tried
                 .iter()
                 .map(|p| p.display().to_string())
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join(", "),
+            robot::unexpanded_substitution(written).map_or(String::new(), |s| format!(
+                ". Its name holds xacro's substitution {s}, left unexpanded: run xacro on the \
+                 description's source, or write the file's name"
+            ))
         ),
         Finding::MeshUnreadable { file, error } => {
             format!("mesh {} cannot be weighed: {error}", file.display())
