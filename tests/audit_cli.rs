@@ -287,7 +287,10 @@ fn the_nearest_fix_lands_inside_and_loads_as_written() {
         let n = &l["nearest"];
         assert_eq!(n["mass"], l["stated"]["mass"], "{name}");
         assert!(n["moved"].as_f64().expect("moved") > 0.0, "{name}");
-        assert!(!n["held_by"].as_array().expect("held_by").is_empty(), "{name}");
+        assert!(
+            !n["held_by"].as_array().expect("held_by").is_empty(),
+            "{name}"
+        );
     }
 
     let before = std::fs::read_to_string(&original).expect("present");
@@ -305,8 +308,14 @@ fn the_nearest_fix_lands_inside_and_loads_as_written() {
             assert!(finding(l, code).is_none(), "{name}: still {code}");
         }
         let n = &link(&report, name)["nearest"];
-        assert!(relative(&l["stated"]["inertia"], &n["inertia"]) < 1e-15, "{name}");
-        assert!(relative(&l["stated"]["center_of_mass"], &n["center_of_mass"]) < 1e-15, "{name}");
+        assert!(
+            relative(&l["stated"]["inertia"], &n["inertia"]) < 1e-15,
+            "{name}"
+        );
+        assert!(
+            relative(&l["stated"]["center_of_mass"], &n["center_of_mass"]) < 1e-15,
+            "{name}"
+        );
     }
     if python_has(test, "yourdfpy", "0.0.60") {
         let read = bodies("yourdfpy", &fixed);

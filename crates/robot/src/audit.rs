@@ -485,7 +485,11 @@ fn nearest_inertial(
 ) -> Result<Nearest, NearestError> {
     let hull: Vec<Point3<f64>> = extents.iter().flat_map(|e| e.hull_points()).collect();
     let center = computed.map_or_else(
-        || Point3::from(hull.iter().map(|p| p.coords).sum::<Vector3<f64>>() / hull.len().max(1) as f64),
+        || {
+            Point3::from(
+                hull.iter().map(|p| p.coords).sum::<Vector3<f64>>() / hull.len().max(1) as f64,
+            )
+        },
         |c| c.properties.center_of_mass,
     );
     let size = box_diagonal(extents);

@@ -34,9 +34,7 @@
 use nalgebra::{Matrix3, Point3, SymmetricEigen, Vector3};
 
 use clarabel::algebra::CscMatrix;
-use clarabel::solver::{
-    DefaultSettings, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus,
-};
+use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 
 use massprops::MassProperties;
 
@@ -84,8 +82,9 @@ pub fn bounding_ellipsoid(points: &[Point3<f64>]) -> Option<Ellipsoid> {
     let mut subset: Vec<usize> = Vec::new();
     for d in directions() {
         for sign in [-1.0, 1.0] {
-            let best = (0..points.len())
-                .max_by(|&a, &b| (sign * d.dot(&points[a].coords)).total_cmp(&(sign * d.dot(&points[b].coords))))?;
+            let best = (0..points.len()).max_by(|&a, &b| {
+                (sign * d.dot(&points[a].coords)).total_cmp(&(sign * d.dot(&points[b].coords)))
+            })?;
             subset.push(best);
         }
     }
@@ -164,12 +163,12 @@ fn khachiyan(points: &[Point3<f64>]) -> Option<Ellipsoid> {
     }
     spread -= center * center.transpose();
     let shape = (spread * d).try_inverse()?;
-    (shape.symmetric_eigenvalues().min() > 0.0 && shape.iter().all(|v| v.is_finite())).then(
-        || Ellipsoid {
+    (shape.symmetric_eigenvalues().min() > 0.0 && shape.iter().all(|v| v.is_finite())).then(|| {
+        Ellipsoid {
             center: Point3::from(center),
             shape,
-        },
-    )
+        }
+    })
 }
 
 /// The 13 directions of a 26-sided polytope (the cube's axes, face and body diagonals).
@@ -246,7 +245,9 @@ pub enum NearestError {
     #[error("its stated centre or tensor holds a number that is not finite")]
     NotFinite,
     /// Its geometry gives no ellipsoid (fewer than four points, or all in a plane).
-    #[error("its geometry is flat or has fewer than four points, so it holds no volume to spread mass in")]
+    #[error(
+        "its geometry is flat or has fewer than four points, so it holds no volume to spread mass in"
+    )]
     FlatGeometry,
     /// The solver did not solve.
     #[error("the solver stopped without a solution ({0})")]
@@ -267,6 +268,11 @@ pub struct Region<'a> {
 
 /// Relative slack of the cuts, the final checks and the test of what is held.
 const CUT_SLACK: f64 = 1e-12;
+/// How far inside the triangle inequality the answer lands: Σ's smallest eigenvalue at least
+/// this fraction of its trace (A + B − C ≥ 2·10⁻⁶·tr Σ). On the boundary itself the body is a
+/// flat sheet, and a simulator that checks A + B ≥ C after its own round-off refuses it
+/// (MuJoCo 4.0.0 did, on a Panda link fixed without the margin).
+const TRIANGLE_MARGIN: f64 = 1e-6;
 const HELD_SLACK: f64 = 1e-7;
 /// Cutting-plane rounds at most (each adds up to four planes; 3×3 cones need few).
 const MAX_ROUNDS: usize = 200;
@@ -277,7 +283,12 @@ pub fn nearest(stated: &MassProperties, region: &Region<'_>) -> Result<Nearest, 
     if !(m > 0.0 && m.is_finite()) {
         return Err(NearestError::NoMass(m));
     }
-    if !stated.inertia_com.iter().chain(stated.center_of_mass.iter()).all(|v| v.is_finite()) {
+    if !stated
+        .inertia_com
+        .iter()
+        .chain(stated.center_of_mass.iter())
+        .all(|v| v.is_finite())
+    {
         return Err(NearestError::NotFinite);
     }
     let ellipsoid = bounding_ellipsoid(region.hull).ok_or(NearestError::FlatGeometry)?;
@@ -362,9 +373,12 @@ fn unpack(x: &[f64]) -> Matrix3<f64> {
 }
 
 impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
-    /// The plane vᵀΣv ≥ 0.
+    /// The plane vᵀΣv ≥ margin·tr(Σ).
     fn cone_cut(v: &Vector3<f64>) -> Cut {
-        (pairing(&(-(v * v.transpose()))), 0.0)
+        (
+            pairing(&(Matrix3::identity() * TRIANGLE_MARGIN - v * v.transpose())),
+            0.0,
+        )
     }
 
     /// uᵀIu ≤ m·r(u)², that is tr((𝟙 − u·uᵀ)Σ) ≤ r(u)² in these units.
@@ -382,7 +396,7 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
         let eigen = SymmetricEigen::new(*sigma);
         for k in 0..3 {
             let v: Vector3<f64> = eigen.eigenvectors.column(k).into();
-            if eigen.eigenvalues[k] < -CUT_SLACK {
+            if eigen.eigenvalues[k] < TRIANGLE_MARGIN * sigma.trace() - CUT_SLACK {
                 cuts.push(Self::cone_cut(&v));
             }
             let (a, b) = self.axis_cut(&v);
@@ -454,8 +468,7 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
             .collect();
         let a: Vec<[f64; 6]> = cuts.iter().map(|c| c.0).collect();
         let b: Vec<f64> = cuts.iter().map(|c| c.1).collect();
-        let hessian =
-            nalgebra::SMatrix::<f64, 6, 6>::from_fn(|i, j| p[i.min(j)][i.max(j)]);
+        let hessian = nalgebra::SMatrix::<f64, 6, 6>::from_fn(|i, j| p[i.min(j)][i.max(j)]);
         let p = CscMatrix::from(&p);
         let a = CscMatrix::from(&a);
         let mut settings = DefaultSettings::default();
@@ -482,8 +495,12 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
     /// lowers every bounded quantity, all of which are non-negative for Σ ⪰ 0).
     fn exactly_inside(&self, sigma: Matrix3<f64>) -> Matrix3<f64> {
         let mut eigen = SymmetricEigen::new(sigma);
+        // Raising one eigenvalue raises the trace: the floor is the margin of the new trace,
+        // λ ≥ margin·(t + λ − λ_old) solved for λ, with t the trace of the rest.
+        let trace: f64 = eigen.eigenvalues.iter().map(|l| l.max(0.0)).sum();
+        let floor = TRIANGLE_MARGIN * trace / (1.0 - 2.0 * TRIANGLE_MARGIN);
         for l in eigen.eigenvalues.iter_mut() {
-            *l = l.max(0.0);
+            *l = l.max(floor);
         }
         let clipped = eigen.recompose();
         let mut factor: f64 = 1.0;
@@ -506,14 +523,12 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
     }
 
     /// The constraints `sigma` lies on.
-    fn held(
-        &self,
-        sigma: &Matrix3<f64>,
-        farthest: &dyn Fn(&Vector3<f64>) -> f64,
-    ) -> Vec<Held> {
+    fn held(&self, sigma: &Matrix3<f64>, farthest: &dyn Fn(&Vector3<f64>) -> f64) -> Vec<Held> {
         let mut held = Vec::new();
         let eigen = SymmetricEigen::new(*sigma);
-        if eigen.eigenvalues.min() <= HELD_SLACK * sigma.trace().max(f64::MIN_POSITIVE) {
+        if eigen.eigenvalues.min()
+            <= (TRIANGLE_MARGIN + HELD_SLACK) * sigma.trace().max(f64::MIN_POSITIVE)
+        {
             held.push(Held::TriangleInequality);
         }
         if (self.ellipsoid * sigma).trace() >= self.ellipsoid_bound * (1.0 - HELD_SLACK) {
@@ -548,9 +563,7 @@ fn polish(
     z: &[f64],
 ) -> Option<Vec<f64>> {
     let largest = z.iter().copied().fold(0.0, f64::max);
-    let mut order: Vec<usize> = (0..cuts.len())
-        .filter(|&k| z[k] > 1e-6 * largest)
-        .collect();
+    let mut order: Vec<usize> = (0..cuts.len()).filter(|&k| z[k] > 1e-6 * largest).collect();
     order.sort_by(|&a, &b| z[b].total_cmp(&z[a]));
     let mut active: Vec<usize> = Vec::new();
     for k in order {
@@ -579,7 +592,10 @@ fn polish(
     }
     let solution = kkt.lu().solve(&rhs)?;
     let polished: Vec<f64> = solution.iter().take(6).copied().collect();
-    let multipliers_ok = solution.iter().skip(6).all(|l| *l >= -1e-9 * largest.max(1.0));
+    let multipliers_ok = solution
+        .iter()
+        .skip(6)
+        .all(|l| *l >= -1e-9 * largest.max(1.0));
     let scale = x.iter().map(|v| v.abs()).fold(1.0, f64::max);
     let inside = cuts.iter().all(|(a, b)| {
         a.iter().zip(&polished).map(|(a, x)| a * x).sum::<f64>() <= b + 1e-12 * scale
@@ -652,7 +668,10 @@ mod tests {
         let e = bounding_ellipsoid(&box_corners(h)).expect("an ellipsoid");
         let axes = e.semi_axes();
         for k in 0..3 {
-            assert!((axes[k] / (3f64.sqrt() * h[k]) - 1.0).abs() < 1e-9, "{axes:?}");
+            assert!(
+                (axes[k] / (3f64.sqrt() * h[k]) - 1.0).abs() < 1e-9,
+                "{axes:?}"
+            );
         }
         assert!(e.center.coords.norm() < 1e-15);
         assert!(box_corners(h).iter().all(|p| e.level(p) <= 1.0));
@@ -696,7 +715,9 @@ mod tests {
 
     /// Moments 1, 1, 3 break the triangle inequality by 1; with room enough, the nearest
     /// tensor in the Frobenius norm is the projection onto I₁ + I₂ = I₃ along (1, 1, −1)/√3:
-    /// 4/3, 4/3, 8/3, moved by 1/√3.
+    /// 4/3, 4/3, 8/3, moved by 1/√3; with the margin ε, onto Σ₃₃ = ε·tr(Σ). In Σ the metric
+    /// is W = 𝟙 + 𝟏𝟏ᵀ on the diagonal, so the step onto the plane aᵀΔ = c is
+    /// c·W⁻¹a / (aᵀW⁻¹a), W⁻¹ = 𝟙 − 𝟏𝟏ᵀ/4.
     #[test]
     fn a_broken_triangle_inequality_is_projected_onto_it() {
         let points = box_corners(Vector3::new(10.0, 10.0, 10.0));
@@ -706,13 +727,22 @@ mod tests {
             Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 3.0)),
         );
         let n = nearest_in(&points, &stated);
-        let expected = Matrix3::from_diagonal(&Vector3::new(4.0, 4.0, 8.0)) / 3.0;
+        let e = TRIANGLE_MARGIN;
+        let sigma = Vector3::new(1.5, 1.5, -0.5);
+        let a = Vector3::new(-e, -e, 1.0 - e);
+        let c = -a.dot(&sigma);
+        let w_inverse = Matrix3::identity() - Matrix3::repeat(0.25);
+        let step = w_inverse * a * (c / a.dot(&(w_inverse * a)));
+        let expected = tensor(&Matrix3::from_diagonal(&(sigma + step)));
         assert!(
-            (n.properties.inertia_com - expected).amax() < 1e-7,
-            "{}",
+            (n.properties.inertia_com - expected).amax() < 1e-9,
+            "{} vs {expected}",
             n.properties.inertia_com
         );
-        assert!((n.moved - 1.0 / 3f64.sqrt()).abs() < 1e-7);
+        // Without the margin: 4/3, 4/3, 8/3 and 1/√3.
+        let bare = Matrix3::from_diagonal(&Vector3::new(4.0, 4.0, 8.0)) / 3.0;
+        assert!((expected - bare).amax() < 1e-5);
+        assert!((n.moved - 1.0 / 3f64.sqrt()).abs() < 1e-5);
         assert_eq!(n.held_by, vec![Held::TriangleInequality]);
     }
 
@@ -720,10 +750,9 @@ mod tests {
     #[test]
     fn a_valid_inertial_stays() {
         let h = Vector3::new(0.1, 0.2, 0.3);
-        let solid = crate::primitives::unit_properties(&crate::model::Shape::Box {
-            half_extents: h,
-        })
-        .expect("a box");
+        let solid =
+            crate::primitives::unit_properties(&crate::model::Shape::Box { half_extents: h })
+                .expect("a box");
         let n = nearest_in(&box_corners(h), &solid);
         assert_eq!(n.properties.inertia_com, solid.inertia_com);
         assert_eq!((n.moved, n.held_by.clone()), (0.0, Vec::new()));
@@ -744,7 +773,9 @@ mod tests {
         let stated = MassProperties::new(
             m,
             Point3::origin(),
-            Matrix3::new(0.02, 0.004, -0.003, 0.004, 0.001, 0.002, -0.003, 0.002, 0.03),
+            Matrix3::new(
+                0.02, 0.004, -0.003, 0.004, 0.001, 0.002, -0.003, 0.002, 0.03,
+            ),
         );
         let n = nearest_in(&points, &stated);
         let sigma = second_moment(&n.properties.inertia_com);

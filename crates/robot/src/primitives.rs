@@ -151,7 +151,9 @@ pub fn hull_points(shape: &Shape) -> Option<Vec<Point3<f64>>> {
                 Point3::new(sign(0) * h.x, sign(1) * h.y, sign(2) * h.z)
             })
             .collect(),
-        Shape::Sphere { radius } => covering_sphere().map(|d| Point3::from(d * radius)).collect(),
+        Shape::Sphere { radius } => covering_sphere()
+            .map(|d| Point3::from(d * radius))
+            .collect(),
         Shape::Ellipsoid { radii } => covering_sphere()
             .map(|d| Point3::from(d.component_mul(&radii)))
             .collect(),

@@ -319,10 +319,13 @@ fn numbers(text: &str) -> Result<Vec<f64>, String> {
 /// The first substitution of xacro's (`${…}` or `$(…)`) left in `text`, if any.
 pub fn unexpanded_substitution(text: &str) -> Option<&str> {
     let start = text.find("${").or_else(|| text.find("$("))?;
-    let close = if text[start + 1..].starts_with('{') { '}' } else { ')' };
+    let close = if text[start + 1..].starts_with('{') {
+        '}'
+    } else {
+        ')'
+    };
     let end = text[start..]
         .find(close)
         .map_or(text.len(), |e| start + e + 1);
     Some(&text[start..end])
 }
-

@@ -358,7 +358,10 @@ fn xacro_markup_in_comments_is_not_xacro_but_a_substitution_is() {
         Some("${direction}")
     );
     assert!(report.links[1].computed.is_ok());
-    assert_eq!(robot::unexpanded_substitution("a$(find x)/b"), Some("$(find x)"));
+    assert_eq!(
+        robot::unexpanded_substitution("a$(find x)/b"),
+        Some("$(find x)")
+    );
     assert_eq!(robot::unexpanded_substitution("plain.stl"), None);
 }
 

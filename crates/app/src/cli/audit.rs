@@ -149,7 +149,13 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
             .output
             .as_ref()
             .ok_or_else(|| CliError::Usage("--fix needs -o FIXED".to_owned()))?;
-        Some(write_fix(&robot, &report, &args.fix_links, args.fix_mode, out)?)
+        Some(write_fix(
+            &robot,
+            &report,
+            &args.fix_links,
+            args.fix_mode,
+            out,
+        )?)
     } else {
         None
     };
@@ -247,7 +253,10 @@ fn write_fix(
             continue;
         }
         let (properties, comment) = match (mode, &l.nearest) {
-            (FixMode::Geometry, _) => (&c.properties, fix_comment(robot, l, c, report.options.geometry)),
+            (FixMode::Geometry, _) => (
+                &c.properties,
+                fix_comment(robot, l, c, report.options.geometry),
+            ),
             (FixMode::Nearest, Some(Ok(n))) if n.held_by.is_empty() => {
                 eprintln!(
                     "warning: link {name:?} is left as stated: its inertial is valid already \
@@ -257,7 +266,10 @@ fn write_fix(
             }
             (FixMode::Nearest, Some(Ok(n))) => {
                 let from_geometry = relative_distance(&n.properties, &c.properties);
-                let uncertainty = report.options.max_moment_error.unwrap_or(NEAREST_UNCERTAINTY);
+                let uncertainty = report
+                    .options
+                    .max_moment_error
+                    .unwrap_or(NEAREST_UNCERTAINTY);
                 if from_geometry > uncertainty {
                     eprintln!(
                         "warning: link {name:?}: the nearest valid inertial is {:.0} % from the \
@@ -272,7 +284,7 @@ fn write_fix(
                         }
                     );
                 }
-                (&n.properties, nearest_comment(l, n, report.options.geometry))
+                (&n.properties, nearest_comment(l, n))
             }
             (FixMode::Nearest, Some(Err(why))) => {
                 eprintln!(
@@ -320,7 +332,7 @@ const NEAREST_UNCERTAINTY: f64 = 0.5;
 
 /// The comment above a nearest-fixed inertial: what was kept, how far the tensor moved, and
 /// what holds it there.
-fn nearest_comment(l: &LinkAudit, n: &Nearest, geometry: GeometryKind) -> String {
+fn nearest_comment(l: &LinkAudit, n: &Nearest) -> String {
     let held: Vec<String> = n.held_by.iter().map(held_text).collect();
     let center = if n.center_kept {
         "centre kept"
@@ -337,10 +349,9 @@ fn nearest_comment(l: &LinkAudit, n: &Nearest, geometry: GeometryKind) -> String
     });
     let text = format!(
         "inertia-lab audit, fixed (nearest): the valid inertial nearest to the stated one within \
-         the link's geometry ({} and the rest): mass kept, {center}, tensor moved by {} kg*m^2 \
-         ({:.1} % of it, Frobenius norm), held by {}. SI units, about the centre of mass, link \
-         axes, off-diagonals -sum(m*x*y).{was}",
-        geometry.name(),
+         all of the link's geometry: mass kept, {center}, tensor moved by {} kg*m^2 ({:.1} % of \
+         it, Frobenius norm), held by {}. SI units, about the centre of mass, link axes, \
+         off-diagonals -sum(m*x*y).{was}",
         significant(n.moved, 4),
         n.moved_fraction * 100.0,
         held.join(" and ")

@@ -11,8 +11,8 @@ use serde_json::{Value, json};
 use super::findings::{finding_text, unweighed_text};
 use super::json::{point, rows, vector};
 use super::warning_text;
-use crate::wording::significant;
 use crate::conventions::{self, TENSOR};
+use crate::wording::significant;
 
 /// Version of the `audit --json` schema; bumped on any incompatible change.
 pub const AUDIT_SCHEMA_VERSION: u32 = 1;
