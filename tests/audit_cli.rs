@@ -336,6 +336,83 @@ fn the_nearest_fix_lands_inside_and_loads_as_written() {
     }
 }
 
+/// `--masses`: a link weighed at its measured mass, the stated one that differs named, and
+/// both fixes writing the measured mass (and centre); a name the robot lacks is refused.
+#[test]
+fn measured_masses_are_weighed_at_named_and_kept_by_both_fixes() {
+    let dir = panda_copy("panda_masses");
+    let original = dir.join("panda.urdf");
+    let masses = dir.join("masses.csv");
+    std::fs::write(
+        &masses,
+        "link,mass,x,y,z\npanda_link1,3.1,0.0,-0.035,-0.06\npanda_hand,0.9\n",
+    )
+    .expect("written");
+    let path = |p: &Path| p.to_str().expect("UTF-8").to_owned();
+    let report = audit_json(&[&path(&original), "--masses", &path(&masses)]);
+    let link1 = link(&report, "panda_link1");
+    assert_eq!(link1["computed"]["mass"], 3.1);
+    assert_eq!(link1["computed"]["basis"], "measured_mass");
+    assert_eq!(
+        link1["measured"]["center_of_mass"],
+        serde_json::json!([0.0, -0.035, -0.06])
+    );
+    let differs = finding(link1, "differs_from_measured").expect("named");
+    assert_eq!(differs["stated_mass"], 2.7);
+    assert_eq!(differs["measured_mass"], 3.1);
+    let offset = differs["center_offset"].as_f64().expect("an offset");
+    assert!(
+        (offset - (0.005f64.powi(2) + 0.01f64.powi(2)).sqrt()).abs() < 1e-12,
+        "{offset}"
+    );
+    // The hand states 0.81 kg, weighed 0.9: named too, its centre not measured.
+    let hand = finding(link(&report, "panda_hand"), "differs_from_measured").expect("named");
+    assert_eq!(hand["measured_center_of_mass"], Value::Null);
+
+    for mode in ["geometry", "nearest"] {
+        let fixed = dir.join(format!("fixed_{mode}.urdf"));
+        let out = audit_json(&[
+            &path(&original),
+            "--masses",
+            &path(&masses),
+            "--fix",
+            "--fix-mode",
+            mode,
+            "-o",
+            &path(&fixed),
+        ]);
+        assert!(
+            out["fixed"]["links"]
+                .as_array()
+                .expect("links")
+                .iter()
+                .any(|l| l == "panda_link1"),
+            "{mode}"
+        );
+        let again = audit_json(&[&path(&fixed)]);
+        let link1 = link(&again, "panda_link1");
+        assert_eq!(link1["stated"]["mass"], 3.1, "{mode}");
+        assert!(
+            relative(
+                &link1["stated"]["center_of_mass"],
+                &serde_json::json!([0.0, -0.035, -0.06])
+            ) < 1e-15,
+            "{mode}: {}",
+            link1["stated"]["center_of_mass"]
+        );
+        assert_eq!(link(&again, "panda_hand")["stated"]["mass"], 0.9, "{mode}");
+    }
+
+    std::fs::write(&masses, "panda_link1,3.1\nwrist,1\n").expect("written");
+    let out = run(&["audit", &path(&original), "--masses", &path(&masses)]);
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        said.contains("the robot has no link named \"wrist\" (its links: panda_link0, "),
+        "{said}"
+    );
+}
+
 /// Bodies whose inertia MuJoCo infers from primitive geoms, one fixed from a placeholder, and
 /// one with a rotated, offset inertial.
 const MJCF: &str = r#"<mujoco model="shapes">

@@ -26,6 +26,7 @@ use massprops::{MassProperties, MeshError, Repairs};
 
 use crate::findings::{Finding, ImpossibleAxis, PlaceholderReason, Region, UnitSlip};
 use crate::geometry::{self, Extent, Meshes, Problem, Ready};
+use crate::masses::{Measured, MeasuredMasses};
 use crate::model::{DescriptionFormat, GeometryKind, GeometryMass, Link, Robot, Shape};
 use crate::nearest::{self, Nearest, NearestError};
 
@@ -57,6 +58,9 @@ pub struct AuditOptions {
     pub repairs: Repairs,
     /// Also find each stated inertial's nearest valid one ([`crate::nearest`]).
     pub nearest: bool,
+    /// Links' masses (and centres) as measured: their geometry is weighed at the measured mass,
+    /// a stated inertial that differs is a finding, and both fixes keep them.
+    pub measured: MeasuredMasses,
 }
 
 impl Default for AuditOptions {
@@ -69,6 +73,7 @@ impl Default for AuditOptions {
             max_com_offset: None,
             repairs: Repairs::default(),
             nearest: false,
+            measured: MeasuredMasses::new(),
         }
     }
 }
@@ -78,6 +83,8 @@ impl Default for AuditOptions {
 pub enum MassBasis {
     /// The stated mass, spread uniformly over the geometry.
     StatedMass,
+    /// The measured mass (`AuditOptions::measured`), spread uniformly over the geometry.
+    MeasuredMass,
     /// The file's own geom masses and densities (MJCF).
     FileMasses,
     /// The density the user gave.
@@ -377,10 +384,16 @@ fn audit_link(
             findings.push(Finding::Placeholder { reasons });
         }
     }
+    let measured = options.measured.get(&link.name);
+    if let (Some(s), Some(m)) = (&stated, measured) {
+        findings.extend(measured_differs(s, m, size));
+    }
     let nearest = match (&stated, &region) {
-        (Some(s), Some((_, extents))) if options.nearest => {
-            Some(nearest_inertial(s, extents, computed.as_ref().ok()))
-        }
+        (Some(s), Some((_, extents))) if options.nearest => Some(nearest_inertial(
+            &with_measured(s, measured),
+            extents,
+            computed.as_ref().ok(),
+        )),
         _ => None,
     };
     LinkAudit {
@@ -474,6 +487,40 @@ fn outside_hull(extents: &[&Extent<'_>], point: &Point3<f64>) -> f64 {
             (t - hi).max(lo - t)
         })
         .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// How far a measured mass may be from the stated one, and a measured centre from the stated
+/// one (as a fraction of the link's size), before it is a finding.
+const MEASURED_TOLERANCE: f64 = 0.01;
+
+/// The finding when the stated inertial differs from what was measured.
+fn measured_differs(s: &MassProperties, m: &Measured, size: Option<f64>) -> Option<Finding> {
+    let mass = ((s.mass - m.mass).abs() > MEASURED_TOLERANCE * m.mass).then_some(m.mass);
+    let center = m.center_of_mass.and_then(|c| {
+        let offset = (s.center_of_mass - c).norm();
+        (offset > MEASURED_TOLERANCE * size.unwrap_or(0.0)).then_some((c, offset))
+    });
+    (mass.is_some() || center.is_some()).then(|| Finding::DiffersFromMeasured {
+        stated_mass: s.mass,
+        measured_mass: mass,
+        measured_center: center,
+    })
+}
+
+/// The stated inertial as the nearest fix starts from it: the measured mass (the stated
+/// tensor scaled with it: the same distribution per kilogram) and the measured centre.
+fn with_measured(s: &MassProperties, measured: Option<&Measured>) -> MassProperties {
+    match measured {
+        None => s.clone(),
+        Some(m) => {
+            let scale = if s.mass > 0.0 { m.mass / s.mass } else { 1.0 };
+            MassProperties::new(
+                m.mass,
+                m.center_of_mass.unwrap_or(s.center_of_mass),
+                s.inertia_com * scale,
+            )
+        }
+    }
 }
 
 /// The stated inertial's nearest valid one within the link's geometry (all of it: the region
@@ -575,9 +622,12 @@ fn computed(
     let units: Option<Vec<&MassProperties>> = ready.iter().map(|r| r.unit.as_ref().ok()).collect();
     let units = units.ok_or(Unweighed::Incomplete)?;
     let volume: f64 = units.iter().map(|u| u.mass).sum();
-    let stated_mass = link.stated.as_ref().map(|s| s.mass).filter(|m| *m > 0.0);
+    let measured = options.measured.get(&link.name).map(|m| m.mass);
+    let stated_mass =
+        measured.or_else(|| link.stated.as_ref().map(|s| s.mass).filter(|m| *m > 0.0));
     let basis = match (options.density, stated_mass, format) {
         (Some(d), ..) => MassBasis::GivenDensity(d),
+        (None, Some(_), _) if measured.is_some() => MassBasis::MeasuredMass,
         (None, Some(_), _) => MassBasis::StatedMass,
         (None, None, DescriptionFormat::Mjcf) => MassBasis::FileMasses,
         (None, None, DescriptionFormat::Urdf) => MassBasis::AssumedDensity(options.assumed_density),
@@ -586,7 +636,9 @@ fn computed(
         .iter()
         .zip(&units)
         .map(|(r, u)| match basis {
-            MassBasis::StatedMass => stated_mass.unwrap_or(0.0) * u.mass / volume,
+            MassBasis::StatedMass | MassBasis::MeasuredMass => {
+                stated_mass.unwrap_or(0.0) * u.mass / volume
+            }
             MassBasis::GivenDensity(d) | MassBasis::AssumedDensity(d) => d * u.mass,
             MassBasis::FileMasses => match r.geometry.mass {
                 GeometryMass::Mass(m) => m,
@@ -609,8 +661,8 @@ fn computed(
         return Err(Unweighed::Massless);
     }
     let (mut properties, _) = combine(&parts).map_err(Unweighed::Sum)?;
-    if basis == MassBasis::StatedMass {
-        // Exactly the stated mass, not its sum of rounded parts.
+    if matches!(basis, MassBasis::StatedMass | MassBasis::MeasuredMass) {
+        // Exactly the stated (measured) mass, not its sum of rounded parts.
         properties = properties
             .with_mass(stated_mass.unwrap_or(properties.mass))
             .map_err(Unweighed::Sum)?;

@@ -124,6 +124,17 @@ pub enum Finding {
         /// The stated mass.
         mass: f64,
     },
+    /// The stated mass or centre differs from the measured one (more than 1 % of the mass,
+    /// or of the link's size).
+    DiffersFromMeasured {
+        /// The stated mass, kg.
+        stated_mass: f64,
+        /// The measured mass, kg, when it differs.
+        measured_mass: Option<f64>,
+        /// The measured centre (link frame) and its distance from the stated one, m, when
+        /// they differ.
+        measured_center: Option<(Point3<f64>, f64)>,
+    },
     /// The stated tensor is farther from the uniform-density one than the threshold.
     MomentsFar {
         /// The relative error.
@@ -179,6 +190,7 @@ impl Finding {
             Finding::Placeholder { .. } => "placeholder",
             Finding::LikelyUnitError { .. } => "likely_unit_error",
             Finding::ImplausibleDensity { .. } => "implausible_density",
+            Finding::DiffersFromMeasured { .. } => "differs_from_measured",
             Finding::MomentsFar { .. } => "moments_far",
             Finding::ComFar { .. } => "com_far",
             Finding::MeshMissing { .. } => "mesh_missing",
@@ -196,7 +208,7 @@ impl Finding {
             Finding::NonpositiveMass { .. } => 2,
             Finding::MissingInertial { .. } => 3,
             Finding::Placeholder { .. } | Finding::LikelyUnitError { .. } => 4,
-            Finding::ImplausibleDensity { .. } => 5,
+            Finding::ImplausibleDensity { .. } | Finding::DiffersFromMeasured { .. } => 5,
             Finding::MomentsFar { .. } | Finding::ComFar { .. } => 6,
             Finding::MeshMissing { .. }
             | Finding::MeshUnreadable { .. }

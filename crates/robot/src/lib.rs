@@ -30,6 +30,7 @@ mod error;
 mod findings;
 pub mod fix;
 pub mod geometry;
+mod masses;
 mod mjcf;
 mod model;
 pub mod nearest;
@@ -45,6 +46,7 @@ pub use audit::{
 };
 pub use error::{Location, RobotError};
 pub use findings::{Finding, ImpossibleAxis, PlaceholderReason, Region, UnitSlip};
+pub use masses::{MassesError, Measured, MeasuredMasses, read_masses};
 pub use model::{
     DescriptionFormat, Geometry, GeometryKind, GeometryMass, Inertial, Link, Robot, Shape, Span,
     Unsupported,

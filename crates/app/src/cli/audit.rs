@@ -11,6 +11,7 @@ use inertia_io::report::audit::{basis_text, held_text, json_report, table};
 use inertia_io::report::findings::unweighed_text;
 use inertia_io::wording::significant;
 use massprops::MassProperties;
+use robot::Measured;
 use robot::fix::{Replacement, splice};
 use robot::nearest::Nearest;
 use robot::{
@@ -66,6 +67,11 @@ pub struct AuditArgs {
     /// uniform-density one (off by default).
     #[arg(long, value_name = "FRACTION")]
     pub max_com_offset: Option<f64>,
+    /// Links' measured masses (and centres), CSV (link,mass[,x,y,z]) or TOML ([links.NAME]
+    /// mass, center_of_mass): the geometry is weighed at them, a stated inertial that differs
+    /// is a finding, and both fix modes keep them.
+    #[arg(long, value_name = "FILE")]
+    pub masses: Option<PathBuf>,
     /// Print one JSON object instead of the table.
     #[arg(long)]
     pub json: bool,
@@ -109,6 +115,10 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
             .transpose()?,
         repairs: args.repair.repairs(1.0)?,
         nearest: args.fix_mode == FixMode::Nearest,
+        measured: match &args.masses {
+            Some(path) => robot::read_masses(path).map_err(|e| CliError::Input(e.to_string()))?,
+            None => Default::default(),
+        },
     };
     let read_options = ReadOptions {
         packages: args
@@ -134,6 +144,31 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
     let robot =
         robot::read(&args.file, &read_options).map_err(|e| CliError::Input(e.to_string()))?;
     let read_time = started.elapsed();
+    let unknown: Vec<&String> = options
+        .measured
+        .keys()
+        .filter(|n| !robot.links.iter().any(|l| &l.name == *n))
+        .collect();
+    if !unknown.is_empty() {
+        return Err(CliError::Input(format!(
+            "{}: the robot has no link named {} (its links: {})",
+            args.masses
+                .as_deref()
+                .unwrap_or(Path::new("--masses"))
+                .display(),
+            unknown
+                .iter()
+                .map(|n| format!("{n:?}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            robot
+                .links
+                .iter()
+                .map(|l| l.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )));
+    }
     let report = audit(&robot, &options);
     if args.timings {
         eprintln!(
@@ -252,11 +287,31 @@ fn write_fix(
             );
             continue;
         }
+        let measured_center = report
+            .options
+            .measured
+            .get(name)
+            .and_then(|m| m.center_of_mass);
+        let geometry_fix;
         let (properties, comment) = match (mode, &l.nearest) {
-            (FixMode::Geometry, _) => (
-                &c.properties,
-                fix_comment(robot, l, c, report.options.geometry),
-            ),
+            (FixMode::Geometry, _) => {
+                // A measured centre is kept; the tensor stays the geometry's about its own.
+                geometry_fix = match measured_center {
+                    Some(center) => {
+                        MassProperties::new(c.properties.mass, center, c.properties.inertia_com)
+                    }
+                    None => c.properties.clone(),
+                };
+                let mut comment = fix_comment(robot, l, c, report.options.geometry);
+                if measured_center.is_some() {
+                    comment = comment.replace(
+                        " -->",
+                        " The centre of mass is the measured one (--masses); the tensor is the \
+                         geometry's about its own centre. -->",
+                    );
+                }
+                (&geometry_fix, comment)
+            }
             (FixMode::Nearest, Some(Ok(n))) if n.held_by.is_empty() => {
                 eprintln!(
                     "warning: link {name:?} is left as stated: its inertial is valid already \
@@ -284,7 +339,10 @@ fn write_fix(
                         }
                     );
                 }
-                (&n.properties, nearest_comment(l, n))
+                (
+                    &n.properties,
+                    nearest_comment(l, n, report.options.measured.get(name)),
+                )
             }
             (FixMode::Nearest, Some(Err(why))) => {
                 eprintln!(
@@ -332,10 +390,18 @@ const NEAREST_UNCERTAINTY: f64 = 0.5;
 
 /// The comment above a nearest-fixed inertial: what was kept, how far the tensor moved, and
 /// what holds it there.
-fn nearest_comment(l: &LinkAudit, n: &Nearest) -> String {
+fn nearest_comment(l: &LinkAudit, n: &Nearest, measured: Option<&Measured>) -> String {
     let held: Vec<String> = n.held_by.iter().map(held_text).collect();
+    let mass = match measured {
+        Some(_) => "mass as measured (--masses; the stated tensor scaled to it)",
+        None => "mass kept",
+    };
     let center = if n.center_kept {
-        "centre kept"
+        if measured.is_some_and(|m| m.center_of_mass.is_some()) {
+            "the measured centre kept"
+        } else {
+            "centre kept"
+        }
     } else {
         "centre moved to the geometry's (the stated one is outside it)"
     };
@@ -349,7 +415,7 @@ fn nearest_comment(l: &LinkAudit, n: &Nearest) -> String {
     });
     let text = format!(
         "inertia-lab audit, fixed (nearest): the valid inertial nearest to the stated one within \
-         all of the link's geometry: mass kept, {center}, tensor moved by {} kg*m^2 ({:.1} % of \
+         all of the link's geometry: {mass}, {center}, tensor moved by {} kg*m^2 ({:.1} % of \
          it, Frobenius norm), held by {}. SI units, about the centre of mass, link axes, \
          off-diagonals -sum(m*x*y).{was}",
         significant(n.moved, 4),

@@ -24,6 +24,10 @@ pub fn basis_text(c: &robot::Computed) -> String {
             "uniform density {} kg/m^3 for the stated mass",
             significant(c.density, 6)
         ),
+        MassBasis::MeasuredMass => format!(
+            "uniform density {} kg/m^3 for the measured mass",
+            significant(c.density, 6)
+        ),
         MassBasis::FileMasses => {
             "the geoms' own masses and densities (every geom, visual ones too, as MuJoCo weighs a body without an inertial)".to_owned()
         }
@@ -308,6 +312,16 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
         } => {
             json!({"density": density, "volume": volume, "mass": mass})
         }
+        F::DiffersFromMeasured {
+            stated_mass,
+            measured_mass,
+            measured_center,
+        } => json!({
+            "stated_mass": stated_mass,
+            "measured_mass": measured_mass,
+            "measured_center_of_mass": measured_center.map(|(c, _)| point(&c)),
+            "center_offset": measured_center.map(|(_, d)| d),
+        }),
         F::MomentsFar { error, threshold } => json!({"error": error, "threshold": threshold}),
         F::ComFar {
             fraction,
@@ -345,6 +359,7 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
                     v["density"] = json!(c.density);
                     v["basis"] = json!(match c.basis {
                         MassBasis::StatedMass => "stated_mass",
+                        MassBasis::MeasuredMass => "measured_mass",
                         MassBasis::FileMasses => "file_masses",
                         MassBasis::GivenDensity(_) => "given_density",
                         MassBasis::AssumedDensity(_) => "assumed_density",
@@ -370,6 +385,10 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
                 })),
                 "findings": l.findings.iter().map(|f| finding_json(f, kind)).collect::<Vec<_>>(),
                 "nearest": l.nearest.as_ref().map(nearest_json),
+                "measured": report.options.measured.get(&link.name).map(|m| json!({
+                    "mass": m.mass,
+                    "center_of_mass": m.center_of_mass.as_ref().map(point),
+                })),
             })
         })
         .collect();

@@ -155,6 +155,31 @@ pub fn finding_text(
                 )
             }
         },
+        Finding::DiffersFromMeasured {
+            stated_mass,
+            measured_mass,
+            measured_center,
+        } => {
+            let mut parts = Vec::new();
+            if let Some(m) = measured_mass {
+                parts.push(format!(
+                    "the stated mass {} kg is {:+.1} % from the measured {} kg",
+                    num(*stated_mass),
+                    (stated_mass / m - 1.0) * 100.0,
+                    num(*m)
+                ));
+            }
+            if let Some((c, d)) = measured_center {
+                parts.push(format!(
+                    "the stated centre of mass is {} m from the measured ({}, {}, {}) m",
+                    num(*d),
+                    num(c.x),
+                    num(c.y),
+                    num(c.z)
+                ));
+            }
+            parts.join("; ")
+        }
         Finding::ImplausibleDensity {
             density,
             volume,
