@@ -9,7 +9,8 @@
 //!   the exports;
 //! - `threads`: how many threads a call uses (one by default, `threads=` or
 //!   `RAYON_NUM_THREADS`), and the errors raised in Python;
-//! - here: the module's functions.
+//! - here: the module's functions (meshes and body files as `props`, robot descriptions as
+//!   `audit --json`).
 
 mod arrays;
 mod result;
@@ -233,6 +234,110 @@ fn analyze_path(
     }))
 }
 
+/// A masses entry as Python passes it: link, mass (kg), and the centre (m, link frame) if any.
+type MassEntry = (String, f64, Option<(f64, f64, f64)>);
+
+/// Audits a robot description as `inertia-lab audit --json` does and returns that JSON's text
+/// (the Python layer parses it and builds the per-link table). Measured masses come from a file
+/// (`masses_file`) or as entries, not both.
+#[pyfunction]
+#[pyo3(signature = (path, geometry, density, assumed_density, packages, masses_file, masses, max_moment_error, max_com_offset, nearest, repairs, threads))]
+#[allow(clippy::too_many_arguments)]
+fn audit_json(
+    py: Python<'_>,
+    path: PathBuf,
+    geometry: &str,
+    density: Option<f64>,
+    assumed_density: f64,
+    packages: Vec<(String, PathBuf)>,
+    masses_file: Option<PathBuf>,
+    masses: Vec<MassEntry>,
+    max_moment_error: Option<f64>,
+    max_com_offset: Option<f64>,
+    nearest: bool,
+    repairs: RepairArgs,
+    threads: Option<usize>,
+) -> PyResult<String> {
+    let o = options(None, None, "volume", repairs, threads)?;
+    let geometry = match geometry {
+        "collision" => robot::GeometryKind::Collision,
+        "visual" => robot::GeometryKind::Visual,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "geometry is \"collision\" or \"visual\", not {other:?}"
+            )));
+        }
+    };
+    let positive = |name: &str, v: f64| {
+        if v > 0.0 && v.is_finite() {
+            Ok(v)
+        } else {
+            Err(PyValueError::new_err(format!(
+                "{name} must be positive, not {v}"
+            )))
+        }
+    };
+    let mut measured = match masses_file {
+        Some(file) => {
+            robot::read_masses(&file).map_err(|e| PyValueError::new_err(e.to_string()))?
+        }
+        None => robot::MeasuredMasses::new(),
+    };
+    for (link, mass, center) in masses {
+        let mass = positive(&format!("the measured mass of {link:?}"), mass)?;
+        measured.insert(
+            link,
+            robot::Measured {
+                mass,
+                center_of_mass: center.map(|(x, y, z)| nalgebra::Point3::new(x, y, z)),
+            },
+        );
+    }
+    let options = robot::AuditOptions {
+        geometry,
+        density: density.map(|d| positive("density", d)).transpose()?,
+        assumed_density: positive("assumed_density", assumed_density)?,
+        max_moment_error: max_moment_error
+            .map(|t| positive("max_moment_error", t))
+            .transpose()?,
+        max_com_offset: max_com_offset
+            .map(|t| positive("max_com_offset", t))
+            .transpose()?,
+        repairs: o.repairs,
+        nearest,
+        measured,
+    };
+    let file = path.display().to_string();
+    let (description, report) = py
+        .detach(|| {
+            on_threads(o.threads, || {
+                let description = robot::read(&path, &robot::ReadOptions { packages })?;
+                let report = robot::audit(&description, &options);
+                Ok::<_, robot::RobotError>((description, report))
+            })
+        })
+        .map_err(|e| match &e {
+            robot::RobotError::Io { source, .. }
+                if source.kind() == std::io::ErrorKind::NotFound =>
+            {
+                pyo3::exceptions::PyFileNotFoundError::new_err(e.to_string())
+            }
+            robot::RobotError::Io { .. } => pyo3::exceptions::PyOSError::new_err(e.to_string()),
+            _ => PyValueError::new_err(e.to_string()),
+        })?;
+    if let Some(unknown) = options
+        .measured
+        .keys()
+        .find(|n| !description.links.iter().any(|l| &l.name == *n))
+    {
+        return Err(PyValueError::new_err(format!(
+            "masses: the robot has no link named {unknown:?}"
+        )));
+    }
+    let json = inertia_io::report::audit::json_report(&file, &description, &report);
+    Ok(json.to_string())
+}
+
 /// The batch table's rows for `paths` (with their bytes when `contents` has them, and a density
 /// each when `densities` has one), as columns: `{name: list}` in the schema's order. Never
 /// raises for a row.
@@ -348,6 +453,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(measure_rows, m)?)?;
     m.add_function(wrap_pyfunction!(batch_schema, m)?)?;
     m.add_function(wrap_pyfunction!(file_ids, m)?)?;
+    m.add_function(wrap_pyfunction!(audit_json, m)?)?;
     m.add_class::<MassResult>()?;
     m.add("MeshError", m.py().get_type::<threads::MeshError>())?;
     m.add("SCHEMA_VERSION", inertia_io::report::SCHEMA_VERSION)?;

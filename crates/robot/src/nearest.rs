@@ -302,8 +302,15 @@ pub fn nearest(stated: &MassProperties, region: &Region<'_>) -> Result<Nearest, 
     let reach = ellipsoid.semi_axes().z;
     let scale = m * reach * reach;
     let target = second_moment(&stated.inertia_com) / scale;
+    let spread = region
+        .hull
+        .iter()
+        .map(|p| (p - center).norm())
+        .fold(0.0, f64::max)
+        / reach;
     let problem = Problem {
         target,
+        spread,
         ellipsoid_bound: (1.0 - ellipsoid.level(&center)).max(0.0),
         ellipsoid: ellipsoid.shape * (reach * reach),
         axis_bound: |u: &Vector3<f64>| {
@@ -311,17 +318,13 @@ pub fn nearest(stated: &MassProperties, region: &Region<'_>) -> Result<Nearest, 
             r * r / (reach * reach)
         },
     };
-    let solved = if problem.violations(&target).is_empty() {
-        target
+    // A valid inertial is its own nearest, to the bit.
+    let (inertia, held_by) = if problem.violations(&target).is_empty() {
+        (stated.inertia_com, Vec::new())
     } else {
-        problem.solve()?
-    };
-    let sigma = problem.exactly_inside(solved);
-    let inertia = tensor(&(sigma * scale));
-    let held_by = if sigma == target {
-        Vec::new()
-    } else {
-        problem.held(&sigma, &|u| (region.farthest_from_line)(&center, u))
+        let sigma = problem.exactly_inside(problem.solve()?);
+        let held = problem.held(&sigma, &|u| (region.farthest_from_line)(&center, u));
+        (tensor(&(sigma * scale)), held)
     };
     let moved = (inertia - stated.inertia_com).norm();
     Ok(Nearest {
@@ -347,6 +350,9 @@ fn tensor(sigma: &Matrix3<f64>) -> Matrix3<f64> {
 /// The program in units of m·R²: the target Σ, the ellipsoid's form and bound, the axis bound.
 struct Problem<F: Fn(&Vector3<f64>) -> f64> {
     target: Matrix3<f64>,
+    /// The geometry's farthest point from the centre, in units of R: how fast r(u) can change
+    /// as the axis u turns (|dr| ≤ spread·|du|).
+    spread: f64,
     ellipsoid: Matrix3<f64>,
     ellipsoid_bound: f64,
     /// r(u)² in units of R².
@@ -399,6 +405,14 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
             if eigen.eigenvalues[k] < TRIANGLE_MARGIN * sigma.trace() - CUT_SLACK {
                 cuts.push(Self::cone_cut(&v));
             }
+        }
+        // The bound about the principal axes as the audit finds them (massprops' own
+        // decomposition of I), and about Σ's eigenvectors.
+        let audited = principal_axes(sigma);
+        for v in (0..3)
+            .map(|k| eigen.eigenvectors.column(k).into_owned())
+            .chain(audited)
+        {
             let (a, b) = self.axis_cut(&v);
             if dot(&a, sigma) > b + CUT_SLACK {
                 cuts.push((a, b));
@@ -508,11 +522,10 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
         if e > self.ellipsoid_bound {
             factor = factor.min(self.ellipsoid_bound / e);
         }
-        for k in 0..3 {
-            let (a, b) = self.axis_cut(&eigen.eigenvectors.column(k).into());
-            let value = dot(&a, &clipped);
-            if value > b {
-                factor = factor.min(b / value);
+        for (u, bound) in self.certified_axes(&clipped) {
+            let value = dot(&self.axis_cut(&u).0, &clipped);
+            if value > bound {
+                factor = factor.min(bound / value);
             }
         }
         if factor < 1.0 {
@@ -520,6 +533,36 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
         } else {
             clipped
         }
+    }
+
+    /// The axes whose bound must hold for the audit to find nothing, each with a bound on
+    /// r(u)² that is certain: the principal axes as the audit finds them with their own r(u)²;
+    /// where two moments are equal (to 1e-6) the audit's axes in their plane are any, so the
+    /// whole plane, sampled every 0.05° with r lowered by spread × the angle to the nearest
+    /// sample (the most r can change over it).
+    fn certified_axes(&self, sigma: &Matrix3<f64>) -> Vec<(Vector3<f64>, f64)> {
+        let inertia = tensor(sigma);
+        let principal = MassProperties::new(1.0, Point3::origin(), inertia).principal;
+        let axes: Vec<Vector3<f64>> = (0..3)
+            .map(|k| principal.rotation.matrix().column(k).into_owned())
+            .collect();
+        let moments = principal.moments;
+        let mut certified: Vec<(Vector3<f64>, f64)> =
+            axes.iter().map(|u| (*u, (self.axis_bound)(u))).collect();
+        for (i, j) in [(0, 1), (1, 2), (0, 2)] {
+            if (moments[j] - moments[i]).abs() > 1e-6 * moments.amax() {
+                continue;
+            }
+            let samples = 3600;
+            let half_step = std::f64::consts::PI / f64::from(samples) / 2.0;
+            for s in 0..samples {
+                let angle = std::f64::consts::PI * f64::from(s) / f64::from(samples);
+                let u = axes[i] * angle.cos() + axes[j] * angle.sin();
+                let r = (self.axis_bound)(&u).sqrt() - self.spread * half_step;
+                certified.push((u, r.max(0.0).powi(2)));
+            }
+        }
+        certified
     }
 
     /// The constraints `sigma` lies on.
@@ -534,15 +577,20 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
         if (self.ellipsoid * sigma).trace() >= self.ellipsoid_bound * (1.0 - HELD_SLACK) {
             held.push(Held::Ellipsoid);
         }
-        for k in 0..3 {
-            let u: Vector3<f64> = eigen.eigenvectors.column(k).into();
-            let (a, b) = self.axis_cut(&u);
-            if dot(&a, sigma) >= b * (1.0 - HELD_SLACK) {
-                held.push(Held::AxisBound {
-                    axis: u,
-                    radius: farthest(&u),
-                });
-            }
+        // Against the bounds the answer was scaled to (certain ones, lowered in a plane of
+        // equal moments), the tightest axis only: in such a plane many are equally tight.
+        let tightest = self
+            .certified_axes(sigma)
+            .into_iter()
+            .map(|(u, bound)| (u, dot(&self.axis_cut(&u).0, sigma) / bound))
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((u, ratio)) = tightest
+            && ratio >= 1.0 - HELD_SLACK
+        {
+            held.push(Held::AxisBound {
+                axis: u,
+                radius: farthest(&u),
+            });
         }
         held
     }
@@ -601,6 +649,14 @@ fn polish(
         a.iter().zip(&polished).map(|(a, x)| a * x).sum::<f64>() <= b + 1e-12 * scale
     });
     (multipliers_ok && inside && polished.iter().all(|v| v.is_finite())).then_some(polished)
+}
+
+/// The principal axes of Σ's tensor as massprops finds them (what the audit checks).
+fn principal_axes(sigma: &Matrix3<f64>) -> Vec<Vector3<f64>> {
+    let principal = MassProperties::new(1.0, Point3::origin(), tensor(sigma)).principal;
+    (0..3)
+        .map(|k| principal.rotation.matrix().column(k).into_owned())
+        .collect()
 }
 
 fn dot(a: &[f64; 6], sigma: &Matrix3<f64>) -> f64 {

@@ -753,3 +753,67 @@ fn a_shared_tensor_is_a_placeholder_only_between_links_that_have_geometry() {
         );
     }
 }
+
+/// The nearest valid inertial, written back and audited again, is found valid: here for a
+/// 1 mm cube with a larger visual box, stated as go1's camera links are (1e-5 kg, 1e-6 kg·m²
+/// each way), whose nearest
+/// tensor has two equal moments, so the audit may take any axis of their plane as principal
+/// (the bound about every axis of that plane must hold, not only the solver's own axes).
+#[test]
+fn the_nearest_inertial_written_back_is_valid() {
+    let urdf = |mass: f64, com: [f64; 3], i: [f64; 6]| {
+        format!(
+            r#"<robot name="r"><link name="camera"><inertial>
+  <origin xyz="{} {} {}" rpy="0 0 0"/><mass value="{mass}"/>
+  <inertia ixx="{}" ixy="{}" ixz="{}" iyy="{}" iyz="{}" izz="{}"/></inertial>
+  <collision><geometry><box size="0.001 0.001 0.001"/></geometry></collision>
+  <visual><origin xyz="0.012 0.003 -0.002" rpy="0.3 0.2 0.1"/>
+    <geometry><box size="0.03 0.01 0.02"/></geometry></visual></link></robot>"#,
+            com[0], com[1], com[2], i[0], i[1], i[2], i[3], i[4], i[5]
+        )
+    };
+    let options = AuditOptions {
+        nearest: true,
+        ..AuditOptions::default()
+    };
+    let stated = urdf(1e-5, [0.0; 3], [1e-6, 0.0, 0.0, 1e-6, 0.0, 1e-6]);
+    let robot = read_str(&stated, Path::new("r.urdf"), &ReadOptions::default()).expect("read");
+    let report = audit(&robot, &options);
+    assert!(codes(&report.links[0].findings).contains(&"impossible_moment"));
+    let n = report.links[0]
+        .nearest
+        .clone()
+        .expect("asked for")
+        .expect("a nearest inertial");
+    let (c, t) = (n.properties.center_of_mass, n.properties.inertia_com);
+    let fixed = urdf(
+        n.properties.mass,
+        [c.x, c.y, c.z],
+        // URDF's ixy is the tensor's own entry (−∑m·x·y).
+        [
+            t[(0, 0)],
+            t[(0, 1)],
+            t[(0, 2)],
+            t[(1, 1)],
+            t[(1, 2)],
+            t[(2, 2)],
+        ],
+    );
+    let again = audit(
+        &read_str(&fixed, Path::new("r.urdf"), &ReadOptions::default()).expect("read"),
+        &options,
+    );
+    let found = codes(&again.links[0].findings);
+    assert!(
+        !found.iter().any(|c| [
+            "impossible_moment",
+            "triangle_inequality",
+            "not_positive_definite"
+        ]
+        .contains(c)),
+        "{found:?}: moments {:?}",
+        n.properties.principal.moments
+    );
+    let own = again.links[0].nearest.clone().expect("asked").expect("one");
+    assert!(own.held_by.is_empty() && own.moved == 0.0, "{own:?}");
+}

@@ -312,7 +312,7 @@ fn write_fix(
                 }
                 (&geometry_fix, comment)
             }
-            (FixMode::Nearest, Some(Ok(n))) if n.held_by.is_empty() => {
+            (FixMode::Nearest, Some(Ok(n))) if n.moved == 0.0 && n.center_kept => {
                 eprintln!(
                     "warning: link {name:?} is left as stated: its inertial is valid already \
                      (the nearest valid one is itself)"

@@ -270,8 +270,12 @@ fn region_name(region: robot::Region) -> &'static str {
 /// The finding as `{code, message, …its evidence}`.
 fn finding_json(f: &robot::Finding, kind: &str) -> Value {
     use robot::Finding as F;
-    let mut v =
-        json!({"code": f.code(), "message": finding_text(f, kind, |w| warning_text(w, &[]))});
+    let mut v = json!({
+        "code": f.code(),
+        "message": finding_text(f, kind, |w| warning_text(w, &[])),
+        "severity": f.severity(),
+        "flags_inertial": f.flags_inertial(),
+    });
     let evidence = match f {
         F::MissingInertial { moving } => json!({"moving": moving}),
         F::NonpositiveMass { mass } => json!({"mass": mass}),

@@ -7,6 +7,8 @@ mass, from Python.
 - ``measure_table(batch, ...)``: an Arrow table of files in, the batch table out, one row each;
 - ``measure_files(paths, out, ...)``: a folder of files into resumable Parquet shards;
 - ``mesh_files(folder_or_glob)``: the files ``measure_files`` would measure, for an engine;
+- ``audit(path, ...)`` / ``audit_table(paths, ...)``: robot descriptions (URDF, MJCF) as
+  ``inertia-lab audit --json`` audits them, as a dict or one Arrow row per link;
 - ``MassResult``: one body's numbers, ``to_dict()`` (``props --json``'s object) and exports.
 
 Conventions: lengths in the mesh's unit, mass in the unit of density times length³; the inertia
@@ -15,6 +17,7 @@ off-diagonals are −∑ m·x·y; principal moments ascending, principal axes as
 """
 
 from ._api import Repairs, analyze_file, mass_properties
+from ._audit import audit, audit_table
 from ._files import Summary, measure_files, mesh_files
 from ._native import (
     BATCH_SCHEMA_VERSION,
@@ -36,6 +39,8 @@ __all__ = [
     "Summary",
     "__version__",
     "analyze_file",
+    "audit",
+    "audit_table",
     "batch_schema",
     "mass_properties",
     "measure_files",

@@ -69,6 +69,20 @@ def analyze_path(
     repairs: tuple[str, float, str, float, int],
     threads: Optional[int],
 ) -> MassResult: ...
+def audit_json(
+    path: str,
+    geometry: str,
+    density: Optional[float],
+    assumed_density: float,
+    packages: Sequence[tuple[str, str]],
+    masses_file: Optional[str],
+    masses: Sequence[tuple[str, float, Optional[tuple[float, float, float]]]],
+    max_moment_error: Optional[float],
+    max_com_offset: Optional[float],
+    nearest: bool,
+    repairs: tuple[str, float, str, float, int],
+    threads: Optional[int],
+) -> str: ...
 def measure_rows(
     paths: Sequence[str],
     contents: Optional[Sequence[Optional[bytes]]],
