@@ -188,6 +188,35 @@ fn without_inertials(text: &str) -> String {
     out + rest
 }
 
+/// The fixed description as yourdfpy and MuJoCo load it: each changed link's mass, centre and
+/// tensor those of `ours` (yourdfpy keeps the written numbers exactly; MuJoCo diagonalises and
+/// recomposes the tensor, to 1e-9).
+fn read_back(test: &str, fixed: &Path, changed: &[&str], ours: impl Fn(&str) -> Value) {
+    if python_has(test, "yourdfpy", "0.0.60") {
+        let read = bodies("yourdfpy", fixed);
+        for name in changed {
+            let (b, c) = (&read["bodies"][name], ours(name));
+            assert_eq!(b["mass"], c["mass"], "{name}");
+            assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-15, "{name}");
+            assert!(relative(&b["tensor"], &c["inertia"]) < 1e-15, "{name}");
+        }
+    }
+    if python_has(test, "mujoco", "4.0.0") {
+        let read = bodies("mujoco", fixed);
+        for name in changed {
+            let (b, c) = (&read["bodies"][name], ours(name));
+            assert!(relative(&b["mass"], &c["mass"]) < 1e-12, "{name}");
+            assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-9, "{name}");
+            assert!(
+                relative(&b["tensor"], &c["inertia"]) < 1e-9,
+                "{name}: {} vs {}",
+                b["tensor"],
+                c["inertia"]
+            );
+        }
+    }
+}
+
 #[test]
 fn the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values() {
     let test = "the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values";
@@ -218,29 +247,7 @@ fn the_fixed_panda_loads_in_yourdfpy_and_mujoco_with_our_values() {
     assert_eq!(after.matches("inertia-lab audit, fixed").count(), 11);
 
     let ours = |name: &str| link(&report, name)["computed"].clone();
-    if python_has(test, "yourdfpy", "0.0.60") {
-        let read = bodies("yourdfpy", &fixed);
-        for name in &changed {
-            let (b, c) = (&read["bodies"][name], ours(name));
-            assert_eq!(b["mass"], c["mass"], "{name}");
-            assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-15, "{name}");
-            assert!(relative(&b["tensor"], &c["inertia"]) < 1e-15, "{name}");
-        }
-    }
-    if python_has(test, "mujoco", "4.0.0") {
-        let read = bodies("mujoco", &fixed);
-        for name in &changed {
-            let (b, c) = (&read["bodies"][name], ours(name));
-            assert!(relative(&b["mass"], &c["mass"]) < 1e-12, "{name}");
-            assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-9, "{name}");
-            assert!(
-                relative(&b["tensor"], &c["inertia"]) < 1e-9,
-                "{name}: {} vs {}",
-                b["tensor"],
-                c["inertia"]
-            );
-        }
-    }
+    read_back(test, &fixed, &changed, ours);
 }
 
 /// The findings that prove a stated inertial impossible (what the nearest fix must remove).
@@ -317,23 +324,9 @@ fn the_nearest_fix_lands_inside_and_loads_as_written() {
             "{name}"
         );
     }
-    if python_has(test, "yourdfpy", "0.0.60") {
-        let read = bodies("yourdfpy", &fixed);
-        for name in &changed {
-            let (b, n) = (&read["bodies"][name], &link(&report, name)["nearest"]);
-            assert_eq!(b["mass"], n["mass"], "{name}");
-            assert!(relative(&b["tensor"], &n["inertia"]) < 1e-15, "{name}");
-        }
-    }
-    if python_has(test, "mujoco", "4.0.0") {
-        let read = bodies("mujoco", &fixed);
-        for name in &changed {
-            let (b, n) = (&read["bodies"][name], &link(&report, name)["nearest"]);
-            assert!(relative(&b["mass"], &n["mass"]) < 1e-12, "{name}");
-            assert!(relative(&b["com"], &n["center_of_mass"]) < 1e-9, "{name}");
-            assert!(relative(&b["tensor"], &n["inertia"]) < 1e-9, "{name}");
-        }
-    }
+    read_back(test, &fixed, &changed, |name| {
+        link(&report, name)["nearest"].clone()
+    });
 }
 
 /// `--masses`: a link weighed at its measured mass, the stated one that differs named, and

@@ -161,12 +161,7 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
                 .map(|n| format!("{n:?}"))
                 .collect::<Vec<_>>()
                 .join(", "),
-            robot
-                .links
-                .iter()
-                .map(|l| l.name.as_str())
-                .collect::<Vec<_>>()
-                .join(", ")
+            link_names(&robot)
         )));
     }
     let report = audit(&robot, &options);
@@ -214,6 +209,16 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
     Ok(())
 }
 
+/// The robot's link names, for a message naming one it lacks.
+fn link_names(robot: &Robot) -> String {
+    robot
+        .links
+        .iter()
+        .map(|l| l.name.as_str())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 fn same_file(a: &Path, b: &Path) -> bool {
     match (a.canonicalize(), b.canonicalize()) {
         (Ok(x), Ok(y)) => x == y,
@@ -241,12 +246,7 @@ fn write_fix(
         if !robot.links.iter().any(|l| l.name == *n) {
             return Err(CliError::Usage(format!(
                 "--fix-links: the robot has no link named {n:?} (its links: {})",
-                robot
-                    .links
-                    .iter()
-                    .map(|l| l.name.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                link_names(robot)
             )));
         }
     }
