@@ -389,8 +389,13 @@ f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nf 5 6 7 8\nf 6 7 8 5\n";
     assert_eq!(w["face_lines"], serde_json::json!([15]));
     // About the cube's centre the top face carries the pyramid of a sixth of the volume.
     assert!(close(f(&w["effect_on_mass"]), 1.0 / 6.0, 1e-15), "{w}");
+    // The shell's volume to round-off (its last bit depends on the summation order the CPU's
+    // vector width gives: 0.9999999999999999 on one machine, 1.0 on another).
+    let mut shells = j["shells"].clone();
+    assert!(close(f(&shells[0]["volume"]), 1.0, 1e-15), "{shells}");
+    shells[0]["volume"] = serde_json::json!(1.0);
     assert_eq!(
-        j["shells"],
+        shells,
         serde_json::json!([{
             "faces": 6, "closed": true, "capped": false, "volume": 1.0, "orientation": "outward", "depth": 0
         }])

@@ -500,7 +500,7 @@ fn measured_differs(s: &MassProperties, m: &Measured, size: Option<f64>) -> Opti
         let offset = (s.center_of_mass - c).norm();
         (offset > MEASURED_TOLERANCE * size.unwrap_or(0.0)).then_some((c, offset))
     });
-    (mass.is_some() || center.is_some()).then(|| Finding::DiffersFromMeasured {
+    (mass.is_some() || center.is_some()).then_some(Finding::DiffersFromMeasured {
         stated_mass: s.mass,
         measured_mass: mass,
         measured_center: center,
@@ -511,7 +511,7 @@ fn measured_differs(s: &MassProperties, m: &Measured, size: Option<f64>) -> Opti
 /// tensor scaled with it: the same distribution per kilogram) and the measured centre.
 fn with_measured(s: &MassProperties, measured: Option<&Measured>) -> MassProperties {
     match measured {
-        None => s.clone(),
+        None => *s,
         Some(m) => {
             let scale = if s.mass > 0.0 { m.mass / s.mass } else { 1.0 };
             MassProperties::new(

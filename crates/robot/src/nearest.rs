@@ -485,11 +485,13 @@ impl<F: Fn(&Vector3<f64>) -> f64> Problem<F> {
         let hessian = nalgebra::SMatrix::<f64, 6, 6>::from_fn(|i, j| p[i.min(j)][i.max(j)]);
         let p = CscMatrix::from(&p);
         let a = CscMatrix::from(&a);
-        let mut settings = DefaultSettings::default();
-        settings.verbose = false;
-        settings.tol_gap_abs = 1e-13;
-        settings.tol_gap_rel = 1e-13;
-        settings.tol_feas = 1e-13;
+        let settings = DefaultSettings {
+            verbose: false,
+            tol_gap_abs: 1e-13,
+            tol_gap_rel: 1e-13,
+            tol_feas: 1e-13,
+            ..DefaultSettings::default()
+        };
         let cones = [NonnegativeConeT(b.len())];
         let mut solver = DefaultSolver::new(&p, &q, &a, &b, &cones, settings)
             .map_err(|e| NearestError::Solver(e.to_string()))?;

@@ -67,9 +67,9 @@ pub struct AuditArgs {
     /// uniform-density one (off by default).
     #[arg(long, value_name = "FRACTION")]
     pub max_com_offset: Option<f64>,
-    /// Links' measured masses (and centres), CSV (link,mass[,x,y,z]) or TOML ([links.NAME]
-    /// mass, center_of_mass): the geometry is weighed at them, a stated inertial that differs
-    /// is a finding, and both fix modes keep them.
+    /// Links' measured masses (and centres): CSV, a line link,mass or link,mass,x,y,z each, or
+    /// TOML, a table links.NAME with mass and center_of_mass each. The geometry is weighed at
+    /// them, a stated inertial that differs is a finding, and both fix modes keep them.
     #[arg(long, value_name = "FILE")]
     pub masses: Option<PathBuf>,
     /// Print one JSON object instead of the table.
@@ -300,7 +300,7 @@ fn write_fix(
                     Some(center) => {
                         MassProperties::new(c.properties.mass, center, c.properties.inertia_com)
                     }
-                    None => c.properties.clone(),
+                    None => c.properties,
                 };
                 let mut comment = fix_comment(robot, l, c, report.options.geometry);
                 if measured_center.is_some() {
