@@ -352,6 +352,7 @@ fn audit_link(
             }
             if s.mass > 0.0 {
                 findings.extend(moment_slip(s, &c.properties));
+                findings.extend(frame_slip(s, &c.properties, &ready, size));
             }
         }
         let written = &link
@@ -487,6 +488,34 @@ fn outside_hull(extents: &[&Extent<'_>], point: &Point3<f64>) -> f64 {
             (t - hi).max(lo - t)
         })
         .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// A stated centre within this fraction of the link's size of the geometry's centre counts as
+/// it; farther than `FRAME_SLIP_FAR` from it, as not.
+const FRAME_SLIP_NEAR: f64 = 0.02;
+const FRAME_SLIP_FAR: f64 = 0.1;
+
+/// A stated centre that is the geometry's centre in one geometry's own frame rather than the
+/// link's: far from the computed centre, but placed by that geometry's origin (the transform
+/// the author left out), on it.
+fn frame_slip(
+    s: &MassProperties,
+    computed: &MassProperties,
+    ready: &[Ready<'_>],
+    size: f64,
+) -> Option<Finding> {
+    let c = computed.center_of_mass;
+    if (s.center_of_mass - c).norm() <= FRAME_SLIP_FAR * size {
+        return None;
+    }
+    ready.iter().find_map(|r| {
+        let would_be = r.geometry.pose * s.center_of_mass;
+        ((would_be - c).norm() <= FRAME_SLIP_NEAR * size).then(|| Finding::CenterInGeometryFrame {
+            geometry: r.geometry.shape.label(),
+            stated: s.center_of_mass,
+            would_be,
+        })
+    })
 }
 
 /// How far a measured mass may be from the stated one, and a measured centre from the stated

@@ -110,6 +110,17 @@ pub enum Finding {
         /// The value with the slip undone, in the same unit.
         would_be: f64,
     },
+    /// The stated centre of mass is the geometry's centre written in a geometry's own frame
+    /// (its mesh's origin, say) rather than in the link's: placed by that geometry's origin,
+    /// it would be the geometry's centre.
+    CenterInGeometryFrame {
+        /// The geometry, as [`crate::Shape::label`] names it.
+        geometry: String,
+        /// The stated centre, link frame.
+        stated: Point3<f64>,
+        /// The stated centre placed by the geometry's origin: the centre it likely means.
+        would_be: Point3<f64>,
+    },
     /// The stated tensor looks like a placeholder.
     Placeholder {
         /// Why.
@@ -189,6 +200,7 @@ impl Finding {
             Finding::ComOutsideGeometry { .. } => "com_outside_geometry",
             Finding::Placeholder { .. } => "placeholder",
             Finding::LikelyUnitError { .. } => "likely_unit_error",
+            Finding::CenterInGeometryFrame { .. } => "center_in_geometry_frame",
             Finding::ImplausibleDensity { .. } => "implausible_density",
             Finding::DiffersFromMeasured { .. } => "differs_from_measured",
             Finding::MomentsFar { .. } => "moments_far",
@@ -207,7 +219,9 @@ impl Finding {
             Finding::NotPositiveDefinite { .. } | Finding::TriangleInequality { .. } => 1,
             Finding::NonpositiveMass { .. } => 2,
             Finding::MissingInertial { .. } => 3,
-            Finding::Placeholder { .. } | Finding::LikelyUnitError { .. } => 4,
+            Finding::Placeholder { .. }
+            | Finding::LikelyUnitError { .. }
+            | Finding::CenterInGeometryFrame { .. } => 4,
             Finding::ImplausibleDensity { .. } | Finding::DiffersFromMeasured { .. } => 5,
             Finding::MomentsFar { .. } | Finding::ComFar { .. } => 6,
             Finding::MeshMissing { .. }

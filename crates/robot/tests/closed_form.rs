@@ -817,3 +817,48 @@ fn the_nearest_inertial_written_back_is_valid() {
     let own = again.links[0].nearest.clone().expect("asked").expect("one");
     assert!(own.held_by.is_empty() && own.moved == 0.0, "{own:?}");
 }
+
+/// A stated centre written in a mesh's own frame (its origin left out) is named with the centre
+/// it would be; the same centre written in the link's frame, or a centre simply elsewhere, is
+/// not.
+#[test]
+fn a_centre_in_the_geometrys_frame_is_named() {
+    let link = |com: &str| {
+        format!(
+            r#"<robot name="r"><link name="arm"><inertial>
+  <origin xyz="{com}" rpy="0 0 0"/><mass value="2.7"/>
+  <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.002"/></inertial>
+  <collision><origin xyz="0 0 0.2" rpy="0 1.5707963267948966 0"/>
+    <geometry><box size="0.05 0.05 0.3"/></geometry></collision></link></robot>"#
+        )
+    };
+    let findings = |com: &str| {
+        let robot =
+            read_str(&link(com), Path::new("r.urdf"), &ReadOptions::default()).expect("read");
+        audit(&robot, &AuditOptions::default()).links[0]
+            .findings
+            .clone()
+    };
+    // The box's centre in its own frame is its origin; in the link's, (0, 0, 0.2).
+    let slip = findings("0 0 0");
+    let named = slip
+        .iter()
+        .find_map(|f| match f {
+            Finding::CenterInGeometryFrame { would_be, .. } => Some(*would_be),
+            _ => None,
+        })
+        .expect("named");
+    assert!(
+        (named - nalgebra::Point3::new(0.0, 0.0, 0.2)).norm() < 1e-12,
+        "{named}"
+    );
+    for right in ["0 0 0.2", "0.01 0 0.21", "0 0.3 0"] {
+        assert!(
+            !codes(&findings(right)).contains(&"center_in_geometry_frame"),
+            "{right}"
+        );
+    }
+    // Along the box's own axis: (0.1, 0, 0) in its frame is (0, 0, 0.1) in the link's, 0.1 m
+    // from its centre, so it is not the slip either.
+    assert!(!codes(&findings("0.1 0 0")).contains(&"center_in_geometry_frame"));
+}

@@ -309,6 +309,13 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
             stated,
             would_be,
         } => json!({"slip": slip_code(*slip), "stated": stated, "would_be": would_be}),
+        F::CenterInGeometryFrame {
+            geometry,
+            stated,
+            would_be,
+        } => json!({
+            "geometry": geometry, "stated": point(stated), "would_be": point(would_be),
+        }),
         F::ImplausibleDensity {
             density,
             volume,

@@ -117,6 +117,21 @@ pub fn finding_text(
                 .collect();
             format!("placeholder inertia: {}", why.join("; "))
         }
+        Finding::CenterInGeometryFrame {
+            geometry: g,
+            stated,
+            would_be,
+        } => format!(
+            "likely frame slip: the stated centre of mass ({}, {}, {}) m is the geometry's centre \
+             in the frame of its {g}, not in the link's; placed by that geometry's origin it is \
+             ({}, {}, {}) m, the geometry's centre",
+            num(stated.x),
+            num(stated.y),
+            num(stated.z),
+            num(would_be.x),
+            num(would_be.y),
+            num(would_be.z)
+        ),
         Finding::LikelyUnitError {
             slip,
             stated,
