@@ -496,8 +496,8 @@ const FRAME_SLIP_NEAR: f64 = 0.02;
 const FRAME_SLIP_FAR: f64 = 0.1;
 
 /// A stated centre that is the geometry's centre in one geometry's own frame rather than the
-/// link's: far from the computed centre, but placed by that geometry's origin (the transform
-/// the author left out), on it.
+/// link's: far from the computed centre and from the link's origin, but placed by that
+/// geometry's origin (the transform the author left out), on it.
 fn frame_slip(
     s: &MassProperties,
     computed: &MassProperties,
@@ -505,7 +505,11 @@ fn frame_slip(
     size: f64,
 ) -> Option<Finding> {
     let c = computed.center_of_mass;
-    if (s.center_of_mass - c).norm() <= FRAME_SLIP_FAR * size {
+    // A centre at the link's origin is the value left by default, not one computed in another
+    // frame: a primitive's own centre is its origin, so every offset primitive would match.
+    if (s.center_of_mass - c).norm() <= FRAME_SLIP_FAR * size
+        || s.center_of_mass.coords.norm() <= FRAME_SLIP_NEAR * size
+    {
         return None;
     }
     ready.iter().find_map(|r| {

@@ -819,29 +819,48 @@ fn the_nearest_inertial_written_back_is_valid() {
 }
 
 /// A stated centre written in a mesh's own frame (its origin left out) is named with the centre
-/// it would be; the same centre written in the link's frame, or a centre simply elsewhere, is
-/// not.
+/// it would be; the centre written in the link's frame, a centre at the link's origin (the
+/// default a primitive's own centre always matches) and one simply elsewhere are not.
 #[test]
-fn a_centre_in_the_geometrys_frame_is_named() {
-    let link = |com: &str| {
-        format!(
-            r#"<robot name="r"><link name="arm"><inertial>
-  <origin xyz="{com}" rpy="0 0 0"/><mass value="2.7"/>
-  <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.002"/></inertial>
-  <collision><origin xyz="0 0 0.2" rpy="0 1.5707963267948966 0"/>
-    <geometry><box size="0.05 0.05 0.3"/></geometry></collision></link></robot>"#
-        )
-    };
+fn a_centre_in_the_meshs_frame_is_named() {
+    let dir = scratch("frame_slip");
+    // A box mesh with a corner at its origin, as CAD exports often are: 0.3 x 0.05 x 0.05 m,
+    // its centre (0.15, 0.025, 0.025) in its own frame. Turned 90 degrees about y and raised
+    // 0.2 m, its centre is (0.025, 0.025, 0.05) in the link's.
+    let corner_cube: String = cube_obj()
+        .lines()
+        .map(|l| match l.strip_prefix("v ") {
+            Some(v) => {
+                let c: Vec<f64> = v
+                    .split(' ')
+                    .map(|x| x.parse::<f64>().expect("a number") + 0.5)
+                    .collect();
+                format!("v {} {} {}\n", c[0], c[1], c[2])
+            }
+            None => format!("{l}\n"),
+        })
+        .collect();
+    std::fs::write(dir.join("bar.obj"), corner_cube).expect("written");
     let findings = |com: &str| {
-        let robot =
-            read_str(&link(com), Path::new("r.urdf"), &ReadOptions::default()).expect("read");
+        let path = dir.join("arm.urdf");
+        std::fs::write(
+            &path,
+            format!(
+                r#"<robot name="r"><link name="arm"><inertial>
+  <origin xyz="{com}" rpy="0 0 0"/><mass value="2.7"/>
+  <inertia ixx="0.001" ixy="0" ixz="0" iyy="0.02" iyz="0" izz="0.02"/></inertial>
+  <collision><origin xyz="0 0 0.2" rpy="0 1.5707963267948966 0"/>
+    <geometry><mesh filename="bar.obj" scale="0.3 0.05 0.05"/></geometry></collision>
+</link></robot>"#
+            ),
+        )
+        .expect("written");
+        let robot = read(&path, &ReadOptions::default()).expect("read");
         audit(&robot, &AuditOptions::default()).links[0]
             .findings
             .clone()
     };
-    // The box's centre in its own frame is its origin; in the link's, (0, 0, 0.2).
-    let slip = findings("0 0 0");
-    let named = slip
+    let named = findings("0.15 0.025 0.025")
         .iter()
         .find_map(|f| match f {
             Finding::CenterInGeometryFrame { would_be, .. } => Some(*would_be),
@@ -849,16 +868,13 @@ fn a_centre_in_the_geometrys_frame_is_named() {
         })
         .expect("named");
     assert!(
-        (named - nalgebra::Point3::new(0.0, 0.0, 0.2)).norm() < 1e-12,
+        (named - nalgebra::Point3::new(0.025, 0.025, 0.05)).norm() < 1e-12,
         "{named}"
     );
-    for right in ["0 0 0.2", "0.01 0 0.21", "0 0.3 0"] {
+    for not_a_slip in ["0.025 0.025 0.05", "0 0 0", "0 0.3 0"] {
         assert!(
-            !codes(&findings(right)).contains(&"center_in_geometry_frame"),
-            "{right}"
+            !codes(&findings(not_a_slip)).contains(&"center_in_geometry_frame"),
+            "{not_a_slip}"
         );
     }
-    // Along the box's own axis: (0.1, 0, 0) in its frame is (0, 0, 0.1) in the link's, 0.1 m
-    // from its centre, so it is not the slip either.
-    assert!(!codes(&findings("0.1 0 0")).contains(&"center_in_geometry_frame"));
 }
