@@ -593,7 +593,7 @@ fn nearest_inertial(
 
 /// The 13 unit directions of a 26-sided discrete oriented polytope: the axes, the face
 /// diagonals and the body diagonals of a cube.
-fn directions() -> Vec<Vector3<f64>> {
+pub(crate) fn directions() -> Vec<Vector3<f64>> {
     let raw = [
         [1.0, 0.0, 0.0],
         [0.0, 1.0, 0.0],

@@ -38,6 +38,8 @@ use clarabel::solver::{DefaultSettings, DefaultSolver, IPSolver, NonnegativeCone
 
 use massprops::MassProperties;
 
+use crate::audit::directions;
+
 /// The ellipsoid {x : (x − center)ᵀ·shape·(x − center) ≤ 1}.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ellipsoid {
@@ -169,24 +171,6 @@ fn khachiyan(points: &[Point3<f64>]) -> Option<Ellipsoid> {
             shape,
         }
     })
-}
-
-/// The 13 directions of a 26-sided polytope (the cube's axes, face and body diagonals).
-fn directions() -> Vec<Vector3<f64>> {
-    let mut v = Vec::new();
-    for x in -1..=1 {
-        for y in -1..=1 {
-            for z in -1..=1 {
-                let d = Vector3::new(f64::from(x), f64::from(y), f64::from(z));
-                // One of each opposite pair: the first non-zero coordinate positive.
-                let first = [x, y, z].into_iter().find(|c| *c != 0);
-                if first == Some(1) {
-                    v.push(d.normalize());
-                }
-            }
-        }
-    }
-    v
 }
 
 /// Which constraint holds the nearest inertial where it is.
