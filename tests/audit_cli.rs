@@ -1,6 +1,7 @@
 //! `inertia-lab audit` end to end: the pybullet Panda's placeholder inertias proved impossible,
 //! the fix loaded by yourdfpy and compiled by MuJoCo with our values, MuJoCo's own inertia of
-//! geoms against our closed forms, and the errors a user sees.
+//! geoms against our closed forms, an SDFormat arm and its fix read by libsdformat, and the errors
+//! a user sees.
 
 mod common;
 
@@ -382,6 +383,11 @@ fn measured_masses_are_weighed_at_named_and_kept_by_both_fixes() {
                 .any(|l| l == "panda_link1"),
             "{mode}"
         );
+        // Well-formed as written: no "--" inside the fix's comments (strict XML refuses it).
+        let text = std::fs::read_to_string(&fixed).expect("written");
+        if let Err(e) = roxmltree::Document::parse(&text) {
+            panic!("{mode}: the fixed file is not well-formed XML: {e}");
+        }
         let again = audit_json(&[&path(&fixed)]);
         let link1 = link(&again, "panda_link1");
         assert_eq!(link1["stated"]["mass"], 3.1, "{mode}");
@@ -518,4 +524,223 @@ fn a_description_that_cannot_be_read_exits_3_naming_the_place() {
         "never over the description itself"
     );
     assert!(String::from_utf8_lossy(&out.stderr).contains("is the description itself"));
+}
+
+/// libsdformat's reader (`tests/consumers/sdf_bodies.cc`), compiled once per run against
+/// Debian's libsdformat 12; `None` (the skip reported) where the headers or g++ are missing.
+fn sdf_bodies(test: &str) -> Option<PathBuf> {
+    static BUILT: std::sync::OnceLock<Result<PathBuf, String>> = std::sync::OnceLock::new();
+    let has = |program: &str, args: &[&str]| {
+        Command::new(program)
+            .args(args)
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    if !has("g++", &["--version"]) || !has("pkg-config", &["--exists", "sdformat12"]) {
+        skip(
+            test,
+            "libsdformat 12's headers, pkg-config or g++ are missing",
+            "apt install libsdformat-dev pkg-config g++",
+        );
+        return None;
+    }
+    let built = BUILT.get_or_init(|| {
+        let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("sdf_bodies");
+        let flags = Command::new("pkg-config")
+            .args(["--cflags", "--libs", "sdformat12"])
+            .output()
+            .map_err(|e| e.to_string())?;
+        let flags = String::from_utf8_lossy(&flags.stdout).into_owned();
+        let compiled = Command::new("g++")
+            .args(["-std=c++17", "-O1"])
+            .arg(root().join("tests/consumers/sdf_bodies.cc"))
+            .args(flags.split_whitespace())
+            .arg("-o")
+            .arg(&out)
+            .output()
+            .map_err(|e| e.to_string())?;
+        if compiled.status.success() {
+            Ok(out)
+        } else {
+            Err(String::from_utf8_lossy(&compiled.stderr).into_owned())
+        }
+    });
+    Some(built.clone().expect("sdf_bodies.cc compiles"))
+}
+
+/// What libsdformat reads of every link of `file` (model://NAME found in `models`).
+fn sdformat_bodies(reader: &Path, file: &Path, models: &Path) -> Value {
+    let out = Command::new(reader)
+        .arg(file)
+        .arg(models)
+        .output()
+        .expect("sdf_bodies runs");
+    assert!(
+        out.status.success(),
+        "libsdformat on {}:\n{}",
+        file.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+/// `audit --json` of an SDFormat file, with `models` on GZ_SIM_RESOURCE_PATH.
+fn audit_sdf(args: &[&str], models: &Path) -> (Value, String) {
+    let mut all = vec!["audit"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    let out = Command::new(env!("CARGO_BIN_EXE_inertia-lab"))
+        .args(&all)
+        .env("GZ_SIM_RESOURCE_PATH", models)
+        .output()
+        .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(out.status.success(), "{stderr}");
+    (serde_json::from_slice(&out.stdout).expect("JSON"), stderr)
+}
+
+/// An SDFormat arm (frames relative_to others, a nested model, a model:// include) read as
+/// libsdformat reads it, link by link; its impossible inertial fixed in place, and the fixed
+/// file read by libsdformat with our values. The included file's link is named, not fixed.
+#[test]
+fn an_sdformat_arm_reads_as_libsdformat_reads_it_and_its_fix_too() {
+    let test = "an_sdformat_arm_reads_as_libsdformat_reads_it_and_its_fix_too";
+    let source = root().join("tests/data/robots/sdf_arm");
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("sdf_arm");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("made");
+    std::fs::copy(source.join("arm.sdf"), dir.join("arm.sdf")).expect("copied");
+    let models = source.join("models");
+    let (original, fixed) = (dir.join("arm.sdf"), dir.join("arm_fixed.sdf"));
+    let (report, stderr) = audit_sdf(
+        &[
+            original.to_str().expect("utf-8"),
+            "--fix",
+            "-o",
+            fixed.to_str().expect("utf-8"),
+        ],
+        &models,
+    );
+    assert_eq!(report["format"], "sdf");
+    assert_eq!(report["fixed"]["links"], serde_json::json!(["upper"]));
+    assert!(
+        stderr.contains("\"hand::finger\" is not fixed") && stderr.contains("gripper"),
+        "{stderr}"
+    );
+    assert!(finding(link(&report, "hand::finger"), "impossible_moment").is_some());
+    let before = std::fs::read_to_string(&original).expect("present");
+    let after = std::fs::read_to_string(&fixed).expect("present");
+    assert_eq!(without_inertials(&before), without_inertials(&after));
+
+    let Some(reader) = sdf_bodies(test) else {
+        return;
+    };
+    // Every link as stated, where libsdformat places it.
+    let theirs = sdformat_bodies(&reader, &original, &models);
+    for name in ["base", "upper", "forearm_model::forearm", "hand::finger"] {
+        let (b, ours) = (&theirs["bodies"][name], link(&report, name));
+        assert_eq!(b["mass"], ours["stated"]["mass"], "{name}");
+        assert!(
+            relative(&b["com"], &ours["stated"]["center_of_mass"]) < 1e-15,
+            "{name}"
+        );
+        assert!(
+            relative(&b["tensor"], &ours["stated"]["inertia"]) < 1e-15,
+            "{name}"
+        );
+        assert!(
+            relative(&b["position"], &ours["pose"]["position"]) < 1e-15,
+            "{name}"
+        );
+        assert!(
+            relative(&b["rotation"], &ours["pose"]["rotation"]) < 1e-15,
+            "{name}"
+        );
+    }
+    // The fix as libsdformat reads it: our computed inertial, to the digits written.
+    let read = sdformat_bodies(&reader, &fixed, &models);
+    let (b, c) = (
+        &read["bodies"]["upper"],
+        &link(&report, "upper")["computed"],
+    );
+    assert!(relative(&b["mass"], &c["mass"]) < 1e-15);
+    assert!(relative(&b["com"], &c["center_of_mass"]) < 1e-15);
+    assert!(
+        relative(&b["tensor"], &c["inertia"]) < 1e-15,
+        "{} vs {}",
+        b["tensor"],
+        c["inertia"]
+    );
+}
+
+/// A xacro gripper (a macro in a file found through `$(find …)` makes both fingers, their mass an
+/// argument) audited through the xacro tool; the fix is a note naming the macro's `<inertial>`
+/// in its source file, and the install line is given when the tool is missing.
+#[test]
+fn a_xacro_description_is_audited_through_xacro_and_fixed_as_a_note() {
+    let test = "a_xacro_description_is_audited_through_xacro_and_fixed_as_a_note";
+    let file = root().join("tests/data/robots/xacro_gripper/gripper.urdf.xacro");
+    let file = file.to_str().expect("utf-8");
+
+    // Without the tool: the one line that installs it.
+    let empty = Path::new(env!("CARGO_TARGET_TMPDIR")).join("no_tools");
+    std::fs::create_dir_all(&empty).expect("made");
+    let out = Command::new(env!("CARGO_BIN_EXE_inertia-lab"))
+        .args(["audit", file])
+        .env("PATH", &empty)
+        .output()
+        .expect("runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{stderr}");
+    assert!(stderr.contains("pip install xacro==2.1.1"), "{stderr}");
+    let out = run(&["audit", file, "--xacro-arg", "finger_mass=0.05"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("NAME:=VALUE"));
+
+    if !common::on_path("xacro") {
+        skip(
+            test,
+            "the xacro tool is not on PATH",
+            "python3 -m venv .venv && .venv/bin/pip install xacro==2.1.1, then put .venv/bin first on PATH",
+        );
+        return;
+    }
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("xacro_fix");
+    std::fs::create_dir_all(&dir).expect("made");
+    let note = dir.join("gripper_fix.txt");
+    let report = audit_json(&[
+        file,
+        "--xacro-arg",
+        "finger_mass:=0.05",
+        "--fix",
+        "-o",
+        note.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(report["format"], "urdf");
+    // The argument reached the macro: both fingers state 0.05 kg, and 0.1 kg·m² on them is
+    // impossible within a 6 cm finger.
+    for name in ["left_finger", "right_finger"] {
+        let l = link(&report, name);
+        assert_eq!(l["stated"]["mass"], 0.05, "{name}");
+        assert!(finding(l, "impossible_moment").is_some(), "{name}");
+    }
+    assert!(finding(link(&report, "palm"), "impossible_moment").is_none());
+    assert_eq!(report["fixed"]["xacro_note"], true);
+    assert_eq!(
+        report["fixed"]["links"],
+        serde_json::json!(["left_finger", "right_finger"])
+    );
+    let text = std::fs::read_to_string(&note).expect("written");
+    // The macro's <inertial> is line 5 of parts.xacro, and it writes both fingers.
+    assert!(text.contains("parts.xacro:5:7"), "{text}");
+    assert!(
+        text.contains("which writes 2 links: left_finger, right_finger"),
+        "{text}"
+    );
+    assert!(text.contains("finger_mass:=0.05"), "{text}");
+    // The box 0.01 × 0.02 × 0.06 m at 0.05 kg: ixx = m(b² + c²)/12.
+    let ixx = 0.05 * (0.02f64.powi(2) + 0.06f64.powi(2)) / 12.0;
+    let computed = &link(&report, "left_finger")["computed"]["inertia"][0][0];
+    assert!((computed.as_f64().expect("number") - ixx).abs() < 1e-15 * ixx.max(1.0));
+    assert_eq!(text.matches("<mass value=\"0.05\"/>").count(), 2, "{text}");
 }

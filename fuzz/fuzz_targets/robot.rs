@@ -1,4 +1,4 @@
-//! URDF and MJCF text through the readers, the audit and the fix.
+//! URDF, MJCF and SDFormat text through the readers, the audit and the fix.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

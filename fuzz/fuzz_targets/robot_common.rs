@@ -1,4 +1,4 @@
-//! What the robot target does with a description's text: read it as URDF or MJCF, audit every
+//! What the robot target does with a description's text: read it as URDF, MJCF or SDFormat, audit every
 //! link (primitives only: no mesh file exists beside it), and write a fix of every link. Any
 //! panic is a bug; errors are the expected answer to bad input. A fix of a description that
 //! reads must read again, with the new inertials.
@@ -24,6 +24,9 @@ pub fn audit_and_fix(text: &str) {
         }
         robot::DescriptionFormat::Mjcf => {
             "<inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/>"
+        }
+        robot::DescriptionFormat::Sdf => {
+            "<inertial>\n  <mass>1</mass>\n  <inertia><ixx>1</ixx><iyy>1</iyy><izz>1</izz></inertia>\n</inertial>"
         }
     };
     let replacements: Vec<Replacement> = (0..robot.links.len())

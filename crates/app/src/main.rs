@@ -41,7 +41,7 @@ enum Command {
     /// unreal, rapier, gltf), with the mesh's units and up axis, and each target's frame,
     /// handedness, units and sign conventions handled.
     Export(cli::export::ExportArgs),
-    /// Audit a robot description (URDF or MJCF): every link's stated inertia against the one
+    /// Audit a robot description (URDF, MJCF or SDFormat): every link's stated inertia against the one
     /// its geometry gives, with findings (impossible, placeholder, implausible…), and --fix -o
     /// FIXED to write it back with the inertials replaced.
     Audit(cli::audit::AuditArgs),

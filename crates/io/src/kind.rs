@@ -9,8 +9,10 @@ use massprops::io::{BODY_FILE_EXTENSION, MESH_FORMATS, MeshFormat};
 
 use crate::wording::alternatives;
 
-/// The extensions of robot descriptions: URDF, and MuJoCo's MJCF as `.xml` (or `.mjcf`).
-pub const ROBOT_EXTENSIONS: &[&str] = &["urdf", "xml", "mjcf"];
+/// The extensions of robot descriptions: URDF (and xacro, which the `xacro` tool expands),
+/// MuJoCo's MJCF as `.xml` (or `.mjcf`), and Gazebo's
+/// SDFormat (`.sdf`).
+pub const ROBOT_EXTENSIONS: &[&str] = &["urdf", "xacro", "xml", "mjcf", "sdf"];
 
 /// What a file holds.
 #[derive(Debug, Clone, Copy)]
@@ -19,7 +21,7 @@ pub enum FileKind {
     Mesh(&'static MeshFormat),
     /// A body file of parts (TOML naming meshes, materials and placements).
     Body,
-    /// A robot description (URDF or MJCF).
+    /// A robot description (URDF, MJCF or SDFormat).
     Robot,
 }
 
@@ -65,11 +67,11 @@ impl Openable {
         all
     }
 
-    /// A file dialog's label for them ("Meshes, bodies and robots (OBJ, STL, TOML, URDF, MJCF)").
+    /// A file dialog's label for them ("Meshes, bodies and robots (OBJ, STL, TOML, URDF, xacro, MJCF, SDF)").
     pub fn label(self) -> String {
         let meshes = MeshFormat::names(", ");
         if self.robots {
-            format!("Meshes, bodies and robots ({meshes}, TOML, URDF, MJCF)")
+            format!("Meshes, bodies and robots ({meshes}, TOML, URDF, xacro, MJCF, SDF)")
         } else {
             format!("Meshes and bodies ({meshes}, TOML with its meshes)")
         }

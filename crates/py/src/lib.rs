@@ -241,7 +241,7 @@ type MassEntry = (String, f64, Option<(f64, f64, f64)>);
 /// (the Python layer parses it and builds the per-link table). Measured masses come from a file
 /// (`masses_file`) or as entries, not both.
 #[pyfunction]
-#[pyo3(signature = (path, geometry, density, assumed_density, packages, masses_file, masses, max_moment_error, max_com_offset, nearest, repairs, threads))]
+#[pyo3(signature = (path, geometry, density, assumed_density, packages, xacro_args, masses_file, masses, max_moment_error, max_com_offset, nearest, repairs, threads))]
 #[allow(clippy::too_many_arguments)]
 fn audit_json(
     py: Python<'_>,
@@ -250,6 +250,7 @@ fn audit_json(
     density: Option<f64>,
     assumed_density: f64,
     packages: Vec<(String, PathBuf)>,
+    xacro_args: Vec<(String, String)>,
     masses_file: Option<PathBuf>,
     masses: Vec<MassEntry>,
     max_moment_error: Option<f64>,
@@ -311,7 +312,14 @@ fn audit_json(
     let (description, report) = py
         .detach(|| {
             on_threads(o.threads, || {
-                let description = robot::read(&path, &robot::ReadOptions { packages })?;
+                let description = robot::read(
+                    &path,
+                    &robot::ReadOptions {
+                        packages,
+                        resource_paths: robot::resource_paths_from_env(),
+                        xacro_args,
+                    },
+                )?;
                 let report = robot::audit(&description, &options);
                 Ok::<_, robot::RobotError>((description, report))
             })

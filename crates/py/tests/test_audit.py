@@ -61,3 +61,27 @@ def test_errors_are_python_errors(tmp_path):
         il.audit(bad)
     with pytest.raises(ValueError, match="geometry"):
         il.audit(PANDA, geometry="both")
+
+
+SDF_ARM = REPO / "tests" / "data" / "robots" / "sdf_arm"
+
+
+def test_sdformat_is_read_with_model_uris_from_packages():
+    test = "test_sdformat_is_read_with_model_uris_from_packages"
+    report = il.audit(SDF_ARM / "arm.sdf", packages={"gripper": SDF_ARM / "models" / "gripper"})
+    assert report["format"] == "sdf"
+    names = [l["name"] for l in report["links"]]
+    assert names == ["base", "upper", "forearm_model::forearm", "hand::finger"]
+    finger = report["links"][3]
+    assert "impossible_moment" in [f["code"] for f in finger["findings"]]
+    assert finger["pose"]["position"] == pytest.approx([0, 0, 0.9], abs=1e-15)
+    cli = cli_audit(test, SDF_ARM / "arm.sdf", "--package", f"gripper={SDF_ARM / 'models' / 'gripper'}")
+    assert report == cli
+
+
+def test_a_xacro_file_is_expanded_with_its_arguments():
+    gripper = REPO / "tests" / "data" / "robots" / "xacro_gripper" / "gripper.urdf.xacro"
+    report = il.audit(gripper, xacro_args={"finger_mass": 0.05})
+    masses = {l["name"]: l["stated"]["mass"] for l in report["links"]}
+    assert masses == {"palm": 0.3, "left_finger": 0.05, "right_finger": 0.05}
+    assert il.audit(gripper)["links"][1]["stated"]["mass"] == 0.02

@@ -91,6 +91,9 @@ pub enum MassBasis {
     GivenDensity(f64),
     /// No mass anywhere: this density was assumed.
     AssumedDensity(f64),
+    /// SDFormat's `<inertial auto="true">`, as Gazebo computes it: the collisions' densities,
+    /// scaled to the `<mass>` where one is written.
+    AutoInertial,
 }
 
 /// A link's mass properties from its geometry.
@@ -305,7 +308,8 @@ fn audit_link(
         .map(|s| MassProperties::new(s.mass, s.center_of_mass, s.inertia));
 
     if link.stated.is_none()
-        && robot.format == DescriptionFormat::Urdf
+        && link.auto_inertial.is_none()
+        && robot.format != DescriptionFormat::Mjcf
         && (link.moving || !ready.is_empty())
     {
         findings.push(Finding::MissingInertial {
@@ -658,12 +662,16 @@ fn computed(
     let measured = options.measured.get(&link.name).map(|m| m.mass);
     let stated_mass =
         measured.or_else(|| link.stated.as_ref().map(|s| s.mass).filter(|m| *m > 0.0));
+    let auto_mass = link.auto_inertial.as_ref().and_then(|a| a.mass);
     let basis = match (options.density, stated_mass, format) {
         (Some(d), ..) => MassBasis::GivenDensity(d),
+        (None, None, _) if link.auto_inertial.is_some() => MassBasis::AutoInertial,
         (None, Some(_), _) if measured.is_some() => MassBasis::MeasuredMass,
         (None, Some(_), _) => MassBasis::StatedMass,
         (None, None, DescriptionFormat::Mjcf) => MassBasis::FileMasses,
-        (None, None, DescriptionFormat::Urdf) => MassBasis::AssumedDensity(options.assumed_density),
+        (None, None, DescriptionFormat::Urdf | DescriptionFormat::Sdf) => {
+            MassBasis::AssumedDensity(options.assumed_density)
+        }
     };
     let masses: Vec<f64> = ready
         .iter()
@@ -673,7 +681,7 @@ fn computed(
                 stated_mass.unwrap_or(0.0) * u.mass / volume
             }
             MassBasis::GivenDensity(d) | MassBasis::AssumedDensity(d) => d * u.mass,
-            MassBasis::FileMasses => match r.geometry.mass {
+            MassBasis::FileMasses | MassBasis::AutoInertial => match r.geometry.mass {
                 GeometryMass::Mass(m) => m,
                 GeometryMass::Density(d) => d * u.mass,
                 GeometryMass::Unstated => options.assumed_density * u.mass,
@@ -699,6 +707,9 @@ fn computed(
         properties = properties
             .with_mass(stated_mass.unwrap_or(properties.mass))
             .map_err(Unweighed::Sum)?;
+    }
+    if let (MassBasis::AutoInertial, Some(m)) = (basis, auto_mass) {
+        properties = properties.with_mass(m).map_err(Unweighed::Sum)?;
     }
     Ok(Computed {
         density: properties.mass / volume,

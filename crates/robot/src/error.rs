@@ -40,10 +40,10 @@ pub enum RobotError {
         /// The parser's words.
         message: String,
     },
-    /// A xacro file: macros that only `xacro` expands.
+    /// A xacro file read from its text alone: only a file on disk can be expanded.
     #[error(
-        "{}:{line}: {what} is xacro's: run xacro first, `xacro {} > robot.urdf`, and audit \
-         the URDF it writes",
+        "{}:{line}: {what} is xacro's: read the file itself, which xacro expands, or run xacro \
+         first, `xacro {} > robot.urdf`",
         file.display(),
         file.display()
     )]
@@ -55,10 +55,29 @@ pub enum RobotError {
         /// What it is.
         what: String,
     },
-    /// Neither `<robot>` (URDF) nor `<mujoco>` (MJCF) at the root.
+    /// A xacro file, and the `xacro` tool is not installed.
     #[error(
-        "{}: the root element is <{root}>; a robot description is a URDF (<robot>) or an MJCF \
-         (<mujoco>) file",
+        "{}: a xacro file, and the xacro tool that expands it is not installed: `{}` installs \
+         it (it runs without ROS)",
+        file.display(),
+        crate::xacro::INSTALL
+    )]
+    XacroMissing {
+        /// The file.
+        file: PathBuf,
+    },
+    /// xacro refused the file.
+    #[error("{}: xacro cannot expand it: {message}", file.display())]
+    XacroFailed {
+        /// The file.
+        file: PathBuf,
+        /// What xacro said.
+        message: String,
+    },
+    /// Neither `<robot>` (URDF), `<mujoco>` (MJCF) nor `<sdf>` (SDFormat) at the root.
+    #[error(
+        "{}: the root element is <{root}>; a robot description is a URDF (<robot>), an MJCF \
+         (<mujoco>) or an SDFormat (<sdf>) file",
         file.display()
     )]
     UnknownFormat {

@@ -90,6 +90,7 @@ pub fn read(root: &Element, mut sources: Vec<SourceFile>) -> Result<Robot, Robot
         links: reader.links,
         unsupported: reader.unsupported,
         inertia_from_geoms: reader.compiler.inertia_from_geoms,
+        xacro: None,
     })
 }
 
@@ -461,6 +462,7 @@ impl Reader {
             pose,
             moving: false,
             stated,
+            auto_inertial: None,
             element: span(e),
             collision: Vec::new(),
             visual: Vec::new(),

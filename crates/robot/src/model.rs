@@ -1,4 +1,4 @@
-//! A robot description as plain data: links (URDF links, MJCF bodies) with their stated
+//! A robot description as plain data: links (URDF and SDFormat links, MJCF bodies) with their stated
 //! inertials and their geometries, each placed in its link's frame, and each link placed in the
 //! robot's frame at the zero pose. Both readers build this; the audit and the fix read only it.
 
@@ -17,6 +17,8 @@ pub enum DescriptionFormat {
     Urdf,
     /// MuJoCo MJCF (`<mujoco>`).
     Mjcf,
+    /// Gazebo's SDFormat (`<sdf>`).
+    Sdf,
 }
 
 impl DescriptionFormat {
@@ -25,6 +27,7 @@ impl DescriptionFormat {
         match self {
             DescriptionFormat::Urdf => "urdf",
             DescriptionFormat::Mjcf => "mjcf",
+            DescriptionFormat::Sdf => "sdf",
         }
     }
 }
@@ -46,6 +49,9 @@ pub struct Robot {
     /// MJCF: the compiler computes every body's inertia from its geoms
     /// (`inertiafromgeom="true"`), ignoring the `<inertial>` elements.
     pub inertia_from_geoms: bool,
+    /// A xacro description: the files and arguments xacro expanded it from; `sources[0]` then
+    /// holds the expansion (its lines are the expansion's), not a file of the user's.
+    pub xacro: Option<crate::xacro::Xacro>,
 }
 
 /// Something in a description that the reader does not model.
@@ -84,12 +90,24 @@ pub struct Link {
     pub moving: bool,
     /// The `<inertial>` as the file states it, if it has one.
     pub stated: Option<Inertial>,
+    /// SDFormat's `<inertial auto="true">`: the simulator computes the inertial from the
+    /// collisions (their densities in [`Geometry::mass`]); `stated` is then `None`.
+    pub auto_inertial: Option<AutoInertial>,
     /// The `<link>`/`<body>` element, where the fix inserts a missing `<inertial>`.
     pub element: Span,
     /// Collision geometry (URDF `<collision>`; MJCF geoms that can collide).
     pub collision: Vec<Geometry>,
     /// Visual geometry (URDF `<visual>`; MJCF geoms with `contype` and `conaffinity` zero).
     pub visual: Vec<Geometry>,
+}
+
+/// An `<inertial auto="true">` (SDFormat 1.11): computed by the simulator from the collisions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AutoInertial {
+    /// The `<mass>` written, which the computed inertial is scaled to (libsdformat 15.2).
+    pub mass: Option<f64>,
+    /// Where it is written.
+    pub at: Location,
 }
 
 /// A stated `<inertial>`, converted to one convention: the tensor about the centre of mass in

@@ -11,13 +11,14 @@
 //! searching upwards from the URDF), `file://…`, or relative to the URDF.
 
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
 
 use crate::ReadOptions;
 use crate::error::RobotError;
 use crate::model::{DescriptionFormat, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Span};
+use crate::paths::resolve_mesh;
 use crate::xml::{Element, SourceFile};
 
 /// Builds the robot of a parsed `<robot>` element.
@@ -86,6 +87,7 @@ pub fn read(
         links,
         unsupported: Vec::new(),
         inertia_from_geoms: false,
+        xacro: None,
     })
 }
 
@@ -142,6 +144,7 @@ fn link(e: &Element, name: &str, dir: &Path, options: &ReadOptions) -> Result<Li
         pose: Isometry3::identity(),
         moving: false,
         stated,
+        auto_inertial: None,
         element: span(e),
         collision: geometries("collision")?,
         visual: geometries("visual")?,
@@ -286,37 +289,6 @@ fn shape(s: &Element, dir: &Path, options: &ReadOptions) -> Result<Shape, RobotE
             what: format!("<{other}> geometry"),
         },
     })
-}
-
-/// Where a URDF mesh file is: the first of the candidates that exists, or every path tried.
-fn resolve_mesh(written: &str, dir: &Path, options: &ReadOptions) -> Result<PathBuf, Vec<PathBuf>> {
-    let mut tried = Vec::new();
-    if let Some(rest) = written.strip_prefix("package://") {
-        let (package, inner) = rest.split_once('/').unwrap_or((rest, ""));
-        for (name, root) in &options.packages {
-            if name == package {
-                tried.push(root.join(inner));
-            }
-        }
-        for ancestor in dir.ancestors() {
-            if ancestor.file_name().is_some_and(|n| n == package) {
-                tried.push(ancestor.join(inner));
-            }
-            tried.push(ancestor.join(package).join(inner));
-        }
-        // Descriptions copied out of their package often keep the package-relative path.
-        tried.push(dir.join(inner));
-    } else if let Some(path) = written.strip_prefix("file://") {
-        // `file:///abs` is absolute; a relative `file://meshes/…` is taken beside the
-        // description, as Gazebo and yourdfpy take it, not in the working folder.
-        tried.push(dir.join(path));
-    } else {
-        tried.push(dir.join(written));
-    }
-    match tried.iter().find(|p| p.is_file()) {
-        Some(found) => Ok(found.clone()),
-        None => Err(tried),
-    }
 }
 
 /// A file's stem, for a model without a name.

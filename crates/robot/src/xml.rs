@@ -40,6 +40,8 @@ pub struct Element {
     pub attributes: Vec<(String, String)>,
     /// Child elements.
     pub children: Vec<Element>,
+    /// Its own text (not its children's), as written: SDFormat's values are element text.
+    pub text: String,
     /// Where its start tag is.
     pub at: Location,
     /// Which source file (an index into the reader's list).
@@ -67,15 +69,26 @@ pub fn parse(text: &str, path: &Path, file: usize) -> Result<(Element, Vec<Lenie
         line: pos.row,
         column: pos.col,
     };
-    // Each fault the engines read past is mended in a copy of the same length (so every byte
-    // range still points into the file as written, for the fix) and parsing starts again.
+    // Each fault the engines read past is mended in a copy, and parsing starts again. Mends keep
+    // the length, except a space put between two attributes: those places are kept, so every
+    // byte range still points into the file as written (for the fix).
     let mut mended = std::borrow::Cow::Borrowed(text);
     let mut leniencies = Vec::new();
+    let mut inserted: Vec<usize> = Vec::new();
     loop {
         match roxmltree::Document::parse_with_options(&mended, options) {
-            Ok(doc) => return Ok((convert(&doc, doc.root_element(), path, file), leniencies)),
+            Ok(doc) => {
+                let places = Places::new(text, inserted);
+                let root = convert(&doc, doc.root_element(), path, file, &places);
+                return Ok((root, leniencies));
+            }
             Err(e) => {
-                let Some((next, what)) = mend(&mended, &e) else {
+                let Some(Mend {
+                    text: next,
+                    what,
+                    space_at,
+                }) = mend(&mended, &e)
+                else {
                     return Err(RobotError::Xml {
                         at: Box::new(at(e.pos())),
                         message: e.to_string(),
@@ -88,6 +101,14 @@ pub fn parse(text: &str, path: &Path, file: usize) -> Result<(Element, Vec<Lenie
                         message: e.to_string(),
                     });
                 }
+                if let Some(p) = space_at {
+                    for q in &mut inserted {
+                        if *q >= p {
+                            *q += 1;
+                        }
+                    }
+                    inserted.push(p);
+                }
                 leniencies.push(Leniency {
                     at: at(e.pos()),
                     what,
@@ -98,10 +119,87 @@ pub fn parse(text: &str, path: &Path, file: usize) -> Result<(Element, Vec<Lenie
     }
 }
 
+/// Places in the file as written, from places in its mended copy.
+struct Places<'a> {
+    text: &'a str,
+    /// The byte where each line starts.
+    line_starts: Vec<usize>,
+    /// Where the mended copy has a byte the file lacks, sorted.
+    inserted: Vec<usize>,
+}
+
+impl<'a> Places<'a> {
+    fn new(text: &'a str, mut inserted: Vec<usize>) -> Self {
+        inserted.sort_unstable();
+        let line_starts = std::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        Places {
+            text,
+            line_starts,
+            inserted,
+        }
+    }
+
+    /// The byte of the file that byte `at` of the mended copy stands for.
+    fn original(&self, at: usize) -> usize {
+        at - self.inserted.partition_point(|&q| q < at)
+    }
+
+    /// One-based line and column (in characters) of byte `at` of the file.
+    fn line_column(&self, at: usize) -> (u32, u32) {
+        let line = self.line_starts.partition_point(|&s| s <= at);
+        let start = self.line_starts[line - 1];
+        let column = self
+            .text
+            .get(start..at)
+            .map_or(at - start, |s| s.chars().count())
+            + 1;
+        (
+            u32::try_from(line).unwrap_or(u32::MAX),
+            u32::try_from(column).unwrap_or(u32::MAX),
+        )
+    }
+}
+
+/// A fault mended: the new text, what was done, and where a space was put in (the one mend
+/// that changes the length).
+struct Mend {
+    text: String,
+    what: String,
+    space_at: Option<usize>,
+}
+
+impl Mend {
+    fn same_length(text: String, what: impl Into<String>) -> Option<Self> {
+        Some(Mend {
+            text,
+            what: what.into(),
+            space_at: None,
+        })
+    }
+}
+
 /// `text` with the fault `e` mended as MuJoCo's TinyXML2 and urdfdom read it, in the same number
 /// of bytes, and what was done; `None` for a fault they refuse too.
-fn mend(text: &str, e: &roxmltree::Error) -> Option<(String, String)> {
+fn mend(text: &str, e: &roxmltree::Error) -> Option<Mend> {
     match e {
+        // `name="a"type="b"`: TinyXML2 and urdfdom read the second attribute all the same.
+        roxmltree::Error::InvalidChar2("a whitespace", _, pos) => {
+            let at = byte_at(text, *pos)?;
+            if !matches!(text.as_bytes().get(at.checked_sub(1)?), Some(b'"' | b'\'')) {
+                return None;
+            }
+            let mut out = String::with_capacity(text.len() + 1);
+            out.push_str(&text[..at]);
+            out.push(' ');
+            out.push_str(&text[at..]);
+            Some(Mend {
+                text: out,
+                what: "no space between two attributes: read as two attributes".to_owned(),
+                space_at: Some(at),
+            })
+        }
         // `drake:acceleration="…"` without xmlns:drake (airo-models' UR5e): the prefix is part
         // of the name, as for a parser without namespaces.
         roxmltree::Error::UnknownNamespace(prefix, _) => {
@@ -120,12 +218,12 @@ fn mend(text: &str, e: &roxmltree::Error) -> Option<(String, String)> {
                 }
             }
             out.push_str(&text[rest..]);
-            Some((
+            Mend::same_length(
                 out,
                 format!(
                     "the namespace prefix {prefix}: is not declared: read as part of the names"
                 ),
-            ))
+            )
         }
         // `--` inside a comment: TinyXML2 reads the comment to its `-->`.
         roxmltree::Error::InvalidComment(_) => {
@@ -140,10 +238,7 @@ fn mend(text: &str, e: &roxmltree::Error) -> Option<(String, String)> {
                 rest = &body[end..];
             }
             out.push_str(rest);
-            Some((
-                out,
-                "a comment holds \"--\": read to its \"-->\"".to_owned(),
-            ))
+            Mend::same_length(out, "a comment holds \"--\": read to its \"-->\"")
         }
         // `<?xml …?>` after blank lines: the declaration is read past.
         roxmltree::Error::UnexpectedDeclaration(_) => {
@@ -155,10 +250,7 @@ fn mend(text: &str, e: &roxmltree::Error) -> Option<(String, String)> {
             let mut out = text[..start].to_owned();
             out.extend(std::iter::repeat_n(' ', end - start));
             out.push_str(&text[end..]);
-            Some((
-                out,
-                "the XML declaration comes after blank text: read past".to_owned(),
-            ))
+            Mend::same_length(out, "the XML declaration comes after blank text: read past")
         }
         // NUL bytes after the root element (pybullet's humanoid.urdf ends with one): TinyXML
         // stops at a NUL, as C strings do.
@@ -170,12 +262,23 @@ fn mend(text: &str, e: &roxmltree::Error) -> Option<(String, String)> {
             }
             let mut out = content.to_owned();
             out.extend(tail.chars().map(|c| if c == '\0' { ' ' } else { c }));
-            Some((
-                out,
-                "NUL bytes after the root element: read past".to_owned(),
-            ))
+            Mend::same_length(out, "NUL bytes after the root element: read past")
         }
         _ => None,
+    }
+}
+
+/// The byte of `text` at a parser's line and column (in characters).
+fn byte_at(text: &str, pos: roxmltree::TextPos) -> Option<usize> {
+    let line_start = if pos.row <= 1 {
+        0
+    } else {
+        text.match_indices('\n').nth(pos.row as usize - 2)?.0 + 1
+    };
+    let column = pos.col.checked_sub(1)? as usize;
+    match text[line_start..].char_indices().nth(column) {
+        Some((i, _)) => Some(line_start + i),
+        None => Some(text.len()),
     }
 }
 
@@ -184,8 +287,10 @@ fn convert(
     node: roxmltree::Node<'_, '_>,
     path: &Path,
     file: usize,
+    places: &Places<'_>,
 ) -> Element {
-    let pos = doc.text_pos_at(node.range().start);
+    let range = places.original(node.range().start)..places.original(node.range().end);
+    let (line, column) = places.line_column(range.start);
     let tag = node.tag_name();
     Element {
         name: tag.name().to_owned(),
@@ -197,15 +302,20 @@ fn convert(
         children: node
             .children()
             .filter(roxmltree::Node::is_element)
-            .map(|c| convert(doc, c, path, file))
+            .map(|c| convert(doc, c, path, file, places))
+            .collect(),
+        text: node
+            .children()
+            .filter(roxmltree::Node::is_text)
+            .filter_map(|t| t.text())
             .collect(),
         at: Location {
             file: path.to_owned(),
-            line: pos.row,
-            column: pos.col,
+            line,
+            column,
         },
         file,
-        range: node.range(),
+        range,
     }
 }
 
@@ -295,6 +405,33 @@ impl Element {
     pub fn required_number(&self, name: &str) -> Result<f64, RobotError> {
         self.number(name)?
             .ok_or_else(|| self.wrong(format!("the attribute {name} is missing")))
+    }
+
+    /// The text of child `name` as `N` finite numbers separated by white space, if present.
+    pub fn child_numbers<const N: usize>(
+        &self,
+        name: &str,
+    ) -> Result<Option<[f64; N]>, RobotError> {
+        self.child(name)
+            .map(|c| {
+                numbers(&c.text)
+                    .and_then(|xs| {
+                        <[f64; N]>::try_from(xs)
+                            .map_err(|xs| format!("expected {N} number(s), found {}", xs.len()))
+                    })
+                    .map_err(|problem| c.wrong(format!("\"{}\": {problem}", c.text.trim())))
+            })
+            .transpose()
+    }
+
+    /// The text of child `name` as one finite number, if present.
+    pub fn child_number(&self, name: &str) -> Result<Option<f64>, RobotError> {
+        Ok(self.child_numbers::<1>(name)?.map(|[x]| x))
+    }
+
+    /// The trimmed text of child `name`, if present.
+    pub fn child_text(&self, name: &str) -> Option<&str> {
+        self.child(name).map(|c| c.text.trim())
     }
 
     /// Attribute `name` as any count of finite numbers, if present.

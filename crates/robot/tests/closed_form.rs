@@ -136,6 +136,7 @@ fn a_scaled_mesh_is_found_through_its_package_and_weighed_exactly() {
     assert!(tried.iter().all(|p| p.ends_with("meshes/cube.obj")));
     let options = ReadOptions {
         packages: vec![("elsewhere".into(), other.join("store"))],
+        ..ReadOptions::default()
     };
     let found = read(&lone, &options).expect("present");
     let c = audit(&found, &AuditOptions::default()).links[0]
@@ -641,9 +642,45 @@ fn xml_the_engines_accept_is_read_with_its_faults_named() {
         "{:?}",
         with_nul.sources[0].read_leniently
     );
-    // Two attributes run together are still refused: no mend of the same length reads them.
-    let joined = urdf.replace("name=\"a\" drake", "name=\"a\"drake");
-    assert!(read_str(&joined, Path::new("r.urdf"), &ReadOptions::default()).is_err());
+    // Two attributes run together, twice on one line (the second `name="b"type=…` after the
+    // first space is put in): read, every element at its place in the file as written, and the
+    // fix splices the file's own bytes.
+    let joined = urdf.replace("name=\"a\" drake", "name=\"a\"drake").replace(
+        "<box size=\"1 2 3\"/>",
+        "<box size=\"1 2 3\"name=\"b\"x=\"1\"/>",
+    );
+    let robot = read_str(&joined, Path::new("r.urdf"), &ReadOptions::default()).expect("read");
+    let spaces = robot.sources[0]
+        .read_leniently
+        .iter()
+        .filter(|l| l.what.contains("no space between two attributes"))
+        .count();
+    assert_eq!(spaces, 3, "{:?}", robot.sources[0].read_leniently);
+    let link = &robot.links[0];
+    assert!(joined[link.element.range.clone()].starts_with("<link name=\"a\"drake"));
+    assert!(joined[link.element.range.clone()].ends_with("</link>"));
+    let inertial = link.stated.as_ref().expect("stated");
+    assert!(joined[inertial.span.range.clone()].starts_with("<inertial><mass value=\"6\"/>"));
+    assert_eq!(
+        (inertial.span.at.line, inertial.span.at.column),
+        (6, 31),
+        "the inertial's place in the file as written"
+    );
+    let fixed = robot::fix::splice(
+        &robot,
+        &[robot::fix::Replacement {
+            link: 0,
+            text: "<inertial><mass value=\"7\"/></inertial>".to_owned(),
+        }],
+    )
+    .expect("spliced");
+    assert_eq!(
+        fixed,
+        joined.replace(
+            &joined[inertial.span.range.clone()],
+            "<inertial><mass value=\"7\"/></inertial>"
+        )
+    );
 }
 
 /// Unit and typing slips named with the value they would have: a 0.1 × 0.2 × 0.3 m aluminium

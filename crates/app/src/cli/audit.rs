@@ -14,6 +14,7 @@ use massprops::MassProperties;
 use robot::Measured;
 use robot::fix::{Replacement, splice};
 use robot::nearest::Nearest;
+use robot::xacro::Xacro;
 use robot::{
     Audit, AuditOptions, DescriptionFormat, GeometryKind, LinkAudit, ReadOptions, Robot, audit,
 };
@@ -44,7 +45,8 @@ pub enum FixMode {
 /// Arguments of `audit`.
 #[derive(Args, Debug)]
 pub struct AuditArgs {
-    /// The robot: a URDF (.urdf) or MJCF (.xml) file. Run xacro first on a .xacro file.
+    /// The robot: a URDF (.urdf), MJCF (.xml) or SDFormat (.sdf) file; a xacro file is
+    /// expanded by the xacro tool first (pip install xacro).
     pub file: PathBuf,
     /// Which geometry a link's shape is taken from.
     #[arg(long, value_enum, default_value_t = GeometryArg::Collision)]
@@ -59,6 +61,9 @@ pub struct AuditArgs {
     /// searched for upwards from the URDF.
     #[arg(long = "package", value_name = "NAME=DIR")]
     pub packages: Vec<String>,
+    /// An argument for xacro, NAME:=VALUE (repeatable), when the description is a xacro file.
+    #[arg(long = "xacro-arg", value_name = "NAME:=VALUE")]
+    pub xacro_args: Vec<String>,
     /// Flag a stated tensor whose relative error against the uniform-density one exceeds this
     /// fraction (off by default: uniform density is only an estimate for a link full of motors).
     #[arg(long, value_name = "FRACTION")]
@@ -130,6 +135,18 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
                     .ok_or_else(|| CliError::Usage(format!("--package takes NAME=DIR, not {p:?}")))
             })
             .collect::<Result<_, _>>()?,
+        resource_paths: robot::resource_paths_from_env(),
+        xacro_args: args
+            .xacro_args
+            .iter()
+            .map(|a| {
+                a.split_once(":=")
+                    .map(|(n, v)| (n.to_owned(), v.to_owned()))
+                    .ok_or_else(|| {
+                        CliError::Usage(format!("--xacro-arg takes NAME:=VALUE, not {a:?}"))
+                    })
+            })
+            .collect::<Result<_, _>>()?,
     };
     if args.fix
         && let Some(out) = &args.output
@@ -192,14 +209,23 @@ pub fn run(args: &AuditArgs) -> Result<(), CliError> {
     if args.json {
         let mut v = json_report(&file, &robot, &report);
         if let Some((path, links)) = &fixed {
-            v["fixed"] = json!({"file": path.display().to_string(), "links": links});
+            v["fixed"] = json!({
+                "file": path.display().to_string(),
+                "links": links,
+                "xacro_note": robot.xacro.is_some(),
+            });
         }
         println!("{}", serde_json::to_string_pretty(&v).unwrap_or_default());
     } else {
         print!("{}", table(&file, &robot, &report));
         if let Some((path, links)) = &fixed {
             println!(
-                "\nFixed {} link(s) ({}) written to {}",
+                "\n{} {} link(s) ({}) written to {}",
+                if robot.xacro.is_some() {
+                    "A note for the xacro sources fixing"
+                } else {
+                    "Fixed"
+                },
                 links.len(),
                 links.join(", "),
                 path.display()
@@ -258,12 +284,20 @@ fn write_fix(
     let format = match robot.format {
         DescriptionFormat::Urdf => export::Format::Urdf,
         DescriptionFormat::Mjcf => export::Format::Mjcf,
+        DescriptionFormat::Sdf => export::Format::Sdf,
     };
     let kind = report.options.geometry.name();
     let mut replacements = Vec::new();
     let mut changed = Vec::new();
     for l in report.links.iter().filter(|l| chosen(l)) {
         let name = &robot.links[l.link].name;
+        if robot.links[l.link].auto_inertial.is_some() {
+            eprintln!(
+                "warning: link {name:?} is not fixed: its <inertial auto=\"true\"> is computed \
+                 by the simulator from its collisions"
+            );
+            continue;
+        }
         let c = match &l.computed {
             Ok(c) => c,
             Err(why) => {
@@ -306,7 +340,7 @@ fn write_fix(
                 if measured_center.is_some() {
                     comment = comment.replace(
                         " -->",
-                        " The centre of mass is the measured one (--masses); the tensor is the \
+                        " The centre of mass is the measured one (the masses file); the tensor is the \
                          geometry's about its own centre. -->",
                     );
                 }
@@ -373,10 +407,82 @@ fn write_fix(
              <inertial>, the fixed ones too; set it to \"auto\" for them to count"
         );
     }
-    let text = splice(robot, &replacements).map_err(|e| CliError::Input(e.to_string()))?;
+    let text = match &robot.xacro {
+        Some(x) => xacro_note(robot, x, &replacements),
+        None => splice(robot, &replacements).map_err(|e| CliError::Input(e.to_string()))?,
+    };
     std::fs::write(out, text)
         .map_err(|e| CliError::Runtime(format!("cannot write {}: {e}", out.display())))?;
     Ok((out.to_owned(), changed))
+}
+
+/// The fix of a xacro description, as a note: the expansion is not the user's file, so each
+/// link's new `<inertial>` is given with the place in the `.xacro` sources that writes it.
+fn xacro_note(robot: &Robot, x: &Xacro, replacements: &[Replacement]) -> String {
+    let main = x
+        .sources
+        .first()
+        .map_or_else(String::new, |p| p.display().to_string());
+    let args = if x.args.is_empty() {
+        String::new()
+    } else {
+        format!(
+            " with {}",
+            x.args
+                .iter()
+                .map(|(k, v)| format!("{k}:={v}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+        )
+    };
+    let mut note = format!(
+        "inertia-lab audit --fix: {main} is a xacro file, audited as xacro expands it{args}.\n\
+         The expansion is not a file of yours, so this note gives each fixed link's new \
+         <inertial> and where the .xacro sources write the link: change it there.\n"
+    );
+    let names: Vec<&str> = robot.links.iter().map(|l| l.name.as_str()).collect();
+    for r in replacements {
+        let name = &robot.links[r.link].name;
+        let place = match robot::xacro::origins(&x.sources, name).as_slice() {
+            [] => "not found in the sources by its name: a macro builds it; search for the \
+                   macro that writes this link"
+                .to_owned(),
+            found => found
+                .iter()
+                .map(|o| {
+                    let shared: Vec<&str> = names
+                        .iter()
+                        .copied()
+                        .filter(|n| robot::xacro::pattern_matches(&o.written_name, n))
+                        .collect();
+                    let what = match &o.inertial {
+                        Some(at) => format!("its <inertial> is at {at}"),
+                        None => format!(
+                            "the link at {} writes no <inertial> of its own (a macro call \
+                             inside it does: give the call these values)",
+                            o.link
+                        ),
+                    };
+                    if shared.len() > 1 {
+                        format!(
+                            "{what}, in <link name=\"{}\">, which writes {} links: {}",
+                            o.written_name,
+                            shared.len(),
+                            shared.join(", ")
+                        )
+                    } else {
+                        what
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join("; or "),
+        };
+        note.push_str(&format!(
+            "\nlink \"{name}\": {place}\n{}\n",
+            r.text.trim_end()
+        ));
+    }
+    note
 }
 
 /// How far apart two tensors are: ‖I_a − I_b‖_F / ‖I_b‖_F.
@@ -393,7 +499,7 @@ const NEAREST_UNCERTAINTY: f64 = 0.5;
 fn nearest_comment(l: &LinkAudit, n: &Nearest, measured: Option<&Measured>) -> String {
     let held: Vec<String> = n.held_by.iter().map(held_text).collect();
     let mass = match measured {
-        Some(_) => "mass as measured (--masses; the stated tensor scaled to it)",
+        Some(_) => "mass as measured (the masses file; the stated tensor scaled to it)",
         None => "mass kept",
     };
     let center = if n.center_kept {

@@ -34,8 +34,13 @@ pub struct RobotModel {
 /// The description cannot be read (the message names file, line and element), or no link has
 /// geometry that can be drawn.
 pub fn load(path: &Path) -> Result<(RobotModel, LoadedBody), LabError> {
-    let robot =
-        robot::read(path, &ReadOptions::default()).map_err(|e| LabError::Robot(e.to_string()))?;
+    // Gazebo's model folders, as the command line finds them; a xacro file is expanded with
+    // its arguments' defaults.
+    let options = ReadOptions {
+        resource_paths: robot::resource_paths_from_env(),
+        ..ReadOptions::default()
+    };
+    let robot = robot::read(path, &options).map_err(|e| LabError::Robot(e.to_string()))?;
     let audit = robot::audit(&robot, &AuditOptions::default());
     let model = RobotModel {
         robot: Arc::new(robot),

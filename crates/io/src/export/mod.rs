@@ -283,7 +283,8 @@ pub fn export(
 
 /// A robot description's `<inertial>` element alone, for a body already in the description's
 /// frame and units (metres, Z-up link axes): URDF in link axes (the full tensor, `rpy` zero),
-/// MJCF in principal axes (`quat` and `diaginertia`, which MuJoCo keeps as written). What the
+/// MJCF in principal axes (`quat` and `diaginertia`, which MuJoCo keeps as written), SDFormat
+/// as URDF. What the
 /// audit's `--fix` writes in place of a link's inertial.
 pub fn inertial_element(props: &MassProperties, format: Format) -> Result<String, ExportError> {
     let body = frames::convert(
@@ -297,6 +298,7 @@ pub fn inertial_element(props: &MassProperties, format: Format) -> Result<String
     )?;
     Ok(match format {
         Format::Mjcf => mjcf::element(&body, Frame::ComPrincipal),
+        Format::Sdf => sdf::element(&body, Frame::Origin),
         _ => urdf::element(&body, Frame::Origin),
     })
 }

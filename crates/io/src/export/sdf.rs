@@ -16,14 +16,6 @@ use super::frames::{Converted, num, roll_pitch_yaw};
 
 /// The `<inertial>` element, preceded by a comment stating the conventions.
 pub fn render(body: &Converted, frame: Frame) -> String {
-    let (rpy, i) = match frame {
-        Frame::Origin => ([0.0; 3], body.inertia),
-        Frame::ComPrincipal => (
-            roll_pitch_yaw(&body.principal),
-            nalgebra::Matrix3::from_diagonal(&body.moments),
-        ),
-    };
-    let c = &body.center_of_mass;
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -37,6 +29,21 @@ pub fn render(body: &Converted, frame: Frame) -> String {
             Frame::ComPrincipal => "principal axes (diagonal tensor)",
         }
     );
+    s.push_str(&element(body, frame));
+    s
+}
+
+/// The `<inertial>` element alone, ending with a newline.
+pub fn element(body: &Converted, frame: Frame) -> String {
+    let (rpy, i) = match frame {
+        Frame::Origin => ([0.0; 3], body.inertia),
+        Frame::ComPrincipal => (
+            roll_pitch_yaw(&body.principal),
+            nalgebra::Matrix3::from_diagonal(&body.moments),
+        ),
+    };
+    let c = &body.center_of_mass;
+    let mut s = String::new();
     let _ = writeln!(s, "<inertial>");
     let _ = writeln!(
         s,

@@ -31,6 +31,14 @@ pub fn basis_text(c: &robot::Computed) -> String {
         MassBasis::FileMasses => {
             "the geoms' own masses and densities (every geom, visual ones too, as MuJoCo weighs a body without an inertial)".to_owned()
         }
+        MassBasis::AutoInertial => format!(
+            "<inertial auto=\"true\">, as Gazebo computes it: the collisions' densities{}",
+            if (c.density - 1000.0).abs() > 1e-9 {
+                format!(", {} kg/m^3 on average", significant(c.density, 6))
+            } else {
+                String::new()
+            }
+        ),
         MassBasis::GivenDensity(d) => format!("the density given, {} kg/m^3", significant(d, 6)),
         MassBasis::AssumedDensity(d) => {
             format!(
@@ -374,6 +382,7 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
                         MassBasis::FileMasses => "file_masses",
                         MassBasis::GivenDensity(_) => "given_density",
                         MassBasis::AssumedDensity(_) => "assumed_density",
+                        MassBasis::AutoInertial => "auto_inertial",
                     });
                     v
                 }
@@ -384,6 +393,11 @@ pub fn json_report(file: &str, robot: &Robot, report: &Audit) -> Value {
                 "parent": link.parent.map(|p| robot.links[p].name.clone()),
                 "moving": link.moving,
                 "line": link.element.at.line,
+                "pose": json!({
+                    "position": vector(&link.pose.translation.vector),
+                    "rotation": rows(link.pose.rotation.to_rotation_matrix().matrix()),
+                }),
+                "auto_inertial": link.auto_inertial.as_ref().map(|a| json!({"mass": a.mass})),
                 "stated": l.stated.as_ref().map(properties_json),
                 "computed": computed,
                 "not_weighed": l.computed.as_ref().err().map(|u| unweighed_text(u, kind)),

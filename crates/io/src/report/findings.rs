@@ -20,10 +20,12 @@ pub fn finding_text(
     match f {
         Finding::MissingInertial { moving: true } => "no <inertial>: a moving link without \
              mass, so every dynamics call treats it as weightless (simulators substitute a \
-             default or refuse it)"
+             default, Gazebo 1 kg and 1 kg*m^2, or refuse it)"
             .to_owned(),
         Finding::MissingInertial { moving: false } => {
-            "no <inertial> on a link with geometry: its mass is left out of the robot's".to_owned()
+            "no <inertial> on a link with geometry: its mass is left out of the robot's (or, \
+             in Gazebo, is a default 1 kg)"
+                .to_owned()
         }
         Finding::NonpositiveMass { mass } => {
             format!(

@@ -7,7 +7,7 @@ mass, from Python.
 - ``measure_table(batch, ...)``: an Arrow table of files in, the batch table out, one row each;
 - ``measure_files(paths, out, ...)``: a folder of files into resumable Parquet shards;
 - ``mesh_files(folder_or_glob)``: the files ``measure_files`` would measure, for an engine;
-- ``audit(path, ...)`` / ``audit_table(paths, ...)``: robot descriptions (URDF, MJCF) as
+- ``audit(path, ...)`` / ``audit_table(paths, ...)``: robot descriptions (URDF, MJCF, SDFormat) as
   ``inertia-lab audit --json`` audits them, as a dict or one Arrow row per link;
 - ``MassResult``: one body's numbers, ``to_dict()`` (``props --json``'s object) and exports.
 

@@ -40,6 +40,7 @@ def audit(
     density: Union[float, None] = None,
     assumed_density: float = 1000.0,
     packages: Union[Mapping[str, PathLike], None] = None,
+    xacro_args: Union[Mapping[str, str], None] = None,
     masses: Union[PathLike, Mapping[str, MeasuredMass], None] = None,
     max_moment_error: Union[float, None] = None,
     max_com_offset: Union[float, None] = None,
@@ -47,11 +48,13 @@ def audit(
     repairs: Union[Repairs, dict[str, Any], None] = None,
     threads: Union[int, None] = None,
 ) -> dict:
-    """Audits a URDF or MJCF file as ``inertia-lab audit --json`` does and returns its object
+    """Audits a URDF, MJCF or SDFormat file as ``inertia-lab audit --json`` does and returns its object
     (schema ``inertia-lab/audit``, docs/audit.md): each link's stated inertial beside the one
     its geometry gives, with findings (two of them proofs that the stated inertia is impossible).
 
-    ``packages`` maps ``package://NAME`` to a folder; ``masses`` is a CSV or TOML file, or a dict
+    ``packages`` maps ``package://NAME`` (and ``model://NAME``, ``$(find NAME)``) to a folder;
+    a xacro file is expanded by the ``xacro`` tool with ``xacro_args`` (``{name: value}``);
+    ``masses`` is a CSV or TOML file, or a dict
     ``{link: kg}`` / ``{link: (kg, (x, y, z))}``, of measured masses; ``nearest=True`` adds each
     link's nearest valid inertial. Raises ``FileNotFoundError`` / ``OSError`` when the file
     cannot be read and ``ValueError`` when it is not a description that can be read.
@@ -63,6 +66,7 @@ def audit(
         None if density is None else float(density),
         float(assumed_density),
         [(str(k), os.fspath(v)) for k, v in (packages or {}).items()],
+        [(str(k), str(v)) for k, v in (xacro_args or {}).items()],
         masses_file,
         entries,
         None if max_moment_error is None else float(max_moment_error),

@@ -1,4 +1,4 @@
-//! The Robot section: a loaded URDF or MJCF description's links, worst finding first, each with
+//! The Robot section: a loaded URDF, MJCF or SDFormat description's links, worst finding first, each with
 //! its findings; choosing one makes it the body (its stated inertia then a source of its own),
 //! and "Whole robot" shows every link at the zero pose with its ellipsoids.
 

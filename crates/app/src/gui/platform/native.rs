@@ -139,7 +139,7 @@ pub struct GuiArgs {
     /// textbook model), drawn as ghosts with their plot curves (to measure what they cost).
     #[arg(long, value_name = "N", requires = "bench_frames", value_parser = clap::value_parser!(u8).range(1..=3))]
     pub bench_ghosts: Option<u8>,
-    /// With a robot description (URDF or MJCF): show this link as the body.
+    /// With a robot description (URDF, MJCF or SDFormat): show this link as the body.
     #[arg(long, value_name = "NAME", requires = "file")]
     pub link: Option<String>,
     /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
