@@ -79,7 +79,7 @@ pub fn parse(text: &str, path: &Path, file: usize) -> Result<(Element, Vec<Lenie
         match roxmltree::Document::parse_with_options(&mended, options) {
             Ok(doc) => {
                 let places = Places::new(text, inserted);
-                let root = convert(&doc, doc.root_element(), path, file, &places);
+                let root = convert(doc.root_element(), path, file, &places);
                 return Ok((root, leniencies));
             }
             Err(e) => {
@@ -283,7 +283,6 @@ fn byte_at(text: &str, pos: roxmltree::TextPos) -> Option<usize> {
 }
 
 fn convert(
-    doc: &roxmltree::Document<'_>,
     node: roxmltree::Node<'_, '_>,
     path: &Path,
     file: usize,
@@ -302,7 +301,7 @@ fn convert(
         children: node
             .children()
             .filter(roxmltree::Node::is_element)
-            .map(|c| convert(doc, c, path, file, places))
+            .map(|c| convert(c, path, file, places))
             .collect(),
         text: node
             .children()
