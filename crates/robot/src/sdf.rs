@@ -168,7 +168,10 @@ impl Reader<'_> {
 
     fn add_frame(&mut self, e: &Element, key: String, placed: Placed) -> Result<(), RobotError> {
         if self.frames.contains_key(&key) {
-            return Err(e.wrong(format!("a second frame named \"{key}\"")));
+            return Err(e.wrong(format!(
+                "a second <{}> (or other frame) named \"{key}\"",
+                e.name
+            )));
         }
         self.frames.insert(
             key,
@@ -205,6 +208,9 @@ impl Reader<'_> {
         placed: Placed,
     ) -> Result<(), RobotError> {
         let inner = scoped(scope, name);
+        if self.frames.contains_key(&inner) {
+            return Err(e.wrong(format!("a second model (or frame) named \"{inner}\"")));
+        }
         self.add_frame(e, scoped(&inner, MODEL_FRAME), placed)?;
         self.add_frame(
             e,

@@ -10,6 +10,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use crate::ReadOptions;
 use crate::error::{Location, RobotError};
@@ -72,10 +73,11 @@ def get_package_share_directory(package_name, print_warning=True):
 /// Runs xacro on `path` with `options.xacro_args`.
 pub fn expand(path: &Path, options: &ReadOptions) -> Result<Expanded, RobotError> {
     let dir = path.parent().map(Path::to_owned).unwrap_or_default();
-    let shim = package_index_dir().map_err(|e| RobotError::XacroFailed {
+    let index = PackageIndex::write().map_err(|e| RobotError::XacroFailed {
         file: path.to_owned(),
         message: format!("cannot write the package index for $(find): {e}"),
     })?;
+    let shim = index.0.clone();
     // Every folder each package may be, nearest first; the stand-in takes the first that exists.
     let mut packages = String::from("{");
     let names = package_names(path);
@@ -190,14 +192,28 @@ fn json_string(s: &str) -> String {
     out
 }
 
-/// A folder holding the stand-in package index, written once per process.
-fn package_index_dir() -> std::io::Result<PathBuf> {
-    let dir = std::env::temp_dir().join(format!("inertia-lab-xacro-{}", std::process::id()));
-    let module = dir.join("ament_index_python");
-    std::fs::create_dir_all(&module)?;
-    std::fs::write(module.join("__init__.py"), "")?;
-    std::fs::write(module.join("packages.py"), PACKAGE_INDEX)?;
-    Ok(dir)
+/// A folder holding the stand-in package index, removed when dropped.
+struct PackageIndex(PathBuf);
+
+impl PackageIndex {
+    /// Writes one for a single run of xacro (unique per call, so that threads do not share).
+    fn write() -> std::io::Result<Self> {
+        static NEXT: AtomicUsize = AtomicUsize::new(0);
+        let n = NEXT.fetch_add(1, Ordering::Relaxed);
+        let dir =
+            std::env::temp_dir().join(format!("inertia-lab-xacro-{}-{n}", std::process::id()));
+        let module = dir.join("ament_index_python");
+        std::fs::create_dir_all(&module)?;
+        std::fs::write(module.join("__init__.py"), "")?;
+        std::fs::write(module.join("packages.py"), PACKAGE_INDEX)?;
+        Ok(PackageIndex(dir))
+    }
+}
+
+impl Drop for PackageIndex {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }
 
 /// Where the `.xacro` sources write the expanded link `name`: every `<link>` whose `name`,

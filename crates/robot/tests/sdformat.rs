@@ -232,6 +232,11 @@ fn sdformat_errors_name_the_file_line_and_frame() {
 <joint name="j" type="fixed"><parent>a</parent><child>b</child></joint></model></sdf>"#,
             "no link or frame is named \"b\"",
         ),
+        (
+            r#"<sdf version="1.6"><world name="w"><model name="a"><link name="l"/></model>
+<model name="a"><link name="l"/></model></world></sdf>"#,
+            "a second model (or frame) named \"a\"",
+        ),
     ];
     for (text, words) in cases {
         let e = read_str(text, Path::new("bad.sdf"), &ReadOptions::default())
