@@ -310,10 +310,11 @@ fn audit_link(
     if link.stated.is_none()
         && link.auto_inertial.is_none()
         && robot.format != DescriptionFormat::Mjcf
-        && (link.moving || !ready.is_empty())
+        && (link.moving || !ready.is_empty() || link.incomplete_inertial.is_some())
     {
         findings.push(Finding::MissingInertial {
             moving: link.moving,
+            incomplete: link.incomplete_inertial.as_ref().map(|i| i.missing),
         });
     }
     let mut comparison = None;

@@ -60,10 +60,13 @@ pub struct ImpossibleAxis {
 /// words and JSON data.
 #[derive(Debug, Clone)]
 pub enum Finding {
-    /// No `<inertial>` (URDF), on a link that has geometry or moves.
+    /// No `<inertial>` (URDF, SDFormat), on a link that has geometry or moves, or one without
+    /// its `<mass>` or `<inertia>`.
     MissingInertial {
         /// Whether the link has a degree of freedom.
         moving: bool,
+        /// The element an `<inertial>` written without it lacks (`mass`, `inertia`).
+        incomplete: Option<&'static str>,
     },
     /// A negative mass, or zero on a moving link.
     NonpositiveMass {

@@ -51,10 +51,16 @@ pub fn splice(robot: &Robot, replacements: &[Replacement]) -> Result<String, Fix
                 })
             }
         };
-        match &link.stated {
-            Some(inertial) => {
-                in_file(inertial.span.file)?;
-                let range = inertial.span.range.clone();
+        // The element to replace: the stated inertial, or one that lacks its mass or inertia.
+        let old = link
+            .stated
+            .as_ref()
+            .map(|s| &s.span)
+            .or(link.incomplete_inertial.as_ref().map(|i| &i.span));
+        match old {
+            Some(span) => {
+                in_file(span.file)?;
+                let range = span.range.clone();
                 let indent = indentation(text, range.start);
                 edits.push((range, indented(r.text.trim_end(), &indent)));
             }

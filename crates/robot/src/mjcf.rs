@@ -463,6 +463,7 @@ impl Reader {
             moving: false,
             stated,
             auto_inertial: None,
+            incomplete_inertial: None,
             element: span(e),
             collision: Vec::new(),
             visual: Vec::new(),

@@ -93,6 +93,9 @@ pub struct Link {
     /// SDFormat's `<inertial auto="true">`: the simulator computes the inertial from the
     /// collisions (their densities in [`Geometry::mass`]); `stated` is then `None`.
     pub auto_inertial: Option<AutoInertial>,
+    /// A URDF `<inertial>` without its `<mass>` or `<inertia>` (yourdfpy reads the file, urdfdom
+    /// refuses it); `stated` is then `None`, and the fix replaces this element.
+    pub incomplete_inertial: Option<IncompleteInertial>,
     /// The `<link>`/`<body>` element, where the fix inserts a missing `<inertial>`.
     pub element: Span,
     /// Collision geometry (URDF `<collision>`; MJCF geoms that can collide).
@@ -108,6 +111,15 @@ pub struct AutoInertial {
     pub mass: Option<f64>,
     /// Where it is written.
     pub at: Location,
+}
+
+/// An `<inertial>` that lacks an element the format requires.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IncompleteInertial {
+    /// The element it lacks: `mass` or `inertia`.
+    pub missing: &'static str,
+    /// The `<inertial>`, for the fix.
+    pub span: Span,
 }
 
 /// A stated `<inertial>`, converted to one convention: the tensor about the centre of mass in

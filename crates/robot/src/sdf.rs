@@ -437,6 +437,7 @@ impl Reader<'_> {
                 moving: false,
                 stated,
                 auto_inertial,
+                incomplete_inertial: None,
                 element: span(e),
                 collision,
                 visual,

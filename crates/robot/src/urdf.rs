@@ -17,7 +17,10 @@ use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3
 
 use crate::ReadOptions;
 use crate::error::RobotError;
-use crate::model::{DescriptionFormat, Geometry, GeometryMass, Inertial, Link, Robot, Shape, Span};
+use crate::model::{
+    DescriptionFormat, Geometry, GeometryMass, IncompleteInertial, Inertial, Link, Robot, Shape, Span,
+    Unsupported,
+};
 use crate::paths::resolve_mesh;
 use crate::xml::{Element, SourceFile};
 
@@ -43,25 +46,51 @@ pub fn read(
         }
         links.push(link(e, name, &dir, options)?);
     }
+    // What yourdfpy and MuJoCo load and the audit has nothing of: named, never skipped silently.
+    let mut unsupported = Vec::new();
     if links.is_empty() {
-        return Err(root.wrong("the robot has no <link>"));
+        unsupported.push(Unsupported {
+            at: root.at.clone(),
+            element: "robot".to_owned(),
+            what: "the robot has no <link>: nothing to audit".to_owned(),
+        });
+    }
+    for d in root.children_named("deformable") {
+        unsupported.push(Unsupported {
+            at: d.at.clone(),
+            element: "deformable".to_owned(),
+            what: "a soft body (pybullet's extension): not audited".to_owned(),
+        });
     }
     // Each child's joint: its parent, its origin, whether it moves.
     let mut joint_of: Vec<Option<(usize, Isometry3<f64>, bool)>> = vec![None; links.len()];
     for j in root.children_named("joint") {
-        let end = |which: &str| -> Result<usize, RobotError> {
+        let end = |which: &str| -> Result<Result<usize, &str>, RobotError> {
             let e = j
                 .child(which)
                 .ok_or_else(|| j.wrong(format!("a joint needs a <{which}> link")))?;
             let name = e
                 .get("link")
                 .ok_or_else(|| e.wrong("the attribute link is missing"))?;
-            names
-                .get(name)
-                .copied()
-                .ok_or_else(|| e.bad("link", name, "no <link> has this name"))
+            Ok(names.get(name).copied().ok_or(name))
         };
-        let (parent, child) = (end("parent")?, end("child")?);
+        let (parent, child) = match (end("parent")?, end("child")?) {
+            (Ok(p), Ok(c)) => (p, c),
+            (Err(missing), _) | (_, Err(missing)) => {
+                // yourdfpy loads such a file (a stage without its base link): the joint is
+                // left out, and said so.
+                unsupported.push(Unsupported {
+                    at: j.at.clone(),
+                    element: "joint".to_owned(),
+                    what: format!(
+                        "joint \"{}\" names link \"{missing}\", which the file does not have: \
+                         the joint is left out",
+                        j.get("name").unwrap_or_default()
+                    ),
+                });
+                continue;
+            }
+        };
         if joint_of[child].is_some() {
             return Err(j.wrong(format!(
                 "link \"{}\" is the child of a second joint",
@@ -85,7 +114,7 @@ pub fn read(
         format: DescriptionFormat::Urdf,
         sources,
         links,
-        unsupported: Vec::new(),
+        unsupported,
         inertia_from_geoms: false,
         xacro: None,
     })
@@ -132,7 +161,19 @@ fn in_tree_order(
 }
 
 fn link(e: &Element, name: &str, dir: &Path, options: &ReadOptions) -> Result<Link, RobotError> {
-    let stated = e.child("inertial").map(inertial).transpose()?;
+    let (stated, incomplete_inertial) = match e.child("inertial") {
+        None => (None, None),
+        Some(i) => match inertial(i)? {
+            Ok(s) => (Some(s), None),
+            Err(missing) => (
+                None,
+                Some(IncompleteInertial {
+                    missing,
+                    span: span(i),
+                }),
+            ),
+        },
+    };
     let geometries = |kind: &str| -> Result<Vec<Geometry>, RobotError> {
         e.children_named(kind)
             .filter_map(|g| geometry(g, dir, options).transpose())
@@ -145,6 +186,7 @@ fn link(e: &Element, name: &str, dir: &Path, options: &ReadOptions) -> Result<Li
         moving: false,
         stated,
         auto_inertial: None,
+        incomplete_inertial,
         element: span(e),
         collision: geometries("collision")?,
         visual: geometries("visual")?,
@@ -160,15 +202,17 @@ pub fn span(e: &Element) -> Span {
     }
 }
 
-fn inertial(e: &Element) -> Result<Inertial, RobotError> {
+/// A stated `<inertial>`, or which of its elements it lacks (urdfdom refuses such a file,
+/// yourdfpy reads it).
+fn inertial(e: &Element) -> Result<Result<Inertial, &'static str>, RobotError> {
     let frame = origin(e.child("origin"))?;
-    let mass_element = e
-        .child("mass")
-        .ok_or_else(|| e.wrong("an inertial needs a <mass value>"))?;
+    let Some(mass_element) = e.child("mass") else {
+        return Ok(Err("mass"));
+    };
     let mass = mass_element.required_number("value")?;
-    let i = e
-        .child("inertia")
-        .ok_or_else(|| e.wrong("an inertial needs an <inertia ixx ixy ixz iyy iyz izz>"))?;
+    let Some(i) = e.child("inertia") else {
+        return Ok(Err("inertia"));
+    };
     let names = ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"];
     let mut v = [0.0; 6];
     let mut written = Vec::with_capacity(6);
@@ -178,13 +222,13 @@ fn inertial(e: &Element) -> Result<Inertial, RobotError> {
     }
     let local = Matrix3::new(v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5]);
     let r = frame.rotation.to_rotation_matrix();
-    Ok(Inertial {
+    Ok(Ok(Inertial {
         mass,
         center_of_mass: Point3::from(frame.translation.vector),
         inertia: r.matrix() * local * r.matrix().transpose(),
         written,
         span: span(e),
-    })
+    }))
 }
 
 /// `<origin xyz rpy>` as a rigid motion; the identity when absent.

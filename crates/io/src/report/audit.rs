@@ -285,7 +285,9 @@ fn finding_json(f: &robot::Finding, kind: &str) -> Value {
         "flags_inertial": f.flags_inertial(),
     });
     let evidence = match f {
-        F::MissingInertial { moving } => json!({"moving": moving}),
+        F::MissingInertial { moving, incomplete } => {
+            json!({"moving": moving, "incomplete": incomplete})
+        }
         F::NonpositiveMass { mass } => json!({"mass": mass}),
         F::NotPositiveDefinite { moments } | F::TriangleInequality { moments } => {
             json!({"moments": moments})

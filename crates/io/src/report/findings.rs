@@ -18,15 +18,30 @@ pub fn finding_text(
     mesh_words: impl Fn(&Warning) -> String,
 ) -> String {
     match f {
-        Finding::MissingInertial { moving: true } => "no <inertial>: a moving link without \
-             mass, so every dynamics call treats it as weightless (simulators substitute a \
-             default, Gazebo 1 kg and 1 kg*m^2, or refuse it)"
+        Finding::MissingInertial {
+            moving,
+            incomplete: Some(missing),
+        } => format!(
+            "an <inertial> without its <{missing}> (urdfdom refuses the file, yourdfpy reads it){}",
+            if *moving {
+                ": a moving link whose mass properties are not all stated"
+            } else {
+                ""
+            }
+        ),
+        Finding::MissingInertial {
+            moving: true,
+            incomplete: None,
+        } => "no <inertial>: a moving link without mass, so every dynamics call treats it as \
+              weightless (simulators substitute a default, Gazebo 1 kg and 1 kg*m^2, or refuse \
+              it)"
             .to_owned(),
-        Finding::MissingInertial { moving: false } => {
-            "no <inertial> on a link with geometry: its mass is left out of the robot's (or, \
-             in Gazebo, is a default 1 kg)"
-                .to_owned()
-        }
+        Finding::MissingInertial {
+            moving: false,
+            incomplete: None,
+        } => "no <inertial> on a link with geometry: its mass is left out of the robot's (or, \
+              in Gazebo, is a default 1 kg)"
+            .to_owned(),
         Finding::NonpositiveMass { mass } => {
             format!(
                 "stated mass {} kg: a moving link needs a positive mass",
