@@ -18,8 +18,8 @@ use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3
 use crate::ReadOptions;
 use crate::error::RobotError;
 use crate::model::{
-    DescriptionFormat, Geometry, GeometryMass, IncompleteInertial, Inertial, Link, Robot, Shape, Span,
-    Unsupported,
+    DescriptionFormat, Geometry, GeometryMass, IncompleteInertial, Inertial, Link, Robot, Shape,
+    Span, Unsupported,
 };
 use crate::paths::resolve_mesh;
 use crate::xml::{Element, SourceFile};
@@ -37,6 +37,9 @@ pub fn read(
         .unwrap_or_default();
     let mut names: HashMap<&str, usize> = HashMap::new();
     let mut links = Vec::new();
+    // What yourdfpy and MuJoCo load and the audit has nothing of, or reads as they read it:
+    // named, never skipped silently.
+    let mut unsupported = Vec::new();
     for (i, e) in root.children_named("link").enumerate() {
         let name = e
             .get("name")
@@ -44,10 +47,8 @@ pub fn read(
         if names.insert(name, i).is_some() {
             return Err(e.wrong(format!("a second link named \"{name}\"")));
         }
-        links.push(link(e, name, &dir, options)?);
+        links.push(link(e, name, &dir, options, &mut unsupported)?);
     }
-    // What yourdfpy and MuJoCo load and the audit has nothing of: named, never skipped silently.
-    let mut unsupported = Vec::new();
     if links.is_empty() {
         unsupported.push(Unsupported {
             at: root.at.clone(),
@@ -98,7 +99,7 @@ pub fn read(
             )));
         }
         let moving = j.get("type").is_some_and(|t| t != "fixed");
-        joint_of[child] = Some((parent, origin(j.child("origin"))?, moving));
+        joint_of[child] = Some((parent, origin(j.child("origin"), &mut unsupported)?, moving));
     }
     for (i, joint) in joint_of.iter().enumerate() {
         if let Some((parent, _, moving)) = joint {
@@ -160,10 +161,16 @@ fn in_tree_order(
     Ok(sorted)
 }
 
-fn link(e: &Element, name: &str, dir: &Path, options: &ReadOptions) -> Result<Link, RobotError> {
+fn link(
+    e: &Element,
+    name: &str,
+    dir: &Path,
+    options: &ReadOptions,
+    notes: &mut Vec<Unsupported>,
+) -> Result<Link, RobotError> {
     let (stated, incomplete_inertial) = match e.child("inertial") {
         None => (None, None),
-        Some(i) => match inertial(i)? {
+        Some(i) => match inertial(i, notes)? {
             Ok(s) => (Some(s), None),
             Err(missing) => (
                 None,
@@ -174,10 +181,12 @@ fn link(e: &Element, name: &str, dir: &Path, options: &ReadOptions) -> Result<Li
             ),
         },
     };
-    let geometries = |kind: &str| -> Result<Vec<Geometry>, RobotError> {
-        e.children_named(kind)
-            .filter_map(|g| geometry(g, dir, options).transpose())
-            .collect()
+    let mut geometries = |kind: &str| -> Result<Vec<Geometry>, RobotError> {
+        let mut all = Vec::new();
+        for g in e.children_named(kind) {
+            all.extend(geometry(g, dir, options, notes)?);
+        }
+        Ok(all)
     };
     Ok(Link {
         name: name.to_owned(),
@@ -204,8 +213,11 @@ pub fn span(e: &Element) -> Span {
 
 /// A stated `<inertial>`, or which of its elements it lacks (urdfdom refuses such a file,
 /// yourdfpy reads it).
-fn inertial(e: &Element) -> Result<Result<Inertial, &'static str>, RobotError> {
-    let frame = origin(e.child("origin"))?;
+fn inertial(
+    e: &Element,
+    notes: &mut Vec<Unsupported>,
+) -> Result<Result<Inertial, &'static str>, RobotError> {
+    let frame = origin(e.child("origin"), notes)?;
     let Some(mass_element) = e.child("mass") else {
         return Ok(Err("mass"));
     };
@@ -231,13 +243,41 @@ fn inertial(e: &Element) -> Result<Result<Inertial, &'static str>, RobotError> {
     }))
 }
 
-/// `<origin xyz rpy>` as a rigid motion; the identity when absent.
-pub fn origin(e: Option<&Element>) -> Result<Isometry3<f64>, RobotError> {
+/// `<origin xyz rpy>` as a rigid motion; the identity when absent. More than three numbers are
+/// read as yourdfpy reads them, the first three (pybullet's microtaur writes `rpy` with four),
+/// and named in `notes`.
+pub fn origin(
+    e: Option<&Element>,
+    notes: &mut Vec<Unsupported>,
+) -> Result<Isometry3<f64>, RobotError> {
     let Some(e) = e else {
         return Ok(Isometry3::identity());
     };
-    let [x, y, z] = e.numbers::<3>("xyz")?.unwrap_or([0.0; 3]);
-    let [roll, pitch, yaw] = e.numbers::<3>("rpy")?.unwrap_or([0.0; 3]);
+    let mut three = |name: &str| -> Result<[f64; 3], RobotError> {
+        let Some(v) = e.number_list(name)? else {
+            return Ok([0.0; 3]);
+        };
+        if v.len() > 3 {
+            notes.push(Unsupported {
+                at: e.at.clone(),
+                element: "origin".to_owned(),
+                what: format!(
+                    "{name} has {} numbers: read as its first three, as yourdfpy reads it \
+                     (urdfdom refuses it)",
+                    v.len()
+                ),
+            });
+        }
+        <[f64; 3]>::try_from(&v[..3.min(v.len())]).map_err(|_| {
+            e.bad(
+                name,
+                e.get(name).unwrap_or_default(),
+                format!("expected 3 number(s), found {}", v.len()),
+            )
+        })
+    };
+    let [x, y, z] = three("xyz")?;
+    let [roll, pitch, yaw] = three("rpy")?;
     Ok(Isometry3::from_parts(
         Translation3::new(x, y, z),
         UnitQuaternion::from_euler_angles(roll, pitch, yaw),
@@ -249,6 +289,7 @@ fn geometry(
     e: &Element,
     dir: &Path,
     options: &ReadOptions,
+    notes: &mut Vec<Unsupported>,
 ) -> Result<Option<Geometry>, RobotError> {
     let Some(g) = e.child("geometry") else {
         return Ok(None);
@@ -262,7 +303,7 @@ fn geometry(
     });
     Ok(Some(Geometry {
         shape,
-        pose: origin(e.child("origin"))?,
+        pose: origin(e.child("origin"), notes)?,
         mass: GeometryMass::Unstated,
         at: s.at.clone(),
     }))

@@ -918,23 +918,33 @@ fn a_centre_in_the_meshs_frame_is_named() {
 
 /// What yourdfpy loads and urdfdom refuses is read, and what the audit cannot use is named: an
 /// `<inertial>` without its `<mass>` or its `<inertia>` (mani-skill's trifinger cubes,
-/// airo-models' d435), a joint to a link the file lacks (the trifinger stage), a file with no
-/// link at all (pybullet's `torus_deform.urdf`). The fix replaces an incomplete inertial.
+/// airo-models' d435), a joint to a link the file lacks (the trifinger stage), an `rpy` of four
+/// numbers (pybullet's microtaur), a file with no link at all (pybullet's `torus_deform.urdf`). The fix replaces an incomplete inertial.
 #[test]
 fn descriptions_yourdfpy_loads_are_read_with_what_is_missing_named() {
     let urdf = r#"<robot name="r">
   <link name="cube"><inertial><origin xyz="0 0 0"/>
     <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>
-    <collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+    <collision><origin rpy="0 0 0.5 0"/><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
   <link name="camera"><inertial><mass value="0.07"/></inertial></link>
   <joint name="mount" type="fixed"><parent link="base_link"/><child link="cube"/></joint>
   <joint name="cam" type="fixed"><parent link="cube"/><child link="camera"/></joint>
 </robot>"#;
     let robot = read_str(urdf, Path::new("r.urdf"), &ReadOptions::default()).expect("read");
     assert_eq!(robot.links.len(), 2);
-    assert_eq!(robot.links[1].parent, Some(0), "the joint between two links is kept");
-    assert_eq!(robot.unsupported.len(), 1, "{:?}", robot.unsupported);
-    assert!(robot.unsupported[0].what.contains("\"base_link\""));
+    assert_eq!(
+        robot.links[1].parent,
+        Some(0),
+        "the joint between two links is kept"
+    );
+    assert_eq!(robot.unsupported.len(), 2, "{:?}", robot.unsupported);
+    // An rpy of four numbers (pybullet's microtaur): the first three, as yourdfpy reads it.
+    assert!(robot.unsupported[0].what.contains("rpy has 4 numbers"));
+    let turn = robot.links[0].collision[0].pose.rotation;
+    assert!(
+        (turn.angle() - 0.5).abs() < 1e-15 && (turn.axis().expect("turned").z - 1.0).abs() < 1e-15
+    );
+    assert!(robot.unsupported[1].what.contains("\"base_link\""));
     let report = audit(&robot, &AuditOptions::default());
     let missing: Vec<Option<&str>> = report
         .links
@@ -956,7 +966,11 @@ fn descriptions_yourdfpy_loads_are_read_with_what_is_missing_named() {
         }],
     )
     .expect("spliced");
-    assert_eq!(fixed.matches("<inertial>").count(), 2, "replaced, not added: {fixed}");
+    assert_eq!(
+        fixed.matches("<inertial>").count(),
+        2,
+        "replaced, not added: {fixed}"
+    );
     let again = read_str(&fixed, Path::new("r.urdf"), &ReadOptions::default()).expect("read");
     assert_eq!(again.links[0].stated.as_ref().expect("stated").mass, 1.0);
 
@@ -964,6 +978,10 @@ fn descriptions_yourdfpy_loads_are_read_with_what_is_missing_named() {
       </inertial></deformable></robot>"#;
     let robot = read_str(soft, Path::new("t.urdf"), &ReadOptions::default()).expect("read");
     assert!(robot.links.is_empty());
-    let notes: Vec<&str> = robot.unsupported.iter().map(|u| u.element.as_str()).collect();
+    let notes: Vec<&str> = robot
+        .unsupported
+        .iter()
+        .map(|u| u.element.as_str())
+        .collect();
     assert_eq!(notes, ["robot", "deformable"]);
 }

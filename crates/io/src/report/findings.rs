@@ -35,7 +35,7 @@ pub fn finding_text(
         } => "no <inertial>: a moving link without mass, so every dynamics call treats it as \
               weightless (simulators substitute a default, Gazebo 1 kg and 1 kg*m^2, or refuse \
               it)"
-            .to_owned(),
+        .to_owned(),
         Finding::MissingInertial {
             moving: false,
             incomplete: None,
