@@ -39,9 +39,10 @@ fi
 [[ ${1:-} == --check ]] && exit 0
 if [[ ${1:-} == --clippy ]]; then
   [[ -x /usr/bin/cargo-clippy ]] || { echo "web/build.sh: missing: Debian's rust-web-clippy" >&2; echo "web/build.sh: install with: $INSTALL" >&2; exit 3; }
-  # Debian's cargo-clippy, not rustup's, which comes first on PATH.
-  PATH=/usr/bin:$PATH RUSTC=$RUSTC_WEB RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR=target/wasm-clippy \
-    "$CARGO_WEB" clippy --locked -p inertia-lab-web -p inertia-lab --lib \
+  # Debian's cargo-clippy, not rustup's, which comes first on PATH. In the build's own folder
+  # and profile, so that the build after it finds the host's proc-macros and build scripts made.
+  PATH=/usr/bin:$PATH RUSTC=$RUSTC_WEB RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR=target/wasm \
+    "$CARGO_WEB" clippy --locked --release -p inertia-lab-web -p inertia-lab --lib \
     --target wasm32-unknown-unknown -Zbuild-std=std,panic_abort -- -D warnings
   exit
 fi

@@ -77,12 +77,12 @@ impl Openable {
         }
     }
 
-    /// What may be dropped, for a hint ("a mesh, a body .toml or a robot .urdf/.xml"). The
+    /// What may be dropped, for a hint ("a mesh, a body .toml or a robot .urdf/.sdf/.xml"). The
     /// mesh formats are not listed in it, so that the hint (and the panel laid out around it)
     /// stays the same as formats are added: [`mesh_formats_hint`] lists them.
     pub fn words(self) -> &'static str {
         if self.robots {
-            "a mesh, a body .toml or a robot .urdf/.xml"
+            "a mesh, a body .toml or a robot .urdf/.sdf/.xml"
         } else {
             "a mesh, or a body .toml with its meshes"
         }
