@@ -95,7 +95,7 @@ impl Analysis {
     /// Adds warnings found elsewhere (by a file reader), in the order of [`Defect::code`]'s list.
     pub fn add_warnings(&mut self, more: impl IntoIterator<Item = Warning>) {
         self.warnings.extend(more);
-        self.warnings.sort_by_key(|w| rank(w.code()));
+        self.warnings.sort_by_key(|w| w.defect.kind());
     }
 }
 
@@ -475,11 +475,6 @@ fn warnings(
             *total_uncertainty /= scale;
         }
     }
-    w.sort_by_key(|w| rank(w.code()));
+    w.sort_by_key(|w| w.defect.kind());
     w
-}
-
-/// A code's place in [`Defect::CODES`].
-fn rank(code: &str) -> Option<usize> {
-    Defect::CODES.iter().position(|&c| c == code)
 }

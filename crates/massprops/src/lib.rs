@@ -74,7 +74,7 @@ pub use mesh::PolyMesh;
 pub use principal::PrincipalInertia;
 pub use properties::MassProperties;
 pub use units::{LengthUnit, UnknownUnit};
-pub use warning::{Defect, Warning};
+pub use warning::{Defect, DefectKind, Warning};
 
 /// Mass properties of the solid bounded by `mesh` at uniform `density` (volume method).
 ///

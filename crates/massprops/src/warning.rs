@@ -152,49 +152,125 @@ pub enum Defect {
     },
 }
 
+/// Declares [`DefectKind`] from one list of kinds and their codes, in the order warnings are
+/// listed in: the enum, [`DefectKind::ALL`] and [`DefectKind::code`] all come from it, so no list
+/// of codes is kept by hand beside the enum (and [`Defect::kind`]'s exhaustive match makes a new
+/// [`Defect`] variant need a row here).
+macro_rules! defect_kinds {
+    ($($(#[$doc:meta])* $kind:ident => $code:literal,)+) => {
+        /// What kind of [`Defect`] a warning is, without its data: one per variant, in the order
+        /// warnings are listed in (an analysis's `warnings` and every report).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        pub enum DefectKind {
+            $($(#[$doc])* $kind,)+
+        }
+
+        impl DefectKind {
+            /// Every kind, in the order warnings are listed in.
+            pub const ALL: &'static [DefectKind] = &[$(DefectKind::$kind,)+];
+
+            /// A stable snake_case identifier, for machine-readable output.
+            pub const fn code(self) -> &'static str {
+                match self {
+                    $(DefectKind::$kind => $code,)+
+                }
+            }
+        }
+
+        impl Defect {
+            /// Every code [`Defect::code`] gives, in the order warnings are listed in.
+            pub const CODES: &'static [&'static str] = &[$($code,)+];
+        }
+    };
+}
+
+defect_kinds! {
+    /// [`Defect::DuplicateFaces`].
+    DuplicateFaces => "duplicate_faces",
+    /// [`Defect::OppositeDuplicateFaces`].
+    OppositeDuplicateFaces => "opposite_duplicate_faces",
+    /// [`Defect::OverlappingShells`].
+    OverlappingShells => "overlapping_shells",
+    /// [`Defect::SelfOverlappingShell`].
+    SelfOverlappingShell => "self_overlapping_shell",
+    /// [`Defect::NestedShell`].
+    NestedShell => "nested_shell",
+    /// [`Defect::CracksClosed`].
+    CracksClosed => "cracks_closed",
+    /// [`Defect::HolesCapped`].
+    HolesCapped => "holes_capped",
+    /// [`Defect::NonplanarFaces`].
+    NonplanarFaces => "nonplanar_faces",
+    /// [`Defect::TwoCornerFaces`].
+    TwoCornerFaces => "two_corner_faces",
+    /// [`Defect::StlTriangleCount`].
+    StlTriangleCount => "stl_triangle_count",
+    /// [`Defect::UpAxisNotApplied`].
+    UpAxisNotApplied => "up_axis_not_applied",
+    /// [`Defect::InconsistentWinding`].
+    InconsistentWinding => "inconsistent_winding",
+    /// [`Defect::Flipped`].
+    Flipped => "flipped",
+    /// [`Defect::DegenerateFaces`].
+    DegenerateFaces => "degenerate_faces",
+    /// [`Defect::NonmanifoldEdges`].
+    NonmanifoldEdges => "nonmanifold_edges",
+}
+
 impl Defect {
-    /// Every code [`Defect::code`] gives, in the order warnings are listed in (an analysis's
-    /// `warnings` and every report).
-    pub const CODES: [&'static str; 15] = [
-        "duplicate_faces",
-        "opposite_duplicate_faces",
-        "overlapping_shells",
-        "self_overlapping_shell",
-        "nested_shell",
-        "cracks_closed",
-        "holes_capped",
-        "nonplanar_faces",
-        "two_corner_faces",
-        "stl_triangle_count",
-        "up_axis_not_applied",
-        "inconsistent_winding",
-        "flipped",
-        "degenerate_faces",
-        "nonmanifold_edges",
-    ];
+    /// Which kind of defect this is (the variant without its data).
+    pub const fn kind(&self) -> DefectKind {
+        match self {
+            Defect::DuplicateFaces => DefectKind::DuplicateFaces,
+            Defect::OppositeDuplicateFaces => DefectKind::OppositeDuplicateFaces,
+            Defect::OverlappingShells { .. } => DefectKind::OverlappingShells,
+            Defect::SelfOverlappingShell { .. } => DefectKind::SelfOverlappingShell,
+            Defect::NestedShell { .. } => DefectKind::NestedShell,
+            Defect::CracksClosed { .. } => DefectKind::CracksClosed,
+            Defect::HolesCapped { .. } => DefectKind::HolesCapped,
+            Defect::NonplanarFaces { .. } => DefectKind::NonplanarFaces,
+            Defect::TwoCornerFaces { .. } => DefectKind::TwoCornerFaces,
+            Defect::StlTriangleCount { .. } => DefectKind::StlTriangleCount,
+            Defect::UpAxisNotApplied { .. } => DefectKind::UpAxisNotApplied,
+            Defect::InconsistentWinding { .. } => DefectKind::InconsistentWinding,
+            Defect::Flipped { .. } => DefectKind::Flipped,
+            Defect::DegenerateFaces => DefectKind::DegenerateFaces,
+            Defect::NonmanifoldEdges { .. } => DefectKind::NonmanifoldEdges,
+        }
+    }
 
     /// A stable snake_case identifier, for machine-readable output: `duplicate_faces`,
     /// `opposite_duplicate_faces`, `overlapping_shells`, `self_overlapping_shell`, `nested_shell`, `cracks_closed`,
     /// `holes_capped`, `nonplanar_faces`, `two_corner_faces`, `stl_triangle_count`,
     /// `up_axis_not_applied`, `inconsistent_winding`,
     /// `flipped`, `degenerate_faces`, `nonmanifold_edges`.
-    pub fn code(&self) -> &'static str {
-        match self {
-            Defect::DuplicateFaces => "duplicate_faces",
-            Defect::OppositeDuplicateFaces => "opposite_duplicate_faces",
-            Defect::OverlappingShells { .. } => "overlapping_shells",
-            Defect::SelfOverlappingShell { .. } => "self_overlapping_shell",
-            Defect::NestedShell { .. } => "nested_shell",
-            Defect::CracksClosed { .. } => "cracks_closed",
-            Defect::HolesCapped { .. } => "holes_capped",
-            Defect::NonplanarFaces { .. } => "nonplanar_faces",
-            Defect::TwoCornerFaces { .. } => "two_corner_faces",
-            Defect::StlTriangleCount { .. } => "stl_triangle_count",
-            Defect::UpAxisNotApplied { .. } => "up_axis_not_applied",
-            Defect::InconsistentWinding { .. } => "inconsistent_winding",
-            Defect::Flipped { .. } => "flipped",
-            Defect::DegenerateFaces => "degenerate_faces",
-            Defect::NonmanifoldEdges { .. } => "nonmanifold_edges",
+    pub const fn code(&self) -> &'static str {
+        self.kind().code()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Defect, DefectKind};
+
+    /// The kinds are listed once each, in their declared order, and each code is its own.
+    #[test]
+    fn each_kind_has_one_code_in_order() {
+        for (i, kind) in DefectKind::ALL.iter().enumerate() {
+            assert_eq!(*kind as usize, i, "{kind:?}");
+            assert_eq!(Defect::CODES[i], kind.code());
         }
+        let mut codes = Defect::CODES.to_vec();
+        codes.sort_unstable();
+        codes.dedup();
+        assert_eq!(codes.len(), DefectKind::ALL.len(), "a code is used twice");
+        assert_eq!(
+            Defect::HolesCapped {
+                boundary_edges: 3,
+                cap_area_fraction: 0.1
+            }
+            .code(),
+            "holes_capped"
+        );
     }
 }

@@ -24,7 +24,7 @@ use crate::lab::{Command, Lab, Message};
 use crate::platform::Instant;
 use bench::Bench;
 use panels::PanelState;
-use platform::{Chosen, Dialog, DialogPurpose};
+use platform::{Chosen, Dialog, DialogPurpose, DroppedFiles};
 use view3d::View3d;
 use view3d::scene::{Scene, SceneSlot};
 
@@ -48,6 +48,8 @@ pub struct LabApp {
     side: panels::side::SidePanel,
     scene: Option<SceneSlot>,
     dialog: Option<Dialog>,
+    /// Files dropped and being read (a browser reads their bytes first).
+    dropping: Option<DroppedFiles>,
     /// The title last given to the window or page.
     title: String,
     bench: Option<Bench>,
@@ -92,6 +94,7 @@ impl LabApp {
             side: panels::side::SidePanel::default(),
             scene,
             dialog: None,
+            dropping: None,
             title: String::new(),
             bench: None,
             capture: None,
@@ -119,7 +122,7 @@ impl LabApp {
         let ctx = ui.ctx().clone();
         let mut commands = Vec::new();
         self.shortcuts(&ctx, &mut commands);
-        self.take_dropped(&ctx);
+        self.take_dropped(&ctx, &mut commands);
         self.poll_dialog(&mut commands);
         self.panels.dialog_open = self.dialog.is_some();
         self.lab.frame(Instant::now());
@@ -194,7 +197,7 @@ impl LabApp {
             ctx.debug_painter().text(
                 ctx.content_rect().center(),
                 egui::Align2::CENTER_CENTER,
-                if self.lab.primary().body().composition.is_some() {
+                if self.lab.drop_may_add_parts() {
                     "Drop a mesh to add it as a part (a body file to open it)"
                 } else {
                     "Drop to load"
@@ -221,6 +224,7 @@ impl LabApp {
         self.lab.apply_all(commands);
         if self.lab.is_animating()
             || self.dialog.is_some()
+            || self.dropping.is_some()
             || self.recording.is_some()
             || self.view.is_dragging()
             || self.bench.is_some()
@@ -229,22 +233,26 @@ impl LabApp {
         }
     }
 
-    /// Files dropped on the window or page, as the answer of a dialog that has closed (in a
-    /// browser their bytes are read first, which takes a moment); the lab decides whether they
-    /// open a body or join this one ([`Lab::drop_adds_parts`]).
-    fn take_dropped(&mut self, ctx: &egui::Context) {
+    /// Files dropped on the window or page become [`Command::Drop`] once the platform has them
+    /// (in a browser their bytes are read first, which takes a moment); the lab decides whether
+    /// they open a body or join this one.
+    fn take_dropped(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
+        if let Some(ready) = self.dropping.as_mut().and_then(DroppedFiles::poll) {
+            self.dropping = None;
+            commands.push(match ready {
+                Some(source) => Command::Drop(source),
+                None => Command::Notify(Message {
+                    text: platform::NO_FILE_CHOSEN.to_owned(),
+                    error: false,
+                }),
+            });
+        }
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
-        if dropped.is_empty() || self.dialog.is_some() {
+        if dropped.is_empty() || self.dropping.is_some() {
             return;
         }
-        let names: Vec<&std::path::Path> = dropped.iter().map(|f| f.path()).collect();
-        let purpose = if self.lab.drop_adds_parts(&names) {
-            DialogPurpose::AddPart
-        } else {
-            DialogPurpose::OpenMesh
-        };
         let repaint = ctx.clone();
-        self.dialog = Some(Dialog::dropped(purpose, dropped, move || {
+        self.dropping = Some(DroppedFiles::read(&dropped, move || {
             repaint.request_repaint();
         }));
     }

@@ -29,6 +29,9 @@ pub enum Command {
     /// Load files given by their bytes (the browser's): a body file with its meshes, or a mesh;
     /// it replaces every specimen's body.
     LoadFiles(inertia_io::input::FileSet),
+    /// Files dropped on the window or page: meshes dropped on a body of parts join it as parts,
+    /// anything else opens ([`Lab::drop_adds_parts`](super::Lab::drop_adds_parts)).
+    Drop(super::loader::LoadSource),
     /// Load a built-in sample by label.
     LoadSample(String),
     /// Write a specimen's plot history as CSV.

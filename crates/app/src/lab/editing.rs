@@ -28,10 +28,16 @@ impl Lab {
     /// Whether files dropped on the lab join the body as parts: meshes dropped on a body made of
     /// parts do; anything else (a mesh on a single mesh, a body file, a robot) replaces the body.
     pub fn drop_adds_parts(&self, names: &[&Path]) -> bool {
-        self.primary().body().composition.is_some()
+        self.drop_may_add_parts()
             && names
                 .iter()
                 .all(|n| matches!(FileKind::of(n), Some(FileKind::Mesh(_))))
+    }
+
+    /// Whether meshes dropped now would join the body as parts (before their names are known:
+    /// what the window says while files are dragged over it).
+    pub fn drop_may_add_parts(&self) -> bool {
+        self.primary().body().composition.is_some()
     }
 
     /// What new parts join: the body's name and its parts now (a single mesh as one part, whole).

@@ -123,12 +123,22 @@ pub enum Loaded {
 }
 
 /// Where a load's files come from.
-#[derive(Debug)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum LoadSource {
     /// A file on disk (and the files it names).
     Path(PathBuf),
     /// Files given by their bytes (the browser's).
     Files(FileSet),
+}
+
+impl LoadSource {
+    /// The names of the files given (a path's own name for a file on disk).
+    pub fn names(&self) -> Vec<&Path> {
+        match self {
+            LoadSource::Path(path) => vec![path.as_path()],
+            LoadSource::Files(files) => files.names().collect(),
+        }
+    }
 }
 
 /// A running load.

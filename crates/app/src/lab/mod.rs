@@ -178,6 +178,14 @@ impl Lab {
                 let purpose = self.adding_parts()?;
                 self.start_load(LoadSource::Files(files), purpose);
             }
+            Command::Drop(source) => {
+                let purpose = if self.drop_adds_parts(&source.names()) {
+                    self.adding_parts()?
+                } else {
+                    Purpose::Open
+                };
+                self.start_load(source, purpose);
+            }
             Command::LoadSample(label) => {
                 let body = LoadedBody::sample(&label)?;
                 self.install(body)?;

@@ -913,6 +913,34 @@ fn a_drop_joins_a_body_of_parts_only_with_meshes() {
     assert!(!drop(&lab, &["notes.txt"]));
 }
 
+/// A drop is the lab's to decide: the same meshes join a body of parts (its mass grows by the
+/// cube's 1000 kg of water) and replace a single mesh (the body becomes the cube).
+#[test]
+fn a_dropped_mesh_joins_a_body_of_parts_and_replaces_a_single_mesh() {
+    use super::loader::LoadSource;
+    let mut lab = lab();
+    lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+    let hammer = lab.primary().properties(InertiaSource::Exact).mass;
+    lab.apply(Command::Drop(LoadSource::Files(given(&["cube.obj"]))));
+    lab.wait_for_load();
+    let parts = lab.current_parts(true).expect("parts");
+    assert_eq!(parts.len(), 3, "{:?}", lab.message());
+    let joined = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!(
+        (joined - hammer - 1000.0).abs() < 1e-6,
+        "{hammer} kg, then {joined} kg"
+    );
+
+    lab.apply(Command::LoadSample("Torus".to_owned()));
+    lab.apply(Command::Drop(LoadSource::Path(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../assets/cube.obj"),
+    )));
+    lab.wait_for_load();
+    assert!(lab.primary().body().composition.is_none());
+    let cube = lab.primary().properties(InertiaSource::Exact).mass;
+    assert!((cube - 1000.0).abs() < 1e-9, "{cube} kg");
+}
+
 /// A part read while the body is edited does not undo the edit: the addition is refused, saying
 /// so, and the edited body stays.
 #[test]

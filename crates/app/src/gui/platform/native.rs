@@ -16,6 +16,7 @@ use crate::gui::bench::Bench;
 use crate::gui::start::Start;
 use crate::gui::{SETTINGS_KEY, capture};
 use crate::lab::Variant;
+use crate::lab::loader::LoadSource;
 use crate::lab::settings::{AppSettings, InertiaSource};
 
 /// What the window opens: meshes, bodies and robot descriptions.
@@ -87,22 +88,6 @@ impl Dialog {
         }
     }
 
-    /// Files dropped on the window, as the answer of a dialog for `purpose`: the first one's
-    /// path.
-    pub fn dropped(
-        purpose: DialogPurpose,
-        files: Vec<egui::DroppedFileHandle>,
-        wake: impl Fn() + Send + 'static,
-    ) -> Self {
-        let (tx, rx) = channel();
-        let _ = tx.send(files.first().map(|f| Chosen::Path(f.path().to_path_buf())));
-        wake();
-        Self {
-            purpose,
-            answer: rx,
-        }
-    }
-
     /// `Some(answer)` once closed (`None` inside: cancelled, or no dialog service available).
     pub fn poll(&self) -> Option<Option<Chosen>> {
         match self.answer.try_recv() {
@@ -110,6 +95,27 @@ impl Dialog {
             Err(TryRecvError::Empty) => None,
             Err(TryRecvError::Disconnected) => Some(None),
         }
+    }
+}
+
+/// Files dropped on the window, as the lab will read them: the first one's path, at once (the
+/// lab reads the files a body file names from beside it).
+#[derive(Debug)]
+pub struct DroppedFiles(Option<Option<LoadSource>>);
+
+impl DroppedFiles {
+    /// Takes the dropped files (`wake` is for a platform that reads them first).
+    pub fn read(files: &[egui::DroppedFileHandle], _wake: impl Fn() + 'static) -> Self {
+        Self(Some(
+            files
+                .first()
+                .map(|f| LoadSource::Path(f.path().to_path_buf())),
+        ))
+    }
+
+    /// `Some(files)` once ready (`None` inside: nothing could be read).
+    pub fn poll(&mut self) -> Option<Option<LoadSource>> {
+        self.0.take()
     }
 }
 

@@ -16,6 +16,7 @@ use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
 use crate::gui::start::Start;
 use crate::gui::{SETTINGS_KEY, link};
+use crate::lab::loader::LoadSource;
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Message};
 use inertia_io::input::FileSet;
@@ -221,15 +222,23 @@ impl Dialog {
         Self { purpose, answer }
     }
 
-    /// Files dropped on the page, as the answer of a dialog for `purpose` once the browser has
-    /// read their bytes (all of them: a body file with its meshes).
-    pub fn dropped(
-        purpose: DialogPurpose,
-        dropped: Vec<egui::DroppedFileHandle>,
-        wake: impl Fn() + 'static,
-    ) -> Self {
+    /// `Some(answer)` once closed (`None` inside: cancelled).
+    pub fn poll(&self) -> Option<Option<Chosen>> {
+        self.answer.borrow_mut().take()
+    }
+}
+
+/// Files dropped on the page, as the lab will read them: all of them (a body file with its
+/// meshes) with their bytes, once the browser has read them.
+#[derive(Debug)]
+pub struct DroppedFiles(Rc<RefCell<Option<Option<LoadSource>>>>);
+
+impl DroppedFiles {
+    /// Starts reading the dropped files' bytes; `wake` is called when they are read.
+    pub fn read(dropped: &[egui::DroppedFileHandle], wake: impl Fn() + 'static) -> Self {
         let answer = Rc::new(RefCell::new(None));
         let slot = Rc::clone(&answer);
+        let dropped = dropped.to_vec();
         wasm_bindgen_futures::spawn_local(async move {
             let mut files = FileSet::default();
             for file in &dropped {
@@ -238,15 +247,15 @@ impl Dialog {
                     Err(e) => cannot_read(&file.path().display().to_string(), &e),
                 }
             }
-            *slot.borrow_mut() = Some(files.main().is_some().then_some(Chosen::Files(files)));
+            *slot.borrow_mut() = Some(files.main().is_some().then_some(LoadSource::Files(files)));
             wake();
         });
-        Self { purpose, answer }
+        Self(answer)
     }
 
-    /// `Some(answer)` once closed (`None` inside: cancelled).
-    pub fn poll(&self) -> Option<Option<Chosen>> {
-        self.answer.borrow_mut().take()
+    /// `Some(files)` once read (`None` inside: the browser could read none of them).
+    pub fn poll(&mut self) -> Option<Option<LoadSource>> {
+        self.0.borrow_mut().take()
     }
 }
 
