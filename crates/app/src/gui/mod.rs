@@ -23,7 +23,7 @@ use crate::lab::settings::InertiaSource;
 use crate::lab::{Command, Lab, Message};
 use crate::platform::Instant;
 use bench::Bench;
-use panels::PanelState;
+use panels::{Frame, Panel, PanelState, Panels};
 use platform::{Chosen, Dialog, DialogPurpose, DroppedFiles};
 use view3d::View3d;
 use view3d::scene::{Scene, SceneSlot};
@@ -43,9 +43,10 @@ const SETTINGS_KEY: &str = "inertia-lab-settings";
 pub struct LabApp {
     lab: Lab,
     view: View3d,
-    panels: PanelState,
-    /// The side panel's sections, each with its own state.
-    side: panels::side::SidePanel,
+    /// What the panels share with each other and the app.
+    shared: PanelState,
+    /// Every panel, each with its own state.
+    panels: Panels,
     scene: Option<SceneSlot>,
     dialog: Option<Dialog>,
     /// Files dropped and being read (a browser reads their bytes first).
@@ -90,8 +91,8 @@ impl LabApp {
         Ok(Self {
             lab,
             view: View3d::default(),
-            panels: PanelState::default(),
-            side: panels::side::SidePanel::default(),
+            shared: PanelState::default(),
+            panels: Panels::default(),
             scene,
             dialog: None,
             dropping: None,
@@ -109,7 +110,7 @@ impl LabApp {
 
     /// The mesh warning whose faces the 3D view highlights, if one is selected.
     pub fn selected_warning(&self) -> Option<usize> {
-        self.panels.selected_warning
+        self.shared.selected_warning
     }
 
     /// Applies a command at once (the startup file given on the command line).
@@ -124,7 +125,7 @@ impl LabApp {
         self.shortcuts(&ctx, &mut commands);
         self.take_dropped(&ctx, &mut commands);
         self.poll_dialog(&mut commands);
-        self.panels.dialog_open = self.dialog.is_some();
+        self.shared.dialog_open = self.dialog.is_some();
         self.lab.frame(Instant::now());
         // Every panel edits this one draft; it becomes one command, so no edit undoes another.
         let mut draft = self.lab.settings().clone();
@@ -137,7 +138,7 @@ impl LabApp {
                     .on_hover_text("What you see, the controls and the keys (F1)")
                     .clicked()
                 {
-                    self.panels.help_open = !self.panels.help_open;
+                    self.shared.help_open = !self.shared.help_open;
                 }
                 message_text(ui, self.lab.message(), &mut commands);
             });
@@ -150,47 +151,50 @@ impl LabApp {
             .min_size(260.0)
             .max_size(640.0)
             .show(ui, |ui| {
-                let mut frame = panels::Frame {
+                let mut frame = Frame {
                     lab: &self.lab,
                     settings: &mut draft,
                     commands: &mut commands,
-                    shared: &mut self.panels,
+                    shared: &mut self.shared,
                 };
-                self.side.show(ui, &mut frame);
+                self.panels.side.show(ui, &mut frame);
             });
+        let mut frame = Frame {
+            lab: &self.lab,
+            settings: &mut draft,
+            commands: &mut commands,
+            shared: &mut self.shared,
+        };
         let hide_plots = self.bench.as_ref().is_some_and(Bench::hides_plots);
         if !hide_plots {
             egui::Panel::bottom("plots")
                 .resizable(true)
                 .default_size(260.0)
                 .min_size(200.0)
-                .show(ui, |ui| {
-                    panels::plots::show(ui, &self.lab, &mut draft, &mut self.panels, &mut commands);
-                });
+                .show(ui, |ui| self.panels.plots.show(ui, &mut frame));
         }
         egui::CentralPanel::default().show(ui, |ui| {
             // The toolbar spans the whole width; the sphere and the 3D view share the rest.
-            if panels::toolbar::show(ui, &mut draft) {
+            self.panels.toolbar.show(ui, &mut frame);
+            if std::mem::take(&mut frame.shared.frame_request) {
                 self.view.frame_body(&self.lab);
             }
-            if draft.view.momentum_sphere {
+            if frame.settings.view.momentum_sphere {
                 egui::Panel::right("sphere")
                     .resizable(true)
                     .default_size(SPHERE_PANEL_WIDTH)
                     .min_size(180.0)
-                    .show(ui, |ui| {
-                        panels::sphere::show(ui, &self.lab, &mut self.panels);
-                    });
+                    .show(ui, |ui| self.panels.sphere.show(ui, &mut frame));
             }
             self.view.show(
                 ui,
                 &self.lab,
                 self.scene,
                 view3d::overlay::Selection {
-                    warning: self.panels.selected_warning,
-                    part: self.panels.selected_part,
+                    warning: frame.shared.selected_warning,
+                    part: frame.shared.selected_part,
                 },
-                &mut commands,
+                frame.commands,
             );
         });
         if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
@@ -206,8 +210,8 @@ impl LabApp {
                 egui::Color32::WHITE,
             );
         }
-        panels::help::show(&ctx, &mut self.panels.help_open);
-        if let Some(purpose) = self.panels.dialog_request.take()
+        self.panels.help.show(ui, &mut frame);
+        if let Some(purpose) = self.shared.dialog_request.take()
             && self.dialog.is_none()
         {
             let repaint = ctx.clone();
@@ -287,12 +291,12 @@ impl LabApp {
     /// Starts, advances and ends the Record button's recording; its outcome becomes a message.
     fn record(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
         let now = Instant::now();
-        if std::mem::take(&mut self.panels.record_request) && self.recording.is_none() {
+        if std::mem::take(&mut self.shared.record_request) && self.recording.is_none() {
             let stamp = crate::platform::SystemTime::now()
                 .duration_since(crate::platform::UNIX_EPOCH)
                 .map_or(0, |d| d.as_secs());
             let name = format!("inertia-lab-recording-{stamp}");
-            let seconds = self.panels.record_seconds;
+            let seconds = self.shared.record_seconds;
             let started = if platform::RECORD_TO_ARCHIVE {
                 let archive = PathBuf::from(format!("{name}.zip"));
                 Ok(capture::Recording::start_archive(archive, seconds, now))
@@ -305,7 +309,7 @@ impl LabApp {
             }
         }
         if let Some(r) = &mut self.recording {
-            if std::mem::take(&mut self.panels.record_stop) {
+            if std::mem::take(&mut self.shared.record_stop) {
                 r.stop(now);
             }
             if let Some((text, error)) = r.frame(ctx, now) {
@@ -313,7 +317,7 @@ impl LabApp {
                 self.recording = None;
             }
         }
-        self.panels.recording = self.recording.as_ref().map(|r| r.remaining(now));
+        self.shared.recording = self.recording.as_ref().map(|r| r.remaining(now));
     }
 
     /// Turns a closed dialog's answer into a command.
@@ -345,7 +349,7 @@ impl LabApp {
 
     fn shortcuts(&mut self, ctx: &egui::Context, commands: &mut Vec<Command>) {
         if ctx.input(|i| i.key_pressed(Key::F1)) {
-            self.panels.help_open = !self.panels.help_open;
+            self.shared.help_open = !self.shared.help_open;
         }
         // Keys go to a text or number field being edited; otherwise they are the lab's, whatever
         // widget has focus (a focused button would take Space as a click).

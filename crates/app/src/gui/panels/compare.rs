@@ -5,7 +5,7 @@
 use egui::{Color32, RichText};
 use rbcore::{Integrator, RotationModel};
 
-use super::{Frame, Section};
+use super::{Frame, Panel};
 use crate::gui::view3d::ghost_color;
 use crate::lab::settings::{AppSettings, GhostLayout, InertiaSource};
 use crate::lab::{Command, Lab, MAX_COPIES, Variant};
@@ -69,7 +69,7 @@ pub struct CompareSection {
     choice: CompareChoice,
 }
 
-impl Section for CompareSection {
+impl Panel for CompareSection {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
         show(ui, f.lab, f.settings, &mut self.choice, f.commands);
     }

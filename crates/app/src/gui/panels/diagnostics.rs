@@ -4,7 +4,7 @@
 use egui::{Color32, RichText};
 use massprops::defects::Orientation;
 
-use super::{Frame, PanelState, Section};
+use super::{Frame, Panel, PanelState};
 use crate::gui::warnings;
 use crate::lab::Lab;
 
@@ -12,7 +12,7 @@ use crate::lab::Lab;
 #[derive(Debug, Default)]
 pub struct DiagnosticsSection;
 
-impl Section for DiagnosticsSection {
+impl Panel for DiagnosticsSection {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
         show(ui, f.lab, f.shared);
     }

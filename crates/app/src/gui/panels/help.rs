@@ -1,9 +1,20 @@
 //! The F1 help overlay: controls and what the views show.
 
+use super::{Frame, Panel};
 use crate::gui::view3d::overlay::AXIS_COLORS;
 
+/// The help window, shown while the shared `help_open` is set (F1, or the Help button).
+#[derive(Debug, Default)]
+pub struct HelpWindow;
+
+impl Panel for HelpWindow {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui.ctx(), &mut f.shared.help_open);
+    }
+}
+
 /// Shows the help window while `open`.
-pub fn show(ctx: &egui::Context, open: &mut bool) {
+fn show(ctx: &egui::Context, open: &mut bool) {
     egui::Window::new("Help (F1)")
         .open(open)
         .collapsible(false)

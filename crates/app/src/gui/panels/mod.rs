@@ -2,8 +2,9 @@
 //! view toggles, the plot panel and the F1 help. Each reads the model, edits the frame's one
 //! settings draft and records [`Command`]s; none changes the model itself.
 //!
-//! The side panel is a list of [`Section`]s (the egui demo's `Demo` trait): each is a file here,
-//! owns its own state, and is registered once, in `side::SidePanel`'s list.
+//! Every panel is a [`Panel`] (the egui demo's `Demo` trait): each is a file here and owns its
+//! own state. The window's panels are registered once, in [`Panels`] (the app places each); the
+//! side panel's sections, in `side::SidePanel`'s list.
 
 use super::platform::DialogPurpose;
 use crate::lab::settings::AppSettings;
@@ -22,21 +23,43 @@ pub struct Frame<'a> {
     pub shared: &'a mut PanelState,
 }
 
-/// One section of the side panel: its header and contents, or nothing when it does not apply
-/// to the body shown (Robot without a robot).
-pub trait Section {
-    /// Shows the section.
+/// A panel of the window (the toolbar, the plots, the sphere, the side panel, the help) or a
+/// section of the side panel (its header and contents, or nothing when it does not apply to the
+/// body shown: Robot without a robot).
+pub trait Panel {
+    /// Shows the panel in `ui`.
     fn show(&mut self, ui: &mut egui::Ui, frame: &mut Frame<'_>);
 }
 
+/// Every panel of the window, each with its own state: the one list that registers them (the
+/// app places each: the side panel left, the plots below, the toolbar and the sphere over the
+/// 3D view, the help over everything).
+#[derive(Default)]
+pub struct Panels {
+    /// The side panel and its sections.
+    pub side: side::SidePanel,
+    /// The toolbar over the 3D view.
+    pub toolbar: toolbar::Toolbar,
+    /// The plots of ω, L and the energies.
+    pub plots: plots::PlotsPanel,
+    /// The momentum sphere.
+    pub sphere: sphere::SpherePanel,
+    /// The F1 help.
+    pub help: help::HelpWindow,
+}
+
+pub mod body;
 pub mod compare;
 pub mod diagnostics;
 pub mod help;
+pub mod interaction;
+pub mod motion;
 pub mod parts;
 pub mod plots;
 pub mod robot;
 pub mod side;
 pub mod sphere;
+pub mod table;
 pub mod toolbar;
 
 /// UI-only state the panels share with each other, the app and the 3D view (text being typed,
@@ -45,18 +68,14 @@ pub mod toolbar;
 pub struct PanelState {
     /// Path typed in the "open" field.
     pub path: String,
-    /// Where "Export CSV" writes.
-    pub csv_path: String,
-    /// Whether the plots follow the latest time (sliding window) or stay where the user put them.
-    pub follow: bool,
     /// Whether the F1 help is shown.
     pub help_open: bool,
     /// A file dialog a panel asked for this frame (the app opens it).
     pub dialog_request: Option<DialogPurpose>,
     /// Whether a file dialog is open (its buttons are disabled meanwhile).
     pub dialog_open: bool,
-    /// The momentum sphere's orbit.
-    pub sphere: sphere::SphereView,
+    /// "Frame" was clicked this frame (the app centres the camera on the body).
+    pub frame_request: bool,
     /// How long the Record button records (s).
     pub record_seconds: f64,
     /// Record was pressed this frame (the app starts the recording).
@@ -76,12 +95,10 @@ impl Default for PanelState {
     fn default() -> Self {
         Self {
             path: String::new(),
-            csv_path: "inertia-lab.csv".to_owned(),
-            follow: true,
             help_open: false,
             dialog_request: None,
             dialog_open: false,
-            sphere: sphere::SphereView::default(),
+            frame_request: false,
             record_seconds: 5.0,
             record_request: false,
             record_stop: false,
@@ -121,4 +138,43 @@ pub(crate) fn number(
         .labelled_by(l.id)
     })
     .inner
+}
+
+const HEADING_CHARS: usize = 28;
+
+/// `text` shortened to at most `max` characters by an ellipsis in the middle, keeping the start
+/// and the end (where file names differ).
+fn elide(text: &str, max: usize) -> String {
+    let n = text.chars().count();
+    if n <= max {
+        return text.to_owned();
+    }
+    let keep = max.saturating_sub(1);
+    let head: String = text.chars().take(keep - keep / 2).collect();
+    let tail: String = text.chars().skip(n - keep / 2).collect();
+    format!("{head}…{tail}")
+}
+
+/// The choice beside "Simulation uses" and "Rotation model" (one setting, shown at both).
+fn restart_on_switch(ui: &mut egui::Ui, s: &mut AppSettings) {
+    ui.checkbox(&mut s.physics.restart_on_switch, "Switching starts again")
+        .on_hover_text(
+            "A new inertia or rotation model starts the motion again from the same spin, so \
+             that the runs compare fairly. Off: the motion goes on from where it is.",
+        );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_names_lose_their_middle() {
+        assert_eq!(elide("T-handle", 28), "T-handle");
+        let long = "scanned_turbine_blade_with_holes_final.obj";
+        let short = elide(long, 28);
+        assert_eq!(short.chars().count(), 28);
+        assert_eq!(short, "scanned_turbin…les_final.obj");
+        assert_eq!(elide("αβγδε", 3), "α…ε");
+    }
 }

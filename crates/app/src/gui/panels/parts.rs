@@ -9,7 +9,7 @@ use egui::{Color32, RichText};
 use massprops::materials::MATERIALS;
 use massprops::{MaterialEntry, PartEntry};
 
-use super::{Frame, PanelState, Section, number};
+use super::{Frame, Panel, PanelState, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::part_color;
 use crate::lab::{Command, Lab};
@@ -28,7 +28,7 @@ impl Default for PartsSection {
     }
 }
 
-impl Section for PartsSection {
+impl Panel for PartsSection {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
         show(ui, f.lab, f.shared, &mut self.body_path, f.commands);
     }

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use egui::Color32;
 use egui_plot::{Legend, Line, LineStyle, Plot, PlotPoints};
 
-use super::{PanelState, number};
+use super::{Frame, Panel, PanelState, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::history::History;
@@ -33,11 +33,37 @@ const ENERGY: [Series; 3] = [
     ("E", Color32::WHITE, |s| s.energy),
 ];
 
+/// The plot panel, with what it alone keeps: whether it follows the latest time, and where
+/// "Export CSV" writes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotsPanel {
+    /// Whether the plots follow the latest time (sliding window) or stay where the user put them.
+    pub follow: bool,
+    /// Where "Export CSV" writes.
+    pub csv_path: String,
+}
+
+impl Default for PlotsPanel {
+    fn default() -> Self {
+        Self {
+            follow: true,
+            csv_path: "inertia-lab.csv".to_owned(),
+        }
+    }
+}
+
+impl Panel for PlotsPanel {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui, f.lab, f.settings, self, f.shared, f.commands);
+    }
+}
+
 /// Shows the controls row and the three plots.
-pub fn show(
+fn show(
     ui: &mut egui::Ui,
     lab: &Lab,
     settings: &mut AppSettings,
+    own: &mut PlotsPanel,
     state: &mut PanelState,
     commands: &mut Vec<Command>,
 ) {
@@ -45,7 +71,7 @@ pub fn show(
     // Wraps within the plot panel in a narrow window: every control stays reachable.
     ui.horizontal_wrapped(|ui| {
         super::pause_button(ui, lab, commands);
-        ui.checkbox(&mut state.follow, "Follow");
+        ui.checkbox(&mut own.follow, "Follow");
         number(
             ui,
             "Window",
@@ -79,12 +105,12 @@ pub fn show(
         }
         ui.separator();
         let l = ui.label("CSV");
-        ui.add(egui::TextEdit::singleline(&mut state.csv_path).desired_width(120.0))
+        ui.add(egui::TextEdit::singleline(&mut own.csv_path).desired_width(120.0))
             .labelled_by(l.id);
-        if ui.button("Export CSV").clicked() && !state.csv_path.trim().is_empty() {
+        if ui.button("Export CSV").clicked() && !own.csv_path.trim().is_empty() {
             commands.push(Command::ExportCsv {
                 specimen: PRIMARY,
-                path: PathBuf::from(state.csv_path.trim()),
+                path: PathBuf::from(own.csv_path.trim()),
             });
         }
         if ui
@@ -123,7 +149,7 @@ pub fn show(
     let t_end = history.last().map_or(0.0, |s| s.t);
     let window = settings.plots.window;
     // Until a full window has elapsed the axis shows [0, window] rather than negative time.
-    let bounds = state
+    let bounds = own
         .follow
         .then_some(((t_end - window).max(0.0), t_end.max(window)));
     let since = bounds.map_or(f64::NEG_INFINITY, |b| b.0);

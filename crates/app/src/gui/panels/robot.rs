@@ -4,7 +4,7 @@
 
 use egui::{Color32, RichText};
 
-use super::{Frame, Section};
+use super::{Frame, Panel};
 use crate::lab::{Command, Lab};
 use inertia_io::report::findings::{finding_text, num};
 
@@ -16,7 +16,7 @@ const OTHER: Color32 = Color32::from_rgb(240, 200, 110);
 #[derive(Debug, Default)]
 pub struct RobotSection;
 
-impl Section for RobotSection {
+impl Panel for RobotSection {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
         show(ui, f.lab, f.commands);
     }

@@ -8,7 +8,7 @@ use egui::{Color32, Pos2, Sense, Stroke};
 use nalgebra::{UnitQuaternion, Vector3};
 use rbcore::{Integrator, RotationModel, Stability};
 
-use super::PanelState;
+use super::{Frame, Panel};
 use crate::gui::view3d::overlay::AXIS_COLORS;
 use crate::lab::Lab;
 use rbcore::polhode_curves::{self as polhodes, Curve, CurveKind, polhodes};
@@ -25,9 +25,9 @@ const PER_SIDE: usize = 3;
 /// enough vertices that software GL draws the sphere in about a millisecond.
 const SAMPLES: usize = 64;
 
-/// The orbit of the sphere view and its curves (UI state, not persisted).
+/// The momentum sphere panel, with its orbit and its curves (UI state, not persisted).
 #[derive(Debug, Clone, PartialEq)]
-pub struct SphereView {
+pub struct SpherePanel {
     /// Turn about the screen's vertical (rad).
     pub yaw: f64,
     /// Tilt towards the viewer (rad).
@@ -36,7 +36,7 @@ pub struct SphereView {
     curves: Option<(Vector3<f64>, Vec<Curve>)>,
 }
 
-impl Default for SphereView {
+impl Default for SpherePanel {
     fn default() -> Self {
         // All three axes visible, axis 2 towards the viewer's right.
         Self {
@@ -47,15 +47,21 @@ impl Default for SphereView {
     }
 }
 
-impl SphereView {
+impl SpherePanel {
     fn rotation(&self) -> UnitQuaternion<f64> {
         UnitQuaternion::from_euler_angles(self.pitch, 0.0, 0.0)
             * UnitQuaternion::from_euler_angles(0.0, self.yaw, 0.0)
     }
 }
 
+impl Panel for SpherePanel {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        show(ui, f.lab, self);
+    }
+}
+
 /// Shows the view in `ui`.
-pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
+fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut SpherePanel) {
     let primary = lab.primary();
     let body = primary.sim().body();
     let moments = body.moments();
@@ -70,13 +76,13 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     let (rect, response) = ui.allocate_exact_size(egui::vec2(size, size), Sense::drag());
     if response.dragged() {
         let d = response.drag_delta();
-        state.sphere.yaw += f64::from(d.x) * 0.01;
-        state.sphere.pitch = (state.sphere.pitch + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
+        state.yaw += f64::from(d.x) * 0.01;
+        state.pitch = (state.pitch + f64::from(d.y) * 0.01).clamp(-1.5, 1.5);
     }
     let painter = ui.painter_at(rect);
     let center = rect.center();
     let radius = 0.40 * size;
-    let view = state.sphere.rotation();
+    let view = state.rotation();
     // Screen point and depth (> 0 towards the viewer) of a principal-frame direction.
     let project = |p: &Vector3<f64>| -> (Pos2, f64) {
         let v = view * p;
@@ -89,18 +95,13 @@ pub fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
     };
     painter.circle_stroke(center, radius, Stroke::new(1.0, Color32::from_gray(90)));
     if state
-        .sphere
         .curves
         .as_ref()
         .is_none_or(|(for_moments, _)| *for_moments != moments)
     {
-        state.sphere.curves = Some((moments, polhodes(&moments, 1.0, PER_SIDE, SAMPLES)));
+        state.curves = Some((moments, polhodes(&moments, 1.0, PER_SIDE, SAMPLES)));
     }
-    let curves = state
-        .sphere
-        .curves
-        .as_ref()
-        .map_or(&[][..], |(_, c)| &c[..]);
+    let curves = state.curves.as_ref().map_or(&[][..], |(_, c)| &c[..]);
     if m > 0.0 {
         for curve in curves {
             let color = match curve.kind {

@@ -1,10 +1,23 @@
 //! The toolbar over the 3D view: overlay toggles and "frame the body".
 
+use super::{Frame, Panel};
 use crate::lab::settings::{AppSettings, Equivalent};
 
-/// Shows the toolbar, editing the frame's settings draft; returns whether "Frame" was clicked
-/// (a camera action, not a command).
-pub fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
+/// The toolbar over the 3D view.
+#[derive(Debug, Default)]
+pub struct Toolbar;
+
+impl Panel for Toolbar {
+    fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
+        // "Frame" is a camera action, not a command: the app frames the body.
+        if show(ui, f.settings) {
+            f.shared.frame_request = true;
+        }
+    }
+}
+
+/// Shows the toolbar, editing the frame's settings draft; returns whether "Frame" was clicked.
+fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
     let mut frame = false;
     // Wraps onto a second row in a narrow window (the 3D view takes what is left): a row that
     // scrolled sideways hid its last controls, and nothing said they were there.
