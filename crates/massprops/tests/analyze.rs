@@ -1,7 +1,7 @@
 //! `massprops::analyze` for every method, with a density or a mass, against closed forms, and
 //! the warnings it gives.
 
-mod common;
+use crate::common;
 
 use common::{assert_mat, assert_rel, box_tensor, prism_closed_form, steiner};
 use massprops::shapes;

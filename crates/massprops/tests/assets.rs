@@ -2,7 +2,7 @@
 //! pinned by closed forms computed here (parallel axis over parts, polygon moments, and an exact
 //! formula for the polygonal torus).
 
-mod common;
+use crate::common;
 
 use std::f64::consts::{FRAC_PI_2, TAU};
 use std::path::Path;

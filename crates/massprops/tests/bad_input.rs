@@ -1,7 +1,7 @@
 //! Diagnostics and errors on crafted bad meshes and files, and the loaders (OBJ, binary and ASCII
 //! STL) on good ones. Error messages must say where the problem is.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 

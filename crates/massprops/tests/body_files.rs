@@ -1,7 +1,7 @@
 //! Body files: a hammer in millimetres against its closed form, the round trip through
 //! `to_toml`, and every error naming the file, the line and the key.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 

@@ -2,7 +2,7 @@
 //! `MassProperties::compare_to` reports, the principal-axes convention on a body whose axes are
 //! not the mesh axes, and boxes of every scale, shape and place.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

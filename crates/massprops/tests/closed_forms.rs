@@ -1,7 +1,7 @@
 //! Closed forms: boxes at any size, offset and rotation; tetrahedra by Tonon's formulas; prisms
 //! with non-convex caps by the polygon's own moments; the T-handle by the parallel-axis theorem.
 
-mod common;
+use crate::common;
 
 use common::{
     assert_mat, assert_point, assert_rel, box_tensor, comb, prism_closed_form, star, steiner,

@@ -2,7 +2,7 @@
 //! (a box void), a thin-walled box against its six plates, rotated and moved parts, and equal
 //! densities against the single mesh.
 
-mod common;
+use crate::common;
 
 use common::{assert_mat, assert_rel, box_tensor};
 use massprops::defects::shell_faces;

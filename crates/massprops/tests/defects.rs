@@ -1,7 +1,7 @@
 //! The defects of real meshes, each on a case with a closed form: duplicate faces, internal
 //! walls, overlapping and nested shells, cavities, cracks, holes, separately flipped shells.
 
-mod common;
+use crate::common;
 
 use common::{assert_mat, assert_rel, box_tensor};
 use massprops::defects::Holes;

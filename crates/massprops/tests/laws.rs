@@ -1,7 +1,7 @@
 //! Property tests of the laws mass properties obey: translation, rotation, uniform scaling at
 //! fixed density, the parallel-axis theorem and winding reversal.
 
-mod common;
+use crate::common;
 
 use common::{assert_mat, assert_point, assert_rel};
 use massprops::integrals::IntegrationPath;

@@ -1,7 +1,7 @@
 //! Numerics: bodies far from the origin, tiny and huge bodies, zero-area faces, the principal
 //! frame's handedness, and degenerate (equal) moments.
 
-mod common;
+use crate::common;
 
 use common::{assert_mat, assert_rel, box_tensor, tetra_sum};
 use massprops::diagnostics::diagnose;

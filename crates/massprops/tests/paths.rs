@@ -2,7 +2,7 @@
 //! signed-tetrahedron sum (written here) agree on every sample shape and on irregular meshes;
 //! polygons agree with their triangulation.
 
-mod common;
+use crate::common;
 
 use common::{assert_mat, assert_point, assert_rel, tetra_sum};
 use massprops::PolyMesh;

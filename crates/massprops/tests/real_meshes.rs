@@ -1,7 +1,7 @@
 //! Real meshes (`tests/data/real`, see its README): no false alarm on a clean one, and on two
 //! overlapping convex pieces the overlap estimate agrees with an independent Monte Carlo count.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 
