@@ -4,13 +4,15 @@
 //! convention, handedness and units, written out independently here), and compared with
 //! `massprops` on the mesh scaled to metres, to [`TOLERANCE`] relative (rapier3d's own
 //! reconstruction to [`RAPIER_TOLERANCE`]). Bodies are rotated, off-centre and asymmetric. MuJoCo and yourdfpy (Python) load the MJCF and URDF outputs themselves;
-//! rapier3d-f64 (a dev-dependency) builds the rapier snippet's `MassProperties` itself.
+//! rapier3d-f64 (a dev-dependency) builds the rapier snippet's `MassProperties` itself. The
+//! whole files are opened by their consumers too: the USD stage by Pixar's usd-core, the GLB by
+//! Khronos' validator (and massprops' reader), the SDFormat model by libsdformat.
 
 mod common;
 
 use std::process::Command;
 
-use common::{TempFile, root, run, skip};
+use common::{TempFile, root, run, sdf_bodies, sdformat_bodies, skip};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{MassProperties, mass_properties};
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -913,4 +915,508 @@ fn yourdfpy_reads_the_urdf_as_the_same_body() {
             check(&label, errors(&read, "rh-z", "z", 1.0, &exact));
         }
     }
+}
+
+const USD_CORE: Consumer = Consumer {
+    test: "usd_core_reads_the_stage_as_the_same_body",
+    script: "usd_mass.py",
+    module: "pxr",
+    install: "python3 -m venv .venv && .venv/bin/pip install usd-core==26.11, then put .venv/bin first on PATH",
+};
+
+/// Relative error allowed of what a format stores in single precision (USD's `MassAPI`
+/// attributes, glTF's corners): a few units in the last place of an f32 (6e-8).
+const SINGLE: f64 = 1e-6;
+
+/// The relative errors of a uniform solid's volume and centre of volume, read from its surface,
+/// against the exact body's (its mass over the density, its centre of mass).
+fn solid_errors(
+    volume: f64,
+    centre: Vector3<f64>,
+    exact: &MassProperties,
+    density: f64,
+) -> [f64; 2] {
+    let size = (exact.inertia_com.trace() / exact.mass).sqrt();
+    [
+        (volume - exact.mass / density).abs() / (exact.mass / density),
+        (centre - exact.center_of_mass.coords).amax() / size,
+    ]
+}
+
+/// `export` with `--output` into a temporary file named `name`; its bytes.
+fn export_file(file: &str, name: &str, args: &[&str]) -> (TempFile, Vec<u8>) {
+    let out = TempFile::new(name, b"");
+    let mut all = args.to_vec();
+    all.extend_from_slice(&["--output", out.path()]);
+    let said = export(file, &all);
+    assert!(said.is_empty(), "{said}");
+    let bytes = std::fs::read(out.path()).expect("written");
+    (out, bytes)
+}
+
+/// The USD stage, opened by usd-core: its metres, kilograms and +Z up; UsdPhysics' MassAPI
+/// rebuilds the tensor to single precision, its double-precision attributes to [`TOLERANCE`];
+/// the mesh on its collision prim encloses the body's volume about its centre of mass.
+#[test]
+fn usd_core_reads_the_stage_as_the_same_body() {
+    if !USD_CORE.available() {
+        return;
+    }
+    for (b, up) in bodies().iter().flat_map(|b| [(b, "y"), (b, "z")]) {
+        let exact = reference(&b.mesh, b.metres, 1240.0);
+        let args = [
+            "--format",
+            "usd",
+            "--units",
+            b.units,
+            "--material",
+            "pla",
+            "--up",
+            up,
+        ];
+        let (file, _) = export_file(b.file.path(), &format!("{}.usda", b.name), &args);
+        let v = USD_CORE.read(file.path());
+        assert_eq!(
+            (f(&v["meters_per_unit"]), f(&v["kilograms_per_unit"])),
+            (1.0, 1.0)
+        );
+        assert_eq!(v["up_axis"], "Z");
+        let read = |m: &Value| {
+            let q = floats(&m["principal_axes"]);
+            let c = floats(&m["center_of_mass"]);
+            let d = floats(&m["diagonal_inertia"]);
+            Read::principal(
+                f(&m["mass"]),
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[0], q[1], q[2], q[3]),
+                [d[0], d[1], d[2]],
+            )
+        };
+        let label = format!("usd-core {} {} +{up} up", v["version"], b.name);
+        check(&label, errors(&read(&v["double"]), "rh-z", up, 1.0, &exact));
+        check_within(
+            &format!("{label} MassAPI"),
+            errors(&read(&v), "rh-z", up, 1.0, &exact),
+            SINGLE,
+        );
+        let c = floats(&v["centre_of_volume"]);
+        let centre = target_to_mesh("rh-z", up) * Vector3::new(c[0], c[1], c[2]);
+        let [volume, centre] = solid_errors(f(&v["volume"]), centre, &exact, 1240.0);
+        assert!(
+            volume < SINGLE && centre < SINGLE,
+            "{label}: {volume:e} {centre:e}"
+        );
+    }
+}
+
+/// The GLB: valid under Khronos' validator; its node's `KHR_physics_rigid_bodies` motion (read
+/// here from the file's JSON chunk) is the body to [`TOLERANCE`]; its mesh, read back by
+/// massprops' glTF reader, encloses the body's volume about its centre of mass.
+#[test]
+fn the_glb_is_valid_gltf_and_its_node_holds_the_same_body() {
+    let mut files = Vec::new();
+    for (b, up) in bodies().iter().flat_map(|b| [(b, "y"), (b, "z")]) {
+        let exact = reference(&b.mesh, b.metres, 1240.0);
+        let args = [
+            "--format",
+            "glb",
+            "--units",
+            b.units,
+            "--material",
+            "pla",
+            "--up",
+            up,
+        ];
+        let (file, bytes) = export_file(b.file.path(), &format!("{}.glb", b.name), &args);
+        assert_eq!(&bytes[..4], b"glTF");
+        let json_length = u32::from_le_bytes(bytes[12..16].try_into().expect("4 bytes")) as usize;
+        let doc: Value = serde_json::from_slice(&bytes[20..20 + json_length]).expect("JSON chunk");
+        assert_eq!(doc["extensionsUsed"][0], "KHR_physics_rigid_bodies");
+        let motion = &doc["nodes"][0]["extensions"]["KHR_physics_rigid_bodies"]["motion"];
+        let q = floats(&motion["inertiaOrientation"]);
+        let c = floats(&motion["centerOfMass"]);
+        let d = floats(&motion["inertiaDiagonal"]);
+        let read = Read::principal(
+            f(&motion["mass"]),
+            Vector3::new(c[0], c[1], c[2]),
+            quat(q[3], q[0], q[1], q[2]),
+            [d[0], d[1], d[2]],
+        );
+        let label = format!("glb {} +{up} up", b.name);
+        check(&label, errors(&read, "rh-y", up, 1.0, &exact));
+        let mesh = massprops::load_mesh(std::path::Path::new(file.path())).expect("reads");
+        let solid = mass_properties(&mesh.mesh, 1240.0).expect("closed");
+        let centre = target_to_mesh("rh-y", up) * solid.center_of_mass.coords;
+        let [volume, centre] = solid_errors(solid.mass / 1240.0, centre, &exact, 1240.0);
+        assert!(
+            volume < SINGLE && centre < SINGLE,
+            "{label}: {volume:e} {centre:e}"
+        );
+        files.push(file);
+    }
+    validate_gltf(
+        "the_glb_is_valid_gltf_and_its_node_holds_the_same_body",
+        &files,
+    );
+}
+
+/// Khronos' glTF validator finds no error in any of `files` (skipped, and said, where Node.js or
+/// the validator is missing).
+fn validate_gltf(test: &str, files: &[TempFile]) {
+    let validator = root().join("target/gltf-validator/node_modules/gltf-validator");
+    if !(validator.is_dir() && common::on_path("node")) {
+        skip(
+            test,
+            "Node.js and Khronos' glTF validator are missing",
+            "apt install nodejs npm; npm install --prefix target/gltf-validator \
+             gltf-validator@2.0.0-dev.3.10",
+        );
+        return;
+    }
+    let script = "const v = require(process.argv[1]); const fs = require('fs');
+        (async () => { for (const f of process.argv.slice(2)) {
+          const r = await v.validateBytes(new Uint8Array(fs.readFileSync(f)));
+          console.log(r.issues.numErrors, JSON.stringify(r.issues.messages.filter(m => m.severity === 0)));
+        } })();";
+    let out = Command::new("node")
+        .args(["-e", script])
+        .arg(&validator)
+        .args(files.iter().map(TempFile::path))
+        .output()
+        .expect("node runs");
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{said}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(said.lines().count(), files.len(), "{said}");
+    for line in said.lines() {
+        assert!(line.starts_with("0 "), "the validator's errors: {line}");
+    }
+}
+
+/// The SDFormat model, read by libsdformat: its link's inertial is the body to [`TOLERANCE`]
+/// in both frames, and its visual names the mesh file, scaled to metres and turned to +Z up.
+#[test]
+fn libsdformat_reads_the_sdf_model_as_the_same_body() {
+    let Some(reader) = sdf_bodies("libsdformat_reads_the_sdf_model_as_the_same_body") else {
+        return;
+    };
+    for b in bodies() {
+        let exact = reference(&b.mesh, b.metres, 1240.0);
+        for frame in ["origin", "com-principal"] {
+            let args = [
+                "--format",
+                "sdf-model",
+                "--units",
+                b.units,
+                "--material",
+                "pla",
+                "--frame",
+                frame,
+            ];
+            let (file, _) = export_file(b.file.path(), &format!("{}.sdf", b.name), &args);
+            let v = sdformat_bodies(&reader, std::path::Path::new(file.path()), &root());
+            let link = &v["bodies"]["body"];
+            let c = floats(&link["com"]);
+            let t: Vec<Vec<f64>> = link["tensor"]
+                .as_array()
+                .expect("rows")
+                .iter()
+                .map(floats)
+                .collect();
+            let read = Read {
+                mass: f(&link["mass"]),
+                com: Vector3::new(c[0], c[1], c[2]),
+                inertia: Matrix3::from_fn(|r, k| t[r][k]),
+            };
+            let label = format!("libsdformat {} {frame}", b.name);
+            check(&label, errors(&read, "rh-z", "y", 1.0, &exact));
+            let mesh = &link["meshes"][0];
+            let uri = mesh["uri"].as_str().expect("uri");
+            let named = std::path::Path::new(file.path())
+                .parent()
+                .expect("folder")
+                .join(uri);
+            assert_eq!(
+                std::fs::canonicalize(named).ok(),
+                std::fs::canonicalize(b.file.path()).ok(),
+                "{label}: {uri}"
+            );
+            let r: Vec<Vec<f64>> = mesh["rotation"]
+                .as_array()
+                .expect("rows")
+                .iter()
+                .map(floats)
+                .collect();
+            let placed = Matrix3::from_fn(|i, k| r[i][k]) * floats(&mesh["scale"])[0];
+            let expected = target_to_mesh("rh-z", "y").transpose() * b.metres;
+            assert!(
+                (placed - expected).amax() < 1e-15,
+                "{label}: {placed} vs {expected}"
+            );
+            assert_eq!(floats(&mesh["position"]), [0.0; 3], "{label}");
+        }
+    }
+}
+
+const USD_ANIMATION: Consumer = Consumer {
+    test: "usd_core_plays_the_baked_tumble_as_the_lab_simulates_it",
+    script: "usd_animation.py",
+    module: "pxr",
+    install: "python3 -m venv .venv && .venv/bin/pip install usd-core==26.11, then put .venv/bin first on PATH",
+};
+
+/// The canonical tennis racket's ω₀ (rad/s, principal frame).
+const RACKET_OMEGA: Vector3<f64> = Vector3::new(0.001, 10.0, 0.001);
+
+/// The lab's own states of a body spun at `omega` from rest where its mesh lies (centre of mass
+/// `com`, principal axes `axes` in the mesh): each frame's mesh → world isometry (world = the
+/// mesh's frame), at 30 frames a second from the default integrator at 1/240 s.
+fn lab_frames(
+    mass: f64,
+    moments: Vector3<f64>,
+    axes: nalgebra::Rotation3<f64>,
+    com: Point3<f64>,
+    seconds: f64,
+) -> Vec<Isometry3<f64>> {
+    let mut body = rbcore::Body::from_principal(mass, moments, axes).expect("a body");
+    body.set_position(com).expect("finite");
+    body.set_orientation(UnitQuaternion::from_rotation_matrix(&body.principal_axes()))
+        .expect("finite");
+    body.set_omega_principal(RACKET_OMEGA).expect("finite");
+    let settings = rbcore::Settings {
+        dt: 1.0 / 240.0,
+        ..rbcore::Settings::default()
+    };
+    let mut sim = rbcore::Simulation::new(body, settings).expect("settings");
+    let frames = (seconds * 30.0).round() as usize;
+    let mut out = Vec::with_capacity(frames + 1);
+    for k in 0..=frames {
+        if k > 0 {
+            for _ in 0..8 {
+                sim.step().expect("steps");
+            }
+        }
+        let r = sim.body().body_orientation();
+        let x = sim.body().position();
+        out.push(Isometry3::from_parts(
+            Translation3::from(x.coords - r * com.coords),
+            r,
+        ));
+    }
+    out
+}
+
+/// `simulate --animation` into a temporary file named `name`.
+fn bake(name: &str, args: &[&str]) -> TempFile {
+    let out = TempFile::new(name, b"");
+    let mut all = vec![
+        "simulate",
+        "--omega",
+        "0.001,10,0.001",
+        "--animation",
+        out.path(),
+    ];
+    all.extend_from_slice(args);
+    let ran = run(&all);
+    assert!(
+        ran.status.success(),
+        "simulate {args:?}: {}",
+        String::from_utf8_lossy(&ran.stderr)
+    );
+    out
+}
+
+/// The T-handle (its centre of mass off its mesh's origin), baked to USD for 24 s and opened by
+/// usd-core: at every time code USD's own local-to-world transform is the lab's state (turned
+/// from the mesh's +Y up into the stage's +Z up) to 1e-12, and it shows the flip: the
+/// intermediate axis points backwards half a period (4K(k)/λ) after the start and forwards
+/// again a period after it.
+#[test]
+fn usd_core_plays_the_baked_tumble_as_the_lab_simulates_it() {
+    if !USD_ANIMATION.available() {
+        return;
+    }
+    let mesh_path = root().join("assets/t_handle.obj");
+    let file = bake(
+        "t_handle.usda",
+        &[
+            "--mesh",
+            mesh_path.to_str().expect("utf-8"),
+            "--duration",
+            "24",
+        ],
+    );
+    let v = USD_ANIMATION.read(file.path());
+    assert_eq!(
+        (f(&v["time_codes_per_second"]), &v["start"], &v["end"]),
+        (30.0, &Value::from(0), &Value::from(720))
+    );
+    assert_eq!(v["up_axis"], "Z");
+    assert_eq!(v["kinematic"], true);
+    assert_eq!(
+        v["op_order"],
+        serde_json::json!(["xformOp:translate", "xformOp:orient"])
+    );
+    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
+    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
+    let lab = lab_frames(
+        exact.mass,
+        exact.principal.moments,
+        exact.principal.rotation,
+        exact.center_of_mass,
+        24.0,
+    );
+    let a = target_to_mesh("rh-z", "y").transpose();
+    let intermediate = a * exact.principal.rotation.matrix().column(1);
+    let matrices = v["matrices"].as_array().expect("matrices");
+    assert_eq!(matrices.len(), lab.len());
+    let mut intermediate_axis = Vec::new();
+    for (k, (m, frame)) in matrices.iter().zip(&lab).enumerate() {
+        let rows: Vec<Vec<f64>> = m.as_array().expect("rows").iter().map(floats).collect();
+        // USD's row-vector matrix: the rotation's transpose above the translation row.
+        let turn = Matrix3::from_fn(|r, c| rows[c][r]);
+        let moved = Vector3::new(rows[3][0], rows[3][1], rows[3][2]);
+        let expected = a * frame.rotation.to_rotation_matrix().matrix() * a.transpose();
+        assert!(
+            (turn - expected).amax() < 1e-12,
+            "time code {k}: {turn} vs {expected}"
+        );
+        assert!(
+            (moved - a * frame.translation.vector).amax() < 1e-12,
+            "time code {k}: {moved}"
+        );
+        // The intermediate principal axis against where it started.
+        intermediate_axis.push((turn * intermediate).dot(&intermediate));
+    }
+    let moments = exact.principal.moments;
+    let period = rbcore::torque_free_period(&moments, &moments.component_mul(&RACKET_OMEGA))
+        .expect("a flip");
+    assert!(period < 24.0, "{period}");
+    let at = |t: f64| intermediate_axis[(t * 30.0).round() as usize];
+    assert!(
+        at(period / 2.0) < -0.999 && at(period) > 0.999,
+        "{} s: {}, {} s: {}",
+        period / 2.0,
+        at(period / 2.0),
+        period,
+        at(period)
+    );
+}
+
+/// A GLB accessor's floats, read from the file's BIN chunk.
+fn accessor(doc: &Value, bin: &[u8], index: usize) -> Vec<f32> {
+    let a = &doc["accessors"][index];
+    let view = &doc["bufferViews"][a["bufferView"].as_u64().expect("view") as usize];
+    let offset = view["byteOffset"].as_u64().unwrap_or(0) as usize;
+    let length = view["byteLength"].as_u64().expect("length") as usize;
+    bin[offset..offset + length]
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes(b.try_into().expect("4 bytes")))
+        .collect()
+}
+
+/// The T-handle (its centre of mass off its mesh's origin) baked to GLB for 6 s: valid under
+/// Khronos' validator, one animation of rotation and translation on the mesh's node, keyed at
+/// k/30 s, each keyframe the lab's state (turned from the mesh's +Z up to glTF's +Y) to single
+/// precision; the mesh read back by massprops is the T-handle.
+#[test]
+fn the_baked_glb_keys_the_lab_states_on_the_mesh_node() {
+    let mesh_path = root().join("assets/t_handle.obj");
+    let mesh_file = mesh_path.to_str().expect("utf-8");
+    let file = bake(
+        "t_handle.glb",
+        &[
+            "--mesh",
+            mesh_file,
+            "--duration",
+            "6",
+            "--up",
+            "z",
+            "--units",
+            "m",
+        ],
+    );
+    let bytes = std::fs::read(file.path()).expect("written");
+    let json_length = u32::from_le_bytes(bytes[12..16].try_into().expect("4 bytes")) as usize;
+    let doc: Value = serde_json::from_slice(&bytes[20..20 + json_length]).expect("JSON chunk");
+    let bin = &bytes[20 + json_length + 8..];
+    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
+    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
+    let lab = lab_frames(
+        exact.mass,
+        exact.principal.moments,
+        exact.principal.rotation,
+        exact.center_of_mass,
+        6.0,
+    );
+    let animation = &doc["animations"][0];
+    assert_eq!(doc["animations"].as_array().map(Vec::len), Some(1));
+    let channel = |path: &str| {
+        let c = animation["channels"]
+            .as_array()
+            .expect("channels")
+            .iter()
+            .find(|c| c["target"]["path"] == path)
+            .expect("a channel");
+        assert_eq!(c["target"]["node"], 0);
+        let sampler = &animation["samplers"][c["sampler"].as_u64().expect("sampler") as usize];
+        assert_eq!(sampler["interpolation"], "LINEAR");
+        let at = |key: &str| sampler[key].as_u64().expect("accessor") as usize;
+        (
+            accessor(&doc, bin, at("input")),
+            accessor(&doc, bin, at("output")),
+        )
+    };
+    let (times, rotations) = channel("rotation");
+    let (_, translations) = channel("translation");
+    assert_eq!(times.len(), lab.len());
+    let a = target_to_mesh("rh-y", "z").transpose();
+    let size = (exact.inertia_com.trace() / exact.mass).sqrt();
+    for (k, frame) in lab.iter().enumerate() {
+        assert!((f64::from(times[k]) - k as f64 / 30.0).abs() < 1e-6);
+        let r = &rotations[4 * k..4 * k + 4];
+        let q = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+            f64::from(r[3]),
+            f64::from(r[0]),
+            f64::from(r[1]),
+            f64::from(r[2]),
+        ));
+        let expected = a * frame.rotation.to_rotation_matrix().matrix() * a.transpose();
+        let turn = q.to_rotation_matrix().into_inner();
+        assert!(
+            (turn - expected).amax() < 1e-6,
+            "frame {k}: {turn} vs {expected}"
+        );
+        let t = &translations[3 * k..3 * k + 3];
+        let t = Vector3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2]));
+        assert!(
+            (t - a * frame.translation.vector).amax() < 1e-6 * size.max(1.0),
+            "frame {k}: {t}"
+        );
+    }
+    let read = massprops::load_mesh(std::path::Path::new(file.path())).expect("reads");
+    let solid = mass_properties(&read.mesh, 1.0).expect("closed");
+    assert!((solid.mass - exact.mass).abs() < 1e-6 * exact.mass);
+    validate_gltf(
+        "the_baked_glb_keys_the_lab_states_on_the_mesh_node",
+        &[file],
+    );
+}
+
+/// What `simulate --animation` refuses, each named.
+#[test]
+fn an_animation_of_another_kind_or_with_a_csv_is_refused() {
+    let said = |args: &[&str]| {
+        let mut all = vec!["simulate"];
+        all.extend_from_slice(args);
+        let out = run(&all);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    assert!(said(&["--animation", "out.fbx"]).contains(".glb (glTF) or .usda (USD)"));
+    assert!(said(&["--animation", "out.glb", "--csv", "out.csv"]).contains("--csv"));
+    assert!(said(&["--animation", "out.glb", "--fps", "0"]).contains("fps"));
 }

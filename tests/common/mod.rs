@@ -9,6 +9,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use serde_json::Value;
+
 /// The workspace root.
 pub fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -71,4 +73,62 @@ pub fn skip(test: &str, missing: &str, install: &str) {
 pub fn on_path(program: &str) -> bool {
     std::env::var_os("PATH")
         .is_some_and(|paths| std::env::split_paths(&paths).any(|dir| dir.join(program).is_file()))
+}
+
+/// libsdformat's reader (`tests/consumers/sdf_bodies.cc`), compiled once per run against
+/// Debian's libsdformat 12; `None` (the skip reported) where the headers or g++ are missing.
+pub fn sdf_bodies(test: &str) -> Option<PathBuf> {
+    static BUILT: std::sync::OnceLock<Result<PathBuf, String>> = std::sync::OnceLock::new();
+    let has = |program: &str, args: &[&str]| {
+        Command::new(program)
+            .args(args)
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    if !has("g++", &["--version"]) || !has("pkg-config", &["--exists", "sdformat12"]) {
+        skip(
+            test,
+            "libsdformat 12's headers, pkg-config or g++ are missing",
+            "apt install libsdformat-dev pkg-config g++",
+        );
+        return None;
+    }
+    let built = BUILT.get_or_init(|| {
+        let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("sdf_bodies");
+        let flags = Command::new("pkg-config")
+            .args(["--cflags", "--libs", "sdformat12"])
+            .output()
+            .map_err(|e| e.to_string())?;
+        let flags = String::from_utf8_lossy(&flags.stdout).into_owned();
+        let compiled = Command::new("g++")
+            .args(["-std=c++17", "-O1"])
+            .arg(root().join("tests/consumers/sdf_bodies.cc"))
+            .args(flags.split_whitespace())
+            .arg("-o")
+            .arg(&out)
+            .output()
+            .map_err(|e| e.to_string())?;
+        if compiled.status.success() {
+            Ok(out)
+        } else {
+            Err(String::from_utf8_lossy(&compiled.stderr).into_owned())
+        }
+    });
+    Some(built.clone().expect("sdf_bodies.cc compiles"))
+}
+
+/// What libsdformat reads of every link of `file` (model://NAME found in `models`).
+pub fn sdformat_bodies(reader: &Path, file: &Path, models: &Path) -> Value {
+    let out = Command::new(reader)
+        .arg(file)
+        .arg(models)
+        .output()
+        .expect("sdf_bodies runs");
+    assert!(
+        out.status.success(),
+        "libsdformat on {}:\n{}",
+        file.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
 }

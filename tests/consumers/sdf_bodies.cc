@@ -2,7 +2,7 @@
 // inertial as JSON, in the convention of tests/python/robot_bodies.py: mass (kg), centre of
 // mass (m, link frame), tensor about it (kg*m^2, link axes, off-diagonals -sum(m*x*y)), and
 // the link's pose in the top model's frame (a world's: its models' links scoped by model). Names of nested models' links are scoped
-// (outer::link). Usage: sdf_bodies FILE [MODELS_DIR] (MODELS_DIR is where model://NAME is).
+// (outer::link), and each visual's mesh (URI, scale, pose in the link frame). Usage: sdf_bodies FILE [MODELS_DIR] (MODELS_DIR is where model://NAME is).
 #include <sdf/sdf.hh>
 
 #include <cstdio>
@@ -50,7 +50,23 @@ bool Visit(const sdf::Model *model, const std::string &prefix, const Pose3d &x_t
     std::printf(", \"position\": [%.17g, %.17g, %.17g], \"rotation\": ", x.Pos().X(),
                 x.Pos().Y(), x.Pos().Z());
     PrintMatrix(Matrix3d(x.Rot()));
-    std::printf("}");
+    // Each visual's mesh: its URI, scale and pose in the link frame.
+    std::printf(", \"meshes\": [");
+    for (uint64_t v = 0; v < link->VisualCount(); ++v) {
+      const sdf::Visual *visual = link->VisualByIndex(v);
+      const sdf::Mesh *mesh = visual->Geom()->MeshShape();
+      Pose3d x_link_visual;
+      visual->SemanticPose().Resolve(x_link_visual);
+      std::printf("%s{\"uri\": \"%s\", \"scale\": [%.17g, %.17g, %.17g], \"position\": "
+                  "[%.17g, %.17g, %.17g], \"rotation\": ",
+                  v ? ", " : "", mesh ? mesh->Uri().c_str() : "",
+                  mesh ? mesh->Scale().X() : 0.0, mesh ? mesh->Scale().Y() : 0.0,
+                  mesh ? mesh->Scale().Z() : 0.0, x_link_visual.Pos().X(),
+                  x_link_visual.Pos().Y(), x_link_visual.Pos().Z());
+      PrintMatrix(Matrix3d(x_link_visual.Rot()));
+      std::printf("}");
+    }
+    std::printf("]}");
     first = false;
   }
   for (uint64_t i = 0; i < model->ModelCount(); ++i) {

@@ -235,7 +235,7 @@ impl MassResult {
             frame,
         };
         inertia_io::export::export(self.properties(), &options)
-            .map(|out| out.text)
+            .map(|out| String::from_utf8_lossy(&out.bytes).into_owned())
             .map_err(value_error)
     }
 

@@ -10,7 +10,8 @@ use super::error::{CliError, positive};
 use super::parts::PartArgs;
 use super::repair::RepairArgs;
 use inertia_io::export::{
-    ExportError, ExportOptions, Format, Frame, LengthUnit, UpAxis, density_per_cubic_unit, export,
+    ExportError, ExportOptions, Format, Frame, Geometry, LengthUnit, Surface, UpAxis,
+    density_per_cubic_unit, export_file,
 };
 use inertia_io::input::{Request, Resolved, Source, resolve};
 use inertia_io::kind::mesh_extension_words;
@@ -130,23 +131,44 @@ pub fn run(args: &ExportArgs) -> Result<(), CliError> {
     for line in inertia_io::report::words::warning_lines(&file.to_string(), &resolved) {
         eprintln!("{line}");
     }
-    write(args, &properties, units)
+    let surface = Surface::of(&resolved, &args.file);
+    write(args, &properties, &surface, units)
 }
 
 /// Exports `properties` (lengths in `units`) as the arguments say.
 fn write(
     args: &ExportArgs,
     properties: &MassProperties,
+    surface: &Surface,
     units: LengthUnit,
 ) -> Result<(), CliError> {
     let file = args.file.display();
+    if args.format == Format::Glb && args.output.is_none() {
+        return Err(CliError::Usage(
+            "glb is a binary file: name it with --output FILE.glb".to_owned(),
+        ));
+    }
+    let name = args
+        .file
+        .file_stem()
+        .map_or_else(|| "body".to_owned(), |s| s.to_string_lossy().into_owned());
+    let geometry = Geometry {
+        surface,
+        name: &name,
+        folder: args.output.as_deref().map(|o| {
+            o.parent()
+                .filter(|p| !p.as_os_str().is_empty())
+                .unwrap_or(std::path::Path::new("."))
+        }),
+        motion: None,
+    };
     let options = ExportOptions {
         format: args.format,
         units,
         up: args.up,
         frame: args.frame,
     };
-    let out = export(properties, &options).map_err(|e: ExportError| {
+    let out = export_file(properties, &geometry, &options).map_err(|e: ExportError| {
         if e.is_usage() {
             CliError::Usage(e.to_string())
         } else {
@@ -157,11 +179,9 @@ fn write(
         eprintln!("warning: {w}");
     }
     match &args.output {
-        Some(path) => std::fs::write(path, &out.text)
+        Some(path) => std::fs::write(path, &out.bytes)
             .map_err(|e| CliError::Runtime(format!("cannot write {}: {e}", path.display()))),
-        None => {
-            print!("{}", out.text);
-            Ok(())
-        }
+        None => std::io::Write::write_all(&mut std::io::stdout(), &out.bytes)
+            .map_err(|e| CliError::Runtime(format!("cannot write the output: {e}"))),
     }
 }

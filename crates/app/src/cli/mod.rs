@@ -3,6 +3,7 @@
 //! `export` (engine and robot formats), `audit` (a robot description's links against their
 //! geometry), with their exit codes ([`error`]).
 
+pub mod animation;
 pub mod audit;
 mod choice;
 pub mod error;

@@ -16,6 +16,7 @@ use rbcore::{
 
 use massprops::MassSpec;
 
+use super::animation::{self, AnimationArgs, Shape};
 use super::error::{CliError, positive};
 use super::repair::RepairArgs;
 use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
@@ -77,6 +78,9 @@ pub struct SimulateArgs {
     /// How cracks and holes in the mesh are handled (with --mesh).
     #[command(flatten)]
     pub repair: RepairArgs,
+    /// The motion baked into a glTF or USD file.
+    #[command(flatten)]
+    pub animation: AnimationArgs,
 }
 
 /// Version of the JSON object of `simulate --summary`; bumped on any incompatible change.
@@ -103,8 +107,9 @@ fn triple(name: &str, s: &str) -> Result<Vector3<f64>, CliError> {
     Ok(v)
 }
 
-/// The body at rest, from `--mesh` or `--inertia`.
-fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
+/// The body at rest, from `--mesh` or `--inertia`, and with `--animation` the shape its file
+/// shows.
+fn build_body(args: &SimulateArgs) -> Result<(Body, Option<Shape>), CliError> {
     if let Some(m) = args.mass {
         positive("--mass", m)?;
     }
@@ -126,7 +131,7 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
         {
             eprintln!("{line}");
         }
-        let mut props = match resolved {
+        let mut props = match &resolved {
             Resolved::Mesh { analysis, .. } => analysis.properties,
             Resolved::Parts(parts) => parts.composite.properties,
         };
@@ -134,12 +139,17 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
         if let Some(m) = args.mass {
             props = props.with_mass(m).map_err(input)?;
         }
-        return Body::from_principal(
+        let body = Body::from_principal(
             props.mass,
             props.principal.moments,
             props.principal.rotation,
         )
-        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())));
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+        let shape = args.animation.animation.is_some().then(|| Shape {
+            properties: props,
+            surface: inertia_io::export::Surface::of(&resolved, path),
+        });
+        return Ok((body, shape));
     }
     let moments = match &args.inertia {
         Some(s) => triple("--inertia", s)?,
@@ -151,8 +161,14 @@ fn build_body(args: &SimulateArgs) -> Result<Body, CliError> {
             moments.x, moments.y, moments.z
         )));
     }
-    Body::from_principal(args.mass.unwrap_or(1.0), moments, Rotation3::identity())
-        .map_err(|e| CliError::Usage(format!("--inertia: {e}")))
+    let body = Body::from_principal(args.mass.unwrap_or(1.0), moments, Rotation3::identity())
+        .map_err(|e| CliError::Usage(format!("--inertia: {e}")))?;
+    let shape = args
+        .animation
+        .animation
+        .is_some()
+        .then(|| Shape::principal_box(&body));
+    Ok((body, shape))
 }
 
 /// Number of steps for `--duration`.
@@ -199,7 +215,11 @@ fn diverged(e: rbcore::SimError) -> CliError {
 
 /// Runs `simulate`.
 pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
-    let mut body = build_body(args)?;
+    args.animation.format()?;
+    let (mut body, shape) = build_body(args)?;
+    if let Some(shape) = &shape {
+        animation::place(&mut body, shape)?;
+    }
     let omega = triple("--omega", &args.omega)?;
     body.set_omega_principal(omega)
         .map_err(|e| CliError::Usage(format!("--omega: {e}")))?;
@@ -211,6 +231,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         return compare(args, body, steps);
     }
     let mut sim = simulation(args, body, args.integrator)?;
+    if let Some(shape) = &shape {
+        return bake(args, &mut sim, shape);
+    }
     if args.summary {
         return summary(args, &mut sim, steps);
     }
@@ -260,6 +283,40 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         drift.max_energy()
     );
     eprintln!("flips (reversals of w2):            {}", flips.flips());
+    Ok(())
+}
+
+/// `simulate --animation`: the keyframes written with the shape, the drifts on stderr.
+fn bake(args: &SimulateArgs, sim: &mut Simulation, shape: &Shape) -> Result<(), CliError> {
+    let d0 = sim.diagnostics();
+    let keyframes =
+        rbcore::keyframes(sim, args.duration, args.animation.fps).map_err(|e| match e {
+            rbcore::SimError::InvalidSetting(e) => {
+                CliError::Usage(format!("--fps, --duration: {e}"))
+            }
+            e => diverged(e),
+        })?;
+    let name = args
+        .mesh
+        .as_deref()
+        .and_then(|p| p.file_stem())
+        .map_or_else(|| "box".to_owned(), |s| s.to_string_lossy().into_owned());
+    animation::write(&args.animation, &name, shape, &keyframes)?;
+    let d = sim.diagnostics();
+    eprintln!(
+        "integrator {} ({} model), dt {} s, {} keyframes at {} fps over {} s",
+        args.integrator,
+        args.model,
+        keyframes.dt,
+        keyframes.poses.len(),
+        keyframes.fps,
+        d.time
+    );
+    eprintln!(
+        "relative change of |L| and E from start to end: {:.3e}, {:.3e}",
+        rbcore::relative_change(d.angular_momentum_norm, d0.angular_momentum_norm).unwrap_or(0.0),
+        rbcore::relative_change(d.energy, d0.energy).unwrap_or(0.0)
+    );
     Ok(())
 }
 

@@ -9,16 +9,21 @@
 //! conventions go in the node's `extras`. The file must also list the extension in
 //! `extensionsUsed`.
 
-use serde_json::json;
+use serde_json::{Value, json};
 
 use super::frames::Converted;
 
 /// The node fragment.
 pub fn render(body: &Converted) -> String {
+    format!("{:#}\n", node(body))
+}
+
+/// The node with its motion and, in `extras`, the conventions (also the `glb` file's node).
+pub fn node(body: &Converted) -> Value {
     let c = &body.center_of_mass;
     let m = &body.moments;
     let [w, x, y, z] = body.principal_quaternion();
-    let doc = json!({
+    json!({
         "extras": {
             "inertia_lab_conventions": format!(
                 "{} KHR_physics_rigid_bodies motion: mass kg, centerOfMass m in node space, \
@@ -38,6 +43,5 @@ pub fn render(body: &Converted) -> String {
                 }
             }
         }
-    });
-    format!("{doc:#}\n")
+    })
 }

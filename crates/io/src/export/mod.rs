@@ -15,22 +15,32 @@
 //! | `unreal` | left-handed Z-up (y mirrored) | cm, kg, kg·cm² | `FQuat(X, Y, Z, W)` in the COM local pose | Unreal `FPhysicsInterface` (Chaos) |
 //! | `rapier` | right-handed Y-up (Bevy) | m, kg, kg·m² | `Rotation::from_xyzw(x, y, z, w)` / `Quat::from_xyzw` (glam) | rapier3d 0.36 `MassProperties` docs |
 //! | `gltf` | right-handed Y-up node space | m, kg, kg·m² | `inertiaOrientation: [x, y, z, w]` | Khronos `KHR_physics_rigid_bodies` |
+//! | `glb` | as `gltf`: a whole file, the mesh on the node | m, kg, kg·m² | as `gltf` | glTF 2.0 §4.4 (GLB) |
+//! | `usd` | right-handed Z-up prim space (`upAxis`) | m, kg, kg·m² (`metersPerUnit`, `kilogramsPerUnit`) | `principalAxes = (w, x, y, z)` | UsdPhysics `MassAPI` |
+//! | `sdf-model` | as `sdf`: a whole `<model>`, meshes by `<uri>` | m, kg, kg·m² | as `sdf` | SDFormat 1.9 |
 //!
 //! Every target takes the inertia about the centre of mass; "frame" only chooses its axes:
 //! [`Frame::ComPrincipal`] writes the principal moments and the rotation to the principal axes,
 //! [`Frame::Origin`] the full tensor in the mesh's own axes (URDF, SDF, MJCF), or for Godot,
 //! which has no inertia rotation, the diagonal in body axes.
+//!
+//! `glb`, `usd` and `sdf-model` are whole files, which carry the body's [`Surface`] too:
+//! [`export_file`] writes them (and every other format); [`export`] the fragments alone.
 
 mod frames;
+mod glb;
 mod gltf;
 mod godot;
 mod json;
 mod mjcf;
+mod motion;
 mod rapier;
 mod sdf;
+mod surface;
 mod unity;
 mod unreal;
 mod urdf;
+mod usd;
 
 use massprops::MassProperties;
 
@@ -39,6 +49,8 @@ use crate::choice::Choice;
 use frames::{Axes, Conversion};
 pub use frames::{UpAxis, density_per_cubic_unit, quaternion_wxyz};
 pub use massprops::LengthUnit;
+pub use motion::{Motion, principal_box};
+pub use surface::{Surface, SurfaceFile};
 
 /// An output format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -61,6 +73,12 @@ pub enum Format {
     Rapier,
     /// glTF `KHR_physics_rigid_bodies` node extension with its motion.
     Gltf,
+    /// A whole binary glTF file: the mesh on a node with its `KHR_physics_rigid_bodies` motion.
+    Glb,
+    /// A whole USD stage (.usda): the mesh on a prim with UsdPhysics' `RigidBodyAPI` and `MassAPI`.
+    Usd,
+    /// A whole SDFormat file: a `<model>` whose link has the `<inertial>` and the meshes.
+    SdfModel,
 }
 
 impl Choice for Format {
@@ -75,6 +93,9 @@ impl Choice for Format {
         Format::Unreal,
         Format::Rapier,
         Format::Gltf,
+        Format::Glb,
+        Format::Usd,
+        Format::SdfModel,
     ];
 
     fn name(self) -> &'static str {
@@ -88,6 +109,9 @@ impl Choice for Format {
             Format::Unreal => "unreal",
             Format::Rapier => "rapier",
             Format::Gltf => "gltf",
+            Format::Glb => "glb",
+            Format::Usd => "usd",
+            Format::SdfModel => "sdf-model",
         }
     }
 
@@ -102,6 +126,17 @@ impl Choice for Format {
             Format::Unreal => "Unreal Engine C++ snippet (cm, kg·cm², left-handed Z-up)",
             Format::Rapier => "rapier3d / bevy_rapier3d Rust snippet building `MassProperties`",
             Format::Gltf => "glTF `KHR_physics_rigid_bodies` node extension with its motion",
+            Format::Glb => {
+                "A whole binary glTF file: the mesh on a node with its \
+                 `KHR_physics_rigid_bodies` motion"
+            }
+            Format::Usd => {
+                "A whole USD stage (.usda): the mesh on a prim with UsdPhysics' `RigidBodyAPI` \
+                 and `MassAPI`"
+            }
+            Format::SdfModel => {
+                "A whole SDFormat file: a `<model>` whose link has the `<inertial>` and the meshes"
+            }
         }
     }
 }
@@ -111,9 +146,13 @@ impl Format {
     fn target(self) -> (Axes, LengthUnit) {
         match self {
             Format::Json => (Axes::Mesh, LengthUnit::M),
-            Format::Urdf | Format::Mjcf | Format::Sdf => (Axes::RightZUp, LengthUnit::M),
+            Format::Urdf | Format::Mjcf | Format::Sdf | Format::SdfModel | Format::Usd => {
+                (Axes::RightZUp, LengthUnit::M)
+            }
             Format::Unity => (Axes::UnityLeftYUp, LengthUnit::M),
-            Format::Godot | Format::Rapier | Format::Gltf => (Axes::RightYUp, LengthUnit::M),
+            Format::Godot | Format::Rapier | Format::Gltf | Format::Glb => {
+                (Axes::RightYUp, LengthUnit::M)
+            }
             Format::Unreal => (Axes::UnrealLeftZUp, LengthUnit::Cm),
         }
     }
@@ -122,13 +161,25 @@ impl Format {
     fn frames(self) -> (Frame, bool) {
         match self {
             // JSON always carries both frames.
-            Format::Json | Format::Urdf | Format::Sdf | Format::Mjcf | Format::Godot => {
-                (Frame::Origin, true)
-            }
-            Format::Unity | Format::Unreal | Format::Rapier | Format::Gltf => {
-                (Frame::ComPrincipal, false)
-            }
+            Format::Json
+            | Format::Urdf
+            | Format::Sdf
+            | Format::SdfModel
+            | Format::Mjcf
+            | Format::Godot => (Frame::Origin, true),
+            Format::Unity
+            | Format::Unreal
+            | Format::Rapier
+            | Format::Gltf
+            | Format::Glb
+            | Format::Usd => (Frame::ComPrincipal, false),
         }
+    }
+
+    /// Whether the format is a whole file, which carries the body's surface
+    /// ([`export_file`]).
+    pub fn is_whole_file(self) -> bool {
+        matches!(self, Format::Glb | Format::Usd | Format::SdfModel)
     }
 }
 
@@ -175,11 +226,25 @@ pub struct ExportOptions {
     pub frame: Option<Frame>,
 }
 
-/// The exported text and what the user should know about it.
+/// What a whole file carries beside the numbers.
+#[derive(Debug, Clone, Copy)]
+pub struct Geometry<'a> {
+    /// The body's surface, in the mesh's coordinates and unit.
+    pub surface: &'a Surface,
+    /// The body's name (the file's stem).
+    pub name: &'a str,
+    /// The folder the file is written to: a format that names meshes by file (SDFormat) names
+    /// them relative to it where it can.
+    pub folder: Option<&'a std::path::Path>,
+    /// The body's motion, baked into the file (`glb` and `usd` only).
+    pub motion: Option<&'a Motion>,
+}
+
+/// The exported file and what the user should know about it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExportOutput {
-    /// The text to paste or save (ends with a newline).
-    pub text: String,
+    /// The file's bytes: text ending with a newline, or a binary file (`glb`).
+    pub bytes: Vec<u8>,
     /// Caveats (for stderr or a status line).
     pub warnings: Vec<String>,
 }
@@ -223,6 +288,18 @@ pub enum ExportError {
         /// (I3 − I1 − I2) / I3.
         excess: f64,
     },
+    /// A whole file needs the body's surface, which only [`export_file`] is given.
+    #[error("{format} is a whole file with the body's mesh: it is written from the mesh file")]
+    NeedsSurface {
+        /// Format name.
+        format: &'static str,
+    },
+    /// Only `glb` and `usd` carry a baked motion.
+    #[error("{format} cannot carry a motion: write it as glb or usd")]
+    MotionNotSupported {
+        /// Format name.
+        format: &'static str,
+    },
     /// The format cannot express the requested frame.
     #[error("{format} cannot write the {frame} frame: {reason}")]
     FrameNotSupported {
@@ -238,13 +315,36 @@ pub enum ExportError {
 impl ExportError {
     /// Whether the options, not the body, are at fault.
     pub fn is_usage(&self) -> bool {
-        matches!(self, ExportError::FrameNotSupported { .. })
+        matches!(
+            self,
+            ExportError::FrameNotSupported { .. }
+                | ExportError::NeedsSurface { .. }
+                | ExportError::MotionNotSupported { .. }
+        )
     }
 }
 
-/// Writes `props` (mesh coordinates in `options.units`, mass in kg) in `options.format`.
+/// Writes `props` (mesh coordinates in `options.units`, mass in kg) in `options.format`, a
+/// fragment format (a whole file's is refused: [`export_file`]).
 pub fn export(
     props: &MassProperties,
+    options: &ExportOptions,
+) -> Result<ExportOutput, ExportError> {
+    write(props, None, options)
+}
+
+/// Writes `props` with the body's `geometry` in any format, whole files included.
+pub fn export_file(
+    props: &MassProperties,
+    geometry: &Geometry<'_>,
+    options: &ExportOptions,
+) -> Result<ExportOutput, ExportError> {
+    write(props, Some(geometry), options)
+}
+
+fn write(
+    props: &MassProperties,
+    geometry: Option<&Geometry<'_>>,
     options: &ExportOptions,
 ) -> Result<ExportOutput, ExportError> {
     let (default_frame, choice) = options.format.frames();
@@ -266,6 +366,18 @@ pub fn export(
             target_unit,
         },
     )?;
+    if geometry.is_some_and(|g| g.motion.is_some())
+        && !matches!(options.format, Format::Glb | Format::Usd)
+    {
+        return Err(ExportError::MotionNotSupported {
+            format: options.format.name(),
+        });
+    }
+    let whole = |format: Format| {
+        geometry.ok_or(ExportError::NeedsSurface {
+            format: format.name(),
+        })
+    };
     let mut warnings = Vec::new();
     let text = match options.format {
         Format::Json => json::render(&body),
@@ -277,8 +389,26 @@ pub fn export(
         Format::Unreal => unreal::render(&body),
         Format::Rapier => rapier::render(&body),
         Format::Gltf => gltf::render(&body),
+        Format::Glb => {
+            let g = whole(Format::Glb)?;
+            return Ok(ExportOutput {
+                bytes: glb::render(&body, g.surface, g.name, g.motion),
+                warnings,
+            });
+        }
+        Format::Usd => {
+            let g = whole(Format::Usd)?;
+            usd::render(&body, g.surface, g.name, g.motion)
+        }
+        Format::SdfModel => {
+            let g = whole(Format::SdfModel)?;
+            sdf::model(&body, frame, g.surface, g.name, g.folder)
+        }
     };
-    Ok(ExportOutput { text, warnings })
+    Ok(ExportOutput {
+        bytes: text.into_bytes(),
+        warnings,
+    })
 }
 
 /// A robot description's `<inertial>` element alone, for a body already in the description's
@@ -325,12 +455,15 @@ mod tests {
     use nalgebra::{Isometry3, Translation3, UnitQuaternion};
 
     pub(super) fn rotated_hammer() -> MassProperties {
+        massprops::mass_properties(&rotated_hammer_mesh(), 7850.0).expect("closed mesh")
+    }
+
+    fn rotated_hammer_mesh() -> massprops::PolyMesh {
         let motion = Isometry3::from_parts(
             Translation3::new(0.11, 0.05, -0.3),
             UnitQuaternion::from_euler_angles(0.7, 0.2, -1.3),
         );
-        let mesh = shapes::hammer().transformed(&motion).build();
-        massprops::mass_properties(&mesh, 7850.0).expect("closed mesh")
+        shapes::hammer().transformed(&motion).build()
     }
 
     #[test]
@@ -343,8 +476,39 @@ mod tests {
                 up: UpAxis::Y,
                 frame: None,
             };
+            let surface = Surface::of_mesh(&rotated_hammer_mesh(), std::path::Path::new("h.obj"));
+            let geometry = Geometry {
+                surface: &surface,
+                name: "hammer",
+                folder: None,
+                motion: None,
+            };
+            let export = |p: &MassProperties, o: &ExportOptions| export_file(p, &geometry, o);
             let out = export(&p, &options).expect("exports");
-            assert!(out.text.ends_with('\n'), "{format:?}");
+            let motion = Motion {
+                fps: 30.0,
+                frames: vec![Isometry3::identity(); 3],
+            };
+            let animated = Geometry {
+                motion: Some(&motion),
+                ..geometry
+            };
+            let baked = export_file(&p, &animated, &options);
+            if matches!(format, Format::Glb | Format::Usd) {
+                assert!(baked.expect("a motion").bytes.len() > out.bytes.len());
+            } else {
+                assert!(baked.expect_err("no motion").is_usage(), "{format:?}");
+            }
+            if format == Format::Glb {
+                assert!(out.bytes.starts_with(b"glTF"));
+            } else {
+                assert!(out.bytes.ends_with(b"\n"), "{format:?}");
+            }
+            assert_eq!(
+                super::export(&p, &options).is_err(),
+                format.is_whole_file(),
+                "{format:?}"
+            );
             let (_, choice) = format.frames();
             let origin = export(
                 &p,

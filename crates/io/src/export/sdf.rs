@@ -10,9 +10,13 @@
 //! Units m, kg, kg·m²; right-handed Z-up.
 
 use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use nalgebra::Rotation3;
 
 use super::Frame;
 use super::frames::{Converted, num, roll_pitch_yaw};
+use super::surface::Surface;
 
 /// The `<inertial>` element, preceded by a comment stating the conventions.
 pub fn render(body: &Converted, frame: Frame) -> String {
@@ -70,4 +74,82 @@ pub fn element(body: &Converted, frame: Frame) -> String {
     let _ = writeln!(s, "  </inertia>");
     let _ = writeln!(s, "</inertial>");
     s
+}
+
+/// A whole SDFormat 1.9 file: a `<model>` of one `<link>` with the `<inertial>`, and a visual and a
+/// collision for each mesh file the surface came from, by `<uri>` (relative to `folder`, the
+/// output's, when the mesh lies under it), placed (`<pose>`) and scaled (`<scale>`) into the
+/// link frame, as libsdformat reads them.
+pub fn model(
+    body: &Converted,
+    frame: Frame,
+    surface: &Surface,
+    name: &str,
+    folder: Option<&Path>,
+) -> String {
+    let s = body.conversion.source_unit.metres() / body.conversion.target_unit.metres();
+    let mut out = String::new();
+    let _ = writeln!(out, "<?xml version=\"1.0\"?>");
+    let _ = writeln!(
+        out,
+        "<!-- {} SDFormat model: lengths m, mass kg, inertia kg*m^2 about the centre of mass in \
+         the inertial frame of pose (roll pitch yaw in radians, fixed axes); ixy = -sum(m*x*y). \
+         Each mesh is placed in the link frame by its pose and scale. -->",
+        super::provenance(body)
+    );
+    let _ = writeln!(out, "<sdf version=\"1.9\">");
+    let _ = writeln!(out, "  <model name=\"{}\">", xml_text(name));
+    let _ = writeln!(out, "    <link name=\"body\">");
+    for line in element(body, frame).lines() {
+        let _ = writeln!(out, "      {line}");
+    }
+    for (k, file) in surface.files.iter().enumerate() {
+        let rotation = Rotation3::from_matrix_unchecked(
+            body.map * file.placement.rotation.to_rotation_matrix().matrix(),
+        );
+        let t = body.map * file.placement.translation.vector * s;
+        let rpy = roll_pitch_yaw(&rotation);
+        let scale = num(file.scale * s);
+        let uri = xml_text(&uri(&file.path, folder));
+        for tag in ["visual", "collision"] {
+            let _ = writeln!(out, "      <{tag} name=\"{tag}_{k}\">");
+            let _ = writeln!(
+                out,
+                "        <pose>{} {} {} {} {} {}</pose>",
+                num(t.x),
+                num(t.y),
+                num(t.z),
+                num(rpy[0]),
+                num(rpy[1]),
+                num(rpy[2])
+            );
+            let _ = writeln!(
+                out,
+                "        <geometry><mesh><uri>{uri}</uri><scale>{scale} {scale} {scale}</scale></mesh></geometry>"
+            );
+            let _ = writeln!(out, "      </{tag}>");
+        }
+    }
+    let _ = writeln!(out, "    </link>");
+    let _ = writeln!(out, "  </model>");
+    let _ = writeln!(out, "</sdf>");
+    out
+}
+
+/// The mesh's path as the model names it: relative to `folder` when it lies under it, else
+/// absolute (as given when it cannot be resolved).
+fn uri(path: &Path, folder: Option<&Path>) -> String {
+    let absolute = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    let relative = folder
+        .and_then(|f| std::fs::canonicalize(f).ok())
+        .and_then(|f| absolute.strip_prefix(&f).ok().map(PathBuf::from));
+    relative.unwrap_or(absolute).to_string_lossy().into_owned()
+}
+
+/// Text for an XML attribute or element.
+fn xml_text(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
