@@ -16,10 +16,11 @@ use rbcore::{
 
 use massprops::MassSpec;
 
-use super::animation::{self, AnimationArgs, Shape};
+use super::animation::{self, AnimationArgs};
 use super::error::{CliError, positive};
 use super::repair::RepairArgs;
 use crate::timeseries::{CSV_HEADER, QuaternionSign, Sample};
+use inertia_io::bake::{BakeError, Shape, Spin};
 use inertia_io::input::{Request, Resolved, Source, resolve};
 use inertia_io::kind::mesh_extension_words;
 
@@ -145,10 +146,11 @@ fn build_body(args: &SimulateArgs) -> Result<(Body, Option<Shape>), CliError> {
             props.principal.rotation,
         )
         .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
-        let shape = args.animation.animation.is_some().then(|| Shape {
-            properties: props,
-            surface: inertia_io::export::Surface::of(&resolved, path),
-        });
+        let shape = args
+            .animation
+            .animation
+            .is_some()
+            .then(|| Shape::of(&resolved, path, props));
         return Ok((body, shape));
     }
     let moments = match &args.inertia {
@@ -167,7 +169,7 @@ fn build_body(args: &SimulateArgs) -> Result<(Body, Option<Shape>), CliError> {
         .animation
         .animation
         .is_some()
-        .then(|| Shape::principal_box(&body));
+        .then(|| Shape::principal_box(body.mass(), &body.moments()));
     Ok((body, shape))
 }
 
@@ -217,9 +219,6 @@ fn diverged(e: rbcore::SimError) -> CliError {
 pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     args.animation.format()?;
     let (mut body, shape) = build_body(args)?;
-    if let Some(shape) = &shape {
-        animation::place(&mut body, shape)?;
-    }
     let omega = triple("--omega", &args.omega)?;
     body.set_omega_principal(omega)
         .map_err(|e| CliError::Usage(format!("--omega: {e}")))?;
@@ -230,10 +229,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     if args.compare {
         return compare(args, body, steps);
     }
-    let mut sim = simulation(args, body, args.integrator)?;
     if let Some(shape) = &shape {
-        return bake(args, &mut sim, shape);
+        return bake(args, omega, shape);
     }
+    let mut sim = simulation(args, body, args.integrator)?;
     if args.summary {
         return summary(args, &mut sim, steps);
     }
@@ -287,35 +286,42 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
 }
 
 /// `simulate --animation`: the keyframes written with the shape, the drifts on stderr.
-fn bake(args: &SimulateArgs, sim: &mut Simulation, shape: &Shape) -> Result<(), CliError> {
-    let d0 = sim.diagnostics();
-    let keyframes =
-        rbcore::keyframes(sim, args.duration, args.animation.fps).map_err(|e| match e {
-            rbcore::SimError::InvalidSetting(e) => {
-                CliError::Usage(format!("--fps, --duration: {e}"))
-            }
-            e => diverged(e),
-        })?;
+fn bake(args: &SimulateArgs, omega: Vector3<f64>, shape: &Shape) -> Result<(), CliError> {
+    let spin = Spin {
+        omega,
+        duration: args.duration,
+        fps: args.animation.fps,
+        settings: Settings {
+            dt: args.dt,
+            integrator: args.integrator,
+            model: args.model,
+            ..Settings::default()
+        },
+    };
+    let baked = inertia_io::bake::bake(shape, &spin).map_err(|e| match e {
+        BakeError::Setting(e) => CliError::Usage(format!("--fps, --duration, --dt: {e}")),
+        BakeError::Body(e) => CliError::Input(e.to_string()),
+        BakeError::Diverged(e) => diverged(e),
+    })?;
     let name = args
         .mesh
         .as_deref()
         .and_then(|p| p.file_stem())
         .map_or_else(|| "box".to_owned(), |s| s.to_string_lossy().into_owned());
-    animation::write(&args.animation, &name, shape, &keyframes)?;
-    let d = sim.diagnostics();
+    animation::write(&args.animation, &name, shape, &baked)?;
+    let k = &baked.keyframes;
     eprintln!(
         "integrator {} ({} model), dt {} s, {} keyframes at {} fps over {} s",
         args.integrator,
         args.model,
-        keyframes.dt,
-        keyframes.poses.len(),
-        keyframes.fps,
-        d.time
+        k.dt,
+        k.poses.len(),
+        k.fps,
+        k.poses.last().map_or(0.0, |p| p.time)
     );
     eprintln!(
         "relative change of |L| and E from start to end: {:.3e}, {:.3e}",
-        rbcore::relative_change(d.angular_momentum_norm, d0.angular_momentum_norm).unwrap_or(0.0),
-        rbcore::relative_change(d.energy, d0.energy).unwrap_or(0.0)
+        baked.l_change, baked.energy_change
     );
     Ok(())
 }
