@@ -814,9 +814,16 @@ impl Consumer {
 
     /// Runs the script on `file` and parses what it prints.
     fn read(&self, file: &str) -> Value {
+        self.read_with(file, &[])
+    }
+
+    /// Runs the script on `file` and `args` and parses the JSON line it prints last (Blender
+    /// logs its importer's progress to standard output before it).
+    fn read_with(&self, file: &str, args: &[&str]) -> Value {
         let out = Command::new("python3")
             .arg(root().join("tests/python").join(self.script))
             .arg(file)
+            .args(args)
             .output()
             .expect("python3 runs");
         assert!(
@@ -825,7 +832,9 @@ impl Consumer {
             self.script,
             String::from_utf8_lossy(&out.stderr)
         );
-        serde_json::from_slice(&out.stdout).expect("JSON from the script")
+        let said = String::from_utf8_lossy(&out.stdout);
+        let last = said.lines().rfind(|l| !l.trim().is_empty()).unwrap_or("");
+        serde_json::from_str(last).expect("JSON from the script")
     }
 }
 
@@ -1419,4 +1428,72 @@ fn an_animation_of_another_kind_or_with_a_csv_is_refused() {
     assert!(said(&["--animation", "out.fbx"]).contains(".glb (glTF) or .usda (USD)"));
     assert!(said(&["--animation", "out.glb", "--csv", "out.csv"]).contains("--csv"));
     assert!(said(&["--animation", "out.glb", "--fps", "0"]).contains("fps"));
+}
+
+const BLENDER: Consumer = Consumer {
+    test: "blender_imports_the_baked_glb_as_the_lab_simulates_it",
+    script: "blender_glb.py",
+    module: "bpy",
+    install: "python3 -m venv .venv && .venv/bin/pip install bpy==5.0.1, then put .venv/bin first on PATH",
+};
+
+/// The hammer (its centre of mass 0.2 m from its mesh's origin, +Y up) baked to GLB for 4 s at
+/// 30 fps and imported by Blender (`bpy`): at frame 0 the mesh's world bounding box is the
+/// hammer's (turned to Blender's +Z up) to 1e-6 m, and at every frame the object's world
+/// rotation is the lab's to 1e-6 rad and its translation to 1e-6 m.
+#[test]
+fn blender_imports_the_baked_glb_as_the_lab_simulates_it() {
+    if !BLENDER.available() {
+        return;
+    }
+    let mesh_path = root().join("assets/hammer.obj");
+    let file = bake(
+        "hammer.glb",
+        &["--mesh", mesh_path.to_str().expect("utf-8"), "--duration", "4"],
+    );
+    let v = BLENDER.read_with(file.path(), &["30"]);
+    assert_eq!(v["meshes"].as_array().map(Vec::len), Some(1), "{v}");
+    assert_eq!(v["rotation_mode"], "QUATERNION");
+    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
+    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
+    let lab = lab_frames(
+        exact.mass,
+        exact.principal.moments,
+        exact.principal.rotation,
+        exact.center_of_mass,
+        4.0,
+    );
+    // glTF's +Y up (the mesh's here) into Blender's +Z up.
+    let c = target_to_mesh("rh-z", "y").transpose();
+    let (lo, hi) = mesh.mesh.positions().iter().fold(
+        (Vector3::repeat(f64::INFINITY), Vector3::repeat(f64::NEG_INFINITY)),
+        |(lo, hi), p| {
+            let q = c * p.coords;
+            (lo.inf(&q), hi.sup(&q))
+        },
+    );
+    let (box_min, box_max) = (floats(&v["box_min"]), floats(&v["box_max"]));
+    for i in 0..3 {
+        assert!((box_min[i] - lo[i]).abs() < 1e-6, "{box_min:?} vs {lo}");
+        assert!((box_max[i] - hi[i]).abs() < 1e-6, "{box_max:?} vs {hi}");
+    }
+    let frames = floats(&v["frames"]);
+    let matrices = v["matrices"].as_array().expect("matrices");
+    assert_eq!((frames[0], matrices.len()), (0.0, lab.len()), "{frames:?}");
+    let mut worst = 0.0_f64;
+    for (k, (m, frame)) in matrices.iter().zip(&lab).enumerate() {
+        let rows: Vec<Vec<f64>> = m.as_array().expect("rows").iter().map(floats).collect();
+        let turn = Matrix3::from_fn(|r, col| rows[r][col]);
+        let moved = Vector3::new(rows[0][3], rows[1][3], rows[2][3]);
+        let expected = c * frame.rotation.to_rotation_matrix().matrix() * c.transpose();
+        let blender = UnitQuaternion::from_matrix(&turn);
+        let angle = blender.angle_to(&UnitQuaternion::from_matrix(&expected));
+        worst = worst.max(angle);
+        assert!(angle < 1e-6, "frame {k}: {angle} rad");
+        assert!(
+            (moved - c * frame.translation.vector).amax() < 1e-6,
+            "frame {k}: {moved}"
+        );
+    }
+    eprintln!("Blender {}: worst rotation {worst:e} rad", v["version"]);
 }
