@@ -1449,7 +1449,12 @@ fn blender_imports_the_baked_glb_as_the_lab_simulates_it() {
     let mesh_path = root().join("assets/hammer.obj");
     let file = bake(
         "hammer.glb",
-        &["--mesh", mesh_path.to_str().expect("utf-8"), "--duration", "4"],
+        &[
+            "--mesh",
+            mesh_path.to_str().expect("utf-8"),
+            "--duration",
+            "4",
+        ],
     );
     let v = BLENDER.read_with(file.path(), &["30"]);
     assert_eq!(v["meshes"].as_array().map(Vec::len), Some(1), "{v}");
@@ -1466,7 +1471,10 @@ fn blender_imports_the_baked_glb_as_the_lab_simulates_it() {
     // glTF's +Y up (the mesh's here) into Blender's +Z up.
     let c = target_to_mesh("rh-z", "y").transpose();
     let (lo, hi) = mesh.mesh.positions().iter().fold(
-        (Vector3::repeat(f64::INFINITY), Vector3::repeat(f64::NEG_INFINITY)),
+        (
+            Vector3::repeat(f64::INFINITY),
+            Vector3::repeat(f64::NEG_INFINITY),
+        ),
         |(lo, hi), p| {
             let q = c * p.coords;
             (lo.inf(&q), hi.sup(&q))

@@ -7,6 +7,7 @@
 //! - `arrays`: numpy arrays → meshes, in place where the dtype and layout allow;
 //! - `result`: `MassResult`, one body's numbers with `to_dict()` (`props --json`'s object) and
 //!   the exports;
+//! - `simulate`: a body spun and its keyframes, as `simulate --animation` bakes them;
 //! - `threads`: how many threads a call uses (one by default, `threads=` or
 //!   `RAYON_NUM_THREADS`), and the errors raised in Python;
 //! - here: the module's functions (meshes and body files as `props`, robot descriptions as
@@ -14,6 +15,7 @@
 
 mod arrays;
 mod result;
+mod simulate;
 mod threads;
 
 use std::path::PathBuf;
@@ -53,7 +55,6 @@ fn options(
     repairs: RepairArgs,
     threads: Option<usize>,
 ) -> PyResult<Options> {
-    let RepairArgs(weld, weld_distance, holes, max_cap_share, overlap_budget) = repairs;
     let spec = match (density, mass) {
         (Some(_), Some(_)) => {
             return Err(PyValueError::new_err("give a density or a mass, not both"));
@@ -73,6 +74,17 @@ fn options(
             )));
         }
     };
+    Ok(Options {
+        spec,
+        method,
+        repairs: repairs_of(repairs)?,
+        threads: threads::count(threads)?,
+    })
+}
+
+/// `Repairs` from the Python layer's tuple, each value checked.
+fn repairs_of(repairs: RepairArgs) -> PyResult<Repairs> {
+    let RepairArgs(weld, weld_distance, holes, max_cap_share, overlap_budget) = repairs;
     let weld = match weld.as_str() {
         "auto" => Weld::Auto,
         "exact" => Weld::Exact,
@@ -100,16 +112,11 @@ fn options(
             "max_cap_share must be above 0 and at most 1, not {max_cap_share}"
         )));
     }
-    Ok(Options {
-        spec,
-        method,
-        repairs: Repairs {
-            weld,
-            holes,
-            max_cap_share,
-            overlap_budget,
-        },
-        threads: threads::count(threads)?,
+    Ok(Repairs {
+        weld,
+        holes,
+        max_cap_share,
+        overlap_budget,
     })
 }
 
@@ -462,6 +469,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(batch_schema, m)?)?;
     m.add_function(wrap_pyfunction!(file_ids, m)?)?;
     m.add_function(wrap_pyfunction!(audit_json, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate::simulate_motion, m)?)?;
     m.add_class::<MassResult>()?;
     m.add("MeshError", m.py().get_type::<threads::MeshError>())?;
     m.add("SCHEMA_VERSION", inertia_io::report::SCHEMA_VERSION)?;

@@ -9,6 +9,8 @@ mass, from Python.
 - ``mesh_files(folder_or_glob)``: the files ``measure_files`` would measure, for an engine;
 - ``audit(path, ...)`` / ``audit_table(paths, ...)``: robot descriptions (URDF, MJCF, SDFormat) as
   ``inertia-lab audit --json`` audits them, as a dict or one Arrow row per link;
+- ``simulate(path, ...)``: a body spun from rest, its keyframes as arrays (``Motion``) and, with
+  ``animation=``, the same ``.glb`` or ``.usda`` file as ``inertia-lab simulate --animation``;
 - ``MassResult``: one body's numbers, ``to_dict()`` (``props --json``'s object) and exports.
 
 Conventions: lengths in the mesh's unit, mass in the unit of density times length³; the inertia
@@ -19,6 +21,7 @@ off-diagonals are −∑ m·x·y; principal moments ascending, principal axes as
 from ._api import Repairs, analyze_file, mass_properties
 from ._audit import audit, audit_table
 from ._files import Summary, measure_files, mesh_files
+from ._simulate import Motion, simulate
 from ._native import (
     BATCH_SCHEMA_VERSION,
     MESH_EXTENSIONS,
@@ -34,6 +37,7 @@ __all__ = [
     "MESH_EXTENSIONS",
     "MassResult",
     "MeshError",
+    "Motion",
     "Repairs",
     "SCHEMA_VERSION",
     "Summary",
@@ -46,4 +50,5 @@ __all__ = [
     "measure_files",
     "measure_table",
     "mesh_files",
+    "simulate",
 ]

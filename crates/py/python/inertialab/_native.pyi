@@ -83,6 +83,22 @@ def audit_json(
     repairs: tuple[str, float, str, float, int],
     threads: Optional[int],
 ) -> str: ...
+def simulate_motion(
+    path: Optional[str],
+    inertia: Optional[tuple[float, float, float]],
+    density: Optional[float],
+    mass: Optional[float],
+    omega: tuple[float, float, float],
+    duration: float,
+    fps: float,
+    dt: float,
+    integrator: str,
+    model: str,
+    animation: Optional[str],
+    units: str,
+    up: str,
+    repairs: tuple[str, float, str, float, int],
+) -> dict[str, Any]: ...
 def measure_rows(
     paths: Sequence[str],
     contents: Optional[Sequence[Optional[bytes]]],
