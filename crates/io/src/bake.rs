@@ -113,13 +113,28 @@ pub fn bake(shape: &Shape, spin: &Spin) -> Result<Baked, BakeError> {
     body.set_body_orientation(UnitQuaternion::identity())?;
     body.set_omega_principal(spin.omega)?;
     let mut sim = Simulation::new(body, spin.settings)?;
+    sample(shape, &mut sim, spin.duration, spin.fps)
+}
+
+/// Samples `sim`, a simulation of `shape` already going (the app's, as it stands: its forces,
+/// string and settings), for `duration` seconds at `fps`, frame 0 its present state. World is
+/// the simulation's: the node transform puts `shape`'s mesh where the body is.
+///
+/// # Errors
+/// [`BakeError`].
+pub fn sample(
+    shape: &Shape,
+    sim: &mut Simulation,
+    duration: f64,
+    fps: f64,
+) -> Result<Baked, BakeError> {
     let start = sim.diagnostics();
-    let keyframes = rbcore::keyframes(&mut sim, spin.duration, spin.fps)?;
+    let keyframes = rbcore::keyframes(sim, duration, fps)?;
     let end = sim.diagnostics();
     let change = |a: f64, b: f64| rbcore::relative_change(a, b).unwrap_or(0.0);
     let motion = Motion::from_poses(
         keyframes.fps,
-        &p.center_of_mass,
+        &shape.properties.center_of_mass,
         keyframes.poses.iter().map(|k| (k.position, k.orientation)),
     );
     Ok(Baked {

@@ -340,6 +340,12 @@ impl LabApp {
                 Command::AddPartFiles(files)
             }
             (Some(DialogPurpose::SaveBody), Some(Chosen::Path(path))) => Command::SaveBody(path),
+            (Some(DialogPurpose::SaveMotion), Some(Chosen::Path(path))) => Command::ExportMotion {
+                specimen: crate::lab::PRIMARY,
+                path,
+                seconds: self.shared.motion_seconds,
+                fps: self.shared.motion_fps,
+            },
             _ => Command::Notify(Message {
                 text: platform::NO_FILE_CHOSEN.to_owned(),
                 error: false,

@@ -41,6 +41,18 @@ pub enum Command {
         /// Where to write.
         path: PathBuf,
     },
+    /// Bake a specimen's motion from its present state into a glTF (`.glb`) or USD (`.usda`)
+    /// file with its mesh ([`inertia_io::bake`]).
+    ExportMotion {
+        /// Whose motion.
+        specimen: SpecimenId,
+        /// Where to write (the format by its extension).
+        path: PathBuf,
+        /// Seconds baked.
+        seconds: f64,
+        /// Keyframes a second.
+        fps: f64,
+    },
     /// Poke: impulse of the set magnitude at a world point, along `direction` (the view ray).
     Poke {
         /// The specimen poked.

@@ -151,6 +151,15 @@ pub enum LabError {
     /// What went wrong in work done elsewhere (the page's worker), in that place's words.
     #[error("{0}")]
     Relayed(String),
+    /// A baked motion's file is named with an extension it is not written as.
+    #[error("{}: a motion is written as .glb (glTF) or .usda (USD)", path.display())]
+    MotionFormat {
+        /// The path asked for.
+        path: PathBuf,
+    },
+    /// The motion could not be baked.
+    #[error("export motion: {0}")]
+    Bake(#[from] inertia_io::bake::BakeError),
     /// The body was edited or replaced while new parts were read for it.
     #[error("the body changed while {0} was read: add it again")]
     ChangedWhileAdding(String),

@@ -198,6 +198,22 @@ impl Lab {
                 })?;
                 self.info(format!("wrote {n} samples to {}", path.display()));
             }
+            Command::ExportMotion {
+                specimen,
+                path,
+                seconds,
+                fps,
+            } => {
+                let (bytes, frames) = self.motion_file(specimen, &path, seconds, fps)?;
+                crate::platform::write_file(&path, &bytes).map_err(|e| LabError::Write {
+                    path: path.clone(),
+                    message: e.to_string(),
+                })?;
+                self.info(format!(
+                    "wrote {frames} keyframes ({seconds} s at {fps} fps) to {}",
+                    path.display()
+                ));
+            }
             Command::Poke {
                 specimen,
                 point,
@@ -552,6 +568,39 @@ impl Lab {
             .write_csv(&mut csv)
             .expect("writing to memory cannot fail");
         Ok((csv, history.samples().len()))
+    }
+
+    /// A specimen's motion from its present state, `seconds` at `fps`, as the bytes of the file
+    /// `path` names (`.glb` or `.usda`: [`inertia_io::bake`]) with its mesh at its size, and the
+    /// number of keyframes: what [`Command::ExportMotion`] writes. The specimen itself goes on
+    /// untouched (a copy of its simulation is run).
+    ///
+    /// # Errors
+    /// No such specimen, another extension, a rate or duration out of range, or divergence.
+    pub fn motion_file(
+        &self,
+        specimen: SpecimenId,
+        path: &std::path::Path,
+        seconds: f64,
+        fps: f64,
+    ) -> Result<(Vec<u8>, usize), LabError> {
+        let s = self.specimen(specimen)?;
+        let format = inertia_io::bake::format_of(path).ok_or_else(|| LabError::MotionFormat {
+            path: path.to_path_buf(),
+        })?;
+        let shape = s.shape();
+        let mut sim = s.sim().clone();
+        let baked = inertia_io::bake::sample(&shape, &mut sim, seconds, fps)?;
+        let out = inertia_io::bake::write(
+            &shape,
+            &baked,
+            &s.body().name,
+            format,
+            inertia_io::export::LengthUnit::M,
+            inertia_io::export::UpAxis::Y,
+        )
+        .map_err(|e| LabError::Relayed(e.to_string()))?;
+        Ok((out.bytes, baked.keyframes.poses.len()))
     }
 
     /// Whether anything moves without input (the app repaints continuously only then).

@@ -508,6 +508,20 @@ impl Specimen {
             force: s.impulse(sim.body(), dt) / dt,
         })
     }
+    /// The body as a baked file shows it: the used mass properties and the mesh at its size
+    /// (the placement's mesh coordinates, `s·p`).
+    pub fn shape(&self) -> inertia_io::bake::Shape {
+        let mesh = &self.body.mesh;
+        inertia_io::bake::Shape {
+            properties: *self.used_properties(),
+            surface: inertia_io::export::Surface {
+                points: mesh.positions.iter().map(|p| p * self.scale).collect(),
+                triangles: mesh.triangles.clone(),
+                files: Vec::new(),
+            },
+        }
+    }
+
     /// The mesh → world transform now.
     pub fn placement(&self) -> Placement {
         let b = self.sim.body();

@@ -986,3 +986,91 @@ fn the_intermediate_spin_turns_over_and_the_others_wobble() {
         );
     }
 }
+
+/// Export motion bakes the primary's motion from where it is now: frame 0 puts the mesh where
+/// the lab draws it, the last frame where the lab's own simulation is that many seconds later
+/// (the specimen itself not moved by the export), and the mesh read back from the GLB has the
+/// body's volume at its size; another extension is refused by name.
+#[test]
+fn export_motion_bakes_the_motion_from_its_present_state() {
+    let mut lab = lab();
+    lab.apply(settings_with(&lab, |s| s.body.scale = 2.0));
+    lab.advance(0.7);
+    let before = lab.primary().placement();
+    let time = lab.primary().sim().time();
+    let path = std::env::temp_dir().join(format!("inertia-lab-{}.glb", std::process::id()));
+    lab.apply(Command::ExportMotion {
+        specimen: PRIMARY,
+        path: path.clone(),
+        seconds: 2.0,
+        fps: 30.0,
+    });
+    assert!(
+        lab.message()
+            .is_some_and(|m| !m.error && m.text.contains("61 keyframes")),
+        "{:?}",
+        lab.message()
+    );
+    assert_eq!(lab.primary().sim().time(), time);
+    let bytes = std::fs::read(&path).expect("written");
+    let json_length = u32::from_le_bytes(bytes[12..16].try_into().expect("4 bytes")) as usize;
+    let doc: serde_json::Value =
+        serde_json::from_slice(&bytes[20..20 + json_length]).expect("JSON chunk");
+    let node = &doc["nodes"][0];
+    let q = |v: &serde_json::Value| v.as_f64().expect("a number");
+    let r = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+        q(&node["rotation"][3]),
+        q(&node["rotation"][0]),
+        q(&node["rotation"][1]),
+        q(&node["rotation"][2]),
+    ));
+    let t = Vector3::new(
+        q(&node["translation"][0]),
+        q(&node["translation"][1]),
+        q(&node["translation"][2]),
+    );
+    // A mesh point p (scaled coordinates s·p in the file) lands where the lab puts it.
+    let p = lab.primary().body().mesh.positions[0];
+    let drawn = before.to_world(&p);
+    assert!((r * (p * 2.0) + t - drawn).norm() < 1e-12, "{drawn}");
+    // The rotation channel's last key: the lab's simulation run on for 2 s.
+    let mut later = lab.primary().sim().clone();
+    for _ in 0..(2.0 / later.settings().dt).round() as usize {
+        later.step().expect("steps");
+    }
+    let animation = &doc["animations"][0];
+    let sampler = &animation["samplers"][animation["channels"][0]["sampler"]
+        .as_u64()
+        .expect("sampler") as usize];
+    assert_eq!(animation["channels"][0]["target"]["path"], "rotation");
+    let accessor = &doc["accessors"][sampler["output"].as_u64().expect("output") as usize];
+    let view = &doc["bufferViews"][accessor["bufferView"].as_u64().expect("view") as usize];
+    let end = 20 + json_length + 8 + (q(&view["byteOffset"]) + q(&view["byteLength"])) as usize;
+    let last: Vec<f64> = bytes[end - 16..end]
+        .chunks_exact(4)
+        .map(|b| f64::from(f32::from_le_bytes(b.try_into().expect("4 bytes"))))
+        .collect();
+    let last = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+        last[3], last[0], last[1], last[2],
+    ));
+    let expected = later.body().body_orientation();
+    assert!(
+        last.angle_to(&expected) < 1e-6,
+        "{}",
+        last.angle_to(&expected)
+    );
+    let read = massprops::load_mesh(&path).expect("reads");
+    let solid = massprops::mass_properties(&read.mesh, 1.0).expect("closed");
+    assert!((solid.mass - lab.primary().volume()).abs() < 1e-6 * lab.primary().volume());
+    std::fs::remove_file(&path).ok();
+    lab.apply(Command::ExportMotion {
+        specimen: PRIMARY,
+        path: PathBuf::from("motion.fbx"),
+        seconds: 2.0,
+        fps: 30.0,
+    });
+    assert!(
+        lab.message()
+            .is_some_and(|m| m.error && m.text.contains(".glb (glTF) or .usda (USD)"))
+    );
+}

@@ -82,6 +82,10 @@ pub struct PanelState {
     pub record_request: bool,
     /// Stop was pressed this frame.
     pub record_stop: bool,
+    /// How many seconds "Export motion" bakes.
+    pub motion_seconds: f64,
+    /// Keyframes a second "Export motion" bakes.
+    pub motion_fps: f64,
     /// Seconds left of the running recording (set by the app each frame).
     pub recording: Option<f64>,
     /// The mesh warning whose faces the 3D view highlights (an index into the primary body's
@@ -102,6 +106,8 @@ impl Default for PanelState {
             record_seconds: 5.0,
             record_request: false,
             record_stop: false,
+            motion_seconds: 10.0,
+            motion_fps: 30.0,
             recording: None,
             selected_warning: None,
             selected_part: None,

@@ -26,6 +26,8 @@ pub enum DialogPurpose {
     AddPart,
     /// Choose where to write the body file.
     SaveBody,
+    /// Choose where to write the baked motion (`.glb` or `.usda`).
+    SaveMotion,
 }
 
 /// What a closed dialog gives.

@@ -78,6 +78,11 @@ impl Dialog {
                     .add_filter("CSV", &["csv"])
                     .set_file_name("inertia-lab.csv")
                     .save_file(),
+                DialogPurpose::SaveMotion => dialog
+                    .add_filter("glTF binary", &["glb"])
+                    .add_filter("USD", &["usda"])
+                    .set_file_name("motion.glb")
+                    .save_file(),
             };
             let _ = tx.send(path.map(Chosen::Path));
             wake();

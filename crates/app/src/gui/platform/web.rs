@@ -195,6 +195,7 @@ impl Dialog {
         match purpose {
             DialogPurpose::SaveCsv => *answer.borrow_mut() = download("inertia-lab.csv"),
             DialogPurpose::SaveBody => *answer.borrow_mut() = download("body.toml"),
+            DialogPurpose::SaveMotion => *answer.borrow_mut() = download("motion.glb"),
             DialogPurpose::OpenMesh | DialogPurpose::AddPart => {
                 let slot = Rc::clone(&answer);
                 let dialog = rfd::AsyncFileDialog::new();
