@@ -12,7 +12,7 @@ mod common;
 
 use std::process::Command;
 
-use common::{TempFile, root, run, sdf_bodies, sdformat_bodies, skip};
+use common::{PUPPETEER, TempFile, root, run, sdf_bodies, sdformat_bodies, skip};
 use massprops::shapes::{self, MeshBuilder};
 use massprops::{MassProperties, mass_properties};
 use nalgebra::{Isometry3, Matrix3, Point3, Translation3, UnitQuaternion, Vector3};
@@ -1504,4 +1504,151 @@ fn blender_imports_the_baked_glb_as_the_lab_simulates_it() {
         );
     }
     eprintln!("Blender {}: worst rotation {worst:e} rad", v["version"]);
+}
+
+/// The three.js three_animation.mjs loads the GLB with.
+const THREE_JS: &str = "three@0.187.0";
+
+/// The driver of `tests/web/three_animation.mjs` with puppeteer-core and three.js beside it
+/// (installed once from the npm registry); `None` (the skip said) without Chromium, Node.js or
+/// the registry.
+fn three_driver(test: &str) -> Option<std::path::PathBuf> {
+    if !std::path::Path::new("/usr/bin/chromium").is_file() {
+        skip(
+            test,
+            "Chromium is not installed",
+            "apt-get install chromium",
+        );
+        return None;
+    }
+    if !common::on_path("node") || !common::on_path("npm") {
+        skip(
+            test,
+            "Node.js is not installed",
+            "apt-get install nodejs npm",
+        );
+        return None;
+    }
+    let driver = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("three");
+    let installed = ["puppeteer-core", "three"]
+        .iter()
+        .all(|m| driver.join("node_modules").join(m).is_dir());
+    if !installed {
+        let npm = Command::new("npm")
+            .args(["install", "--no-audit", "--no-fund", "--prefix"])
+            .arg(&driver)
+            .args([PUPPETEER, THREE_JS])
+            .output()
+            .expect("npm runs");
+        if !npm.status.success() {
+            skip(
+                test,
+                &format!(
+                    "npm could not install {PUPPETEER} and {THREE_JS}: {}",
+                    String::from_utf8_lossy(&npm.stderr).trim()
+                ),
+                "network access to the npm registry",
+            );
+            return None;
+        }
+    }
+    std::fs::copy(
+        root().join("tests/web/three_animation.mjs"),
+        driver.join("three_animation.mjs"),
+    )
+    .expect("the driver copied");
+    Some(driver)
+}
+
+/// The T-handle baked to GLB for 2 s and played by three.js (GLTFLoader and AnimationMixer) in
+/// headless Chromium: one clip of 2 s with a quaternion and a position track, the node's
+/// KHR_physics_rigid_bodies mass the body's, and at every keyframe time the node posed as the
+/// lab's state, halfway between two keyframes as their slerp, each to single precision.
+#[test]
+fn three_js_plays_the_baked_glb_as_the_lab_simulates_it() {
+    let test = "three_js_plays_the_baked_glb_as_the_lab_simulates_it";
+    let Some(driver) = three_driver(test) else {
+        return;
+    };
+    let mesh_path = root().join("assets/t_handle.obj");
+    let file = bake(
+        "t_handle_three.glb",
+        &[
+            "--mesh",
+            mesh_path.to_str().expect("utf-8"),
+            "--duration",
+            "2",
+            "--up",
+            "z",
+        ],
+    );
+    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
+    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
+    let lab = lab_frames(
+        exact.mass,
+        exact.principal.moments,
+        exact.principal.rotation,
+        exact.center_of_mass,
+        2.0,
+    );
+    // Each keyframe's time, and halfway to the next.
+    let times: Vec<String> = (0..lab.len())
+        .flat_map(|k| [k as f64 / 30.0, (k as f64 + 0.5) / 30.0])
+        .filter(|t| *t <= 2.0)
+        .map(|t| t.to_string())
+        .collect();
+    let out = Command::new("node")
+        .arg(driver.join("three_animation.mjs"))
+        .arg(file.path())
+        .args(&times)
+        .current_dir(&driver)
+        .output()
+        .expect("node runs");
+    assert!(
+        out.status.success(),
+        "the three.js driver failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).expect("the driver prints JSON");
+    assert_eq!(v["errors"], serde_json::json!([]), "{v}");
+    assert_eq!(v["clips"], 1);
+    assert!((f(&v["duration"]) - 2.0).abs() < 1e-6);
+    let tracks: Vec<&str> = v["tracks"]
+        .as_array()
+        .expect("tracks")
+        .iter()
+        .filter_map(Value::as_str)
+        .collect();
+    assert!(
+        tracks.iter().any(|t| t.ends_with(".quaternion"))
+            && tracks.iter().any(|t| t.ends_with(".position")),
+        "{tracks:?}"
+    );
+    assert!((f(&v["motion"]["mass"]) - exact.mass).abs() < 1e-12 * exact.mass);
+    let a = target_to_mesh("rh-y", "z").transpose();
+    let in_gltf = |frame: &Isometry3<f64>| {
+        let r = UnitQuaternion::from_matrix(
+            &(a * frame.rotation.to_rotation_matrix().matrix() * a.transpose()),
+        );
+        (r, a * frame.translation.vector)
+    };
+    let poses = v["poses"].as_array().expect("poses");
+    assert_eq!(poses.len(), times.len());
+    for (n, pose) in poses.iter().enumerate() {
+        let q = floats(&pose["quaternion"]);
+        let seen =
+            UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(q[3], q[0], q[1], q[2]));
+        let p = floats(&pose["position"]);
+        let at = Vector3::new(p[0], p[1], p[2]);
+        let k = n / 2;
+        let (r, t) = if n % 2 == 0 {
+            in_gltf(&lab[k])
+        } else {
+            let ((r0, t0), (r1, t1)) = (in_gltf(&lab[k]), in_gltf(&lab[k + 1]));
+            (r0.slerp(&r1, 0.5), (t0 + t1) / 2.0)
+        };
+        let time = f(&pose["time"]);
+        assert!(seen.angle_to(&r) < 1e-6, "{time} s: {}", seen.angle_to(&r));
+        assert!((at - t).amax() < 1e-6, "{time} s: {at} vs {t}");
+    }
 }

@@ -21,11 +21,8 @@ use std::net::{TcpListener, TcpStream};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use common::{on_path, root, skip};
+use common::{PUPPETEER, on_path, root, skip};
 use image::{Image, body_pixel, green_line};
-
-/// The puppeteer-core the driver uses (24: the last line that runs on Node.js 20).
-const PUPPETEER: &str = "puppeteer-core@24.43.1";
 
 const TEST: &str = "web_page_runs_the_lab";
 

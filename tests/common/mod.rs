@@ -11,6 +11,10 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde_json::Value;
 
+/// The puppeteer-core the browser tests drive Chromium with (24: the last line that runs on
+/// Node.js 20).
+pub const PUPPETEER: &str = "puppeteer-core@24.43.1";
+
 /// The workspace root.
 pub fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
