@@ -82,6 +82,8 @@ pub struct PanelState {
     pub record_request: bool,
     /// Stop was pressed this frame.
     pub record_stop: bool,
+    /// Where "Export motion" writes (.glb or .usda).
+    pub motion_path: String,
     /// How many seconds "Export motion" bakes.
     pub motion_seconds: f64,
     /// Keyframes a second "Export motion" bakes.
@@ -106,6 +108,7 @@ impl Default for PanelState {
             record_seconds: 5.0,
             record_request: false,
             record_stop: false,
+            motion_path: "motion.glb".to_owned(),
             motion_seconds: 10.0,
             motion_fps: 30.0,
             recording: None,

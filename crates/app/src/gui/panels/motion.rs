@@ -1,19 +1,23 @@
 //! The Motion section: run, pause and step, the preset spins, the motion text (a flip told from
-//! a wobble, predicted and measured), the rotation model, integrator and time step.
+//! a wobble, predicted and measured), the motion baked into a file, the rotation model,
+//! integrator and time step.
+
+use std::path::PathBuf;
 
 use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
-use super::{Frame, Panel, number, restart_on_switch};
+use super::{Frame, Panel, PanelState, number, restart_on_switch};
+use crate::gui::platform::DialogPurpose;
 use crate::lab::settings::AppSettings;
 use crate::lab::specimen::TURNING_OVER;
-use crate::lab::{Command, Lab};
+use crate::lab::{Command, Lab, PRIMARY};
 
 /// The Motion section: run, step, reset, the spins, the model and what the motion does.
 pub struct MotionSection;
 
 impl Panel for MotionSection {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
-        motion_section(ui, f.lab, f.commands, f.settings);
+        motion_section(ui, f.lab, f.commands, f.settings, f.shared);
     }
 }
 
@@ -114,7 +118,13 @@ fn flip_text(
     text
 }
 
-fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: &mut AppSettings) {
+fn motion_section(
+    ui: &mut egui::Ui,
+    lab: &Lab,
+    commands: &mut Vec<Command>,
+    s: &mut AppSettings,
+    shared: &mut PanelState,
+) {
     egui::CollapsingHeader::new("Motion")
         .default_open(true)
         .show(ui, |ui| {
@@ -152,6 +162,7 @@ fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: 
             );
             ui.add(egui::Label::new(text).wrap())
                 .on_hover_text(MOTION_TERMS);
+            motion_export(ui, shared, commands);
             number(
                 ui,
                 "Spin rate",
@@ -209,6 +220,50 @@ fn motion_section(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>, s: 
             );
             number(ui, "Time step", &mut s.physics.dt, 1e-5..=0.1, 1e-4, " s");
         });
+}
+
+/// "Export motion" to the path typed (or chosen with "…"), with how many seconds and keyframes
+/// a second it bakes.
+fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<Command>) {
+    ui.horizontal(|ui| {
+        let hint = "Bake the motion from now on into a glTF (.glb) or USD (.usda) file with the \
+                    mesh: keyframes of this simulation, for Blender, viewers and engines.";
+        if ui.button("Export motion").on_hover_text(hint).clicked()
+            && !state.motion_path.trim().is_empty()
+        {
+            commands.push(Command::ExportMotion {
+                specimen: PRIMARY,
+                path: PathBuf::from(state.motion_path.trim()),
+                seconds: state.motion_seconds,
+                fps: state.motion_fps,
+            });
+        }
+        ui.add(egui::TextEdit::singleline(&mut state.motion_path).desired_width(110.0))
+            .on_hover_text("the file: .glb or .usda");
+        if ui
+            .add_enabled(!state.dialog_open, egui::Button::new("…"))
+            .on_hover_text("choose where to save")
+            .clicked()
+        {
+            state.dialog_request = Some(DialogPurpose::SaveMotion);
+        }
+    });
+    ui.horizontal(|ui| {
+        ui.add(
+            egui::DragValue::new(&mut state.motion_seconds)
+                .range(0.1..=600.0)
+                .speed(0.5)
+                .suffix(" s"),
+        )
+        .on_hover_text("how many seconds to bake");
+        ui.add(
+            egui::DragValue::new(&mut state.motion_fps)
+                .range(1.0..=240.0)
+                .speed(1.0)
+                .suffix(" fps"),
+        )
+        .on_hover_text("keyframes a second");
+    });
 }
 
 #[cfg(test)]

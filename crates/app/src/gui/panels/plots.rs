@@ -145,31 +145,6 @@ fn show(
                 .on_hover_text("how long to record");
             }
         }
-        ui.separator();
-        if ui
-            .add_enabled(!state.dialog_open, egui::Button::new("Export motion…"))
-            .on_hover_text(
-                "Bake the motion from now on into a glTF (.glb) or USD (.usda) file with the \
-                 mesh: keyframes of this simulation, for Blender, viewers and engines.",
-            )
-            .clicked()
-        {
-            state.dialog_request = Some(DialogPurpose::SaveMotion);
-        }
-        ui.add(
-            egui::DragValue::new(&mut state.motion_seconds)
-                .range(0.1..=600.0)
-                .speed(0.5)
-                .suffix(" s"),
-        )
-        .on_hover_text("how many seconds to bake");
-        ui.add(
-            egui::DragValue::new(&mut state.motion_fps)
-                .range(1.0..=240.0)
-                .speed(1.0)
-                .suffix(" fps"),
-        )
-        .on_hover_text("keyframes a second");
     });
     let t_end = history.last().map_or(0.0, |s| s.t);
     let window = settings.plots.window;
