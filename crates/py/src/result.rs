@@ -58,7 +58,8 @@ impl MassResult {
         Self { body }
     }
 
-    fn properties(&self) -> &MassProperties {
+    /// The body's mass properties (whatever the method that gave them).
+    pub fn properties(&self) -> &MassProperties {
         match &self.body {
             Measured::Mesh { analysis, .. } => &analysis.properties,
             Measured::Parts { composite, .. } => &composite.properties,

@@ -18,23 +18,42 @@ use pyo3::types::PyDict;
 use rbcore::{Integrator, RotationModel, Settings};
 
 use crate::RepairArgs;
+use crate::result::MassResult;
 use crate::threads::{self, CallFailure};
 
-/// The body `simulate_motion` spins: a file's (density or mass as given) or the box of
-/// `inertia`'s moments (ascending) at `mass`.
+/// Where `simulate_motion`'s body comes from: a file, a result already computed, or principal
+/// moments.
+pub enum Given<'a> {
+    /// A mesh or body file.
+    Path(&'a Path),
+    /// Mass properties computed already (no surface: no file is written of it).
+    Result(&'a MassResult),
+    /// Principal moments, ascending.
+    Moments(f64, f64, f64),
+}
+
+/// The body `simulate_motion` spins: a file's (density or mass as given), a result's, or the
+/// box of the moments at `mass`.
 fn shape(
     py: Python<'_>,
-    path: Option<&Path>,
-    inertia: Option<(f64, f64, f64)>,
+    given: Given<'_>,
     density: Option<f64>,
     mass: Option<f64>,
     repairs: RepairArgs,
 ) -> PyResult<Shape> {
-    match (path, inertia) {
-        (Some(_), Some(_)) | (None, None) => Err(PyValueError::new_err(
-            "give a mesh or body file, or the principal moments (inertia=), not both",
-        )),
-        (None, Some((a, b, c))) => {
+    match given {
+        Given::Result(result) => {
+            if density.is_some() || mass.is_some() {
+                return Err(PyValueError::new_err(
+                    "a MassResult has its mass already: density and mass do not apply",
+                ));
+            }
+            Ok(Shape {
+                properties: *result.properties(),
+                surface: inertia_io::export::Surface::default(),
+            })
+        }
+        Given::Moments(a, b, c) => {
             if density.is_some() {
                 return Err(PyValueError::new_err(
                     "density applies to a file: the moments' box takes a mass",
@@ -50,7 +69,7 @@ fn shape(
                 &Vector3::new(a, b, c),
             ))
         }
-        (Some(path), None) => {
+        Given::Path(path) => {
             if massprops::io::is_body_file(path) && (density.is_some() || mass.is_some()) {
                 return Err(PyValueError::new_err(
                     "a body file gives each part's material: density and mass do not apply",
@@ -83,11 +102,12 @@ fn shape(
 /// (n, 3) the mesh origin's place) and the run's `dt`, `fps`, `l_change`, `energy_change`;
 /// writes `animation` (.glb or .usda) when given.
 #[pyfunction]
-#[pyo3(signature = (path, inertia, density, mass, omega, duration, fps, dt, integrator, model, animation, units, up, repairs))]
+#[pyo3(signature = (path, result, inertia, density, mass, omega, duration, fps, dt, integrator, model, animation, units, up, repairs))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate_motion<'py>(
     py: Python<'py>,
     path: Option<PathBuf>,
+    result: Option<PyRef<'py, MassResult>>,
     inertia: Option<(f64, f64, f64)>,
     density: Option<f64>,
     mass: Option<f64>,
@@ -123,7 +143,23 @@ pub fn simulate_motion<'py>(
             })
         })
         .transpose()?;
-    let shape = shape(py, path.as_deref(), inertia, density, mass, repairs)?;
+    let given = match (path.as_deref(), result.as_deref(), inertia) {
+        (Some(path), None, None) => Given::Path(path),
+        (None, Some(result), None) => Given::Result(result),
+        (None, None, Some((a, b, c))) => Given::Moments(a, b, c),
+        _ => {
+            return Err(PyValueError::new_err(
+                "give one body: a mesh or body file, a MassResult, or the principal moments \
+                 (inertia=)",
+            ));
+        }
+    };
+    if format.is_some() && matches!(given, Given::Result(_)) {
+        return Err(PyValueError::new_err(
+            "animation= writes the body's mesh: give its file (a MassResult has no mesh)",
+        ));
+    }
+    let shape = shape(py, given, density, mass, repairs)?;
     let spin = Spin {
         omega: Vector3::new(omega.0, omega.1, omega.2),
         duration,

@@ -88,9 +88,18 @@ def test_bad_arguments_are_named(tmp_path):
         (dict(inertia=(1.0, 2.0, 3.0), animation=tmp_path / "x.fbx"), ".glb"),
         (dict(inertia=(1.0, 2.0, 3.0), integrator="verlet"), "integrator"),
         (dict(inertia=(1.0, 2.0, 3.0), omega=(1.0, 2.0)), "omega"),
-        (dict(), "not both"),
+        (dict(), "one body"),
         (dict(inertia=(1.0, 2.0, 4.0)), "triangle"),
     ]
     for kwargs, words in cases:
         with pytest.raises(ValueError, match=words):
             il.simulate(**kwargs)
+
+
+def test_a_computed_result_spins_as_its_file_does(tmp_path):
+    from_file = il.simulate(ASSETS / "hammer.obj", duration=1.0, fps=10)
+    from_result = il.simulate(il.analyze_file(ASSETS / "hammer.obj"), duration=1.0, fps=10)
+    np.testing.assert_array_equal(from_result.orientation, from_file.orientation)
+    np.testing.assert_array_equal(from_result.translation, from_file.translation)
+    with pytest.raises(ValueError, match="has no mesh"):
+        il.simulate(il.analyze_file(ASSETS / "hammer.obj"), animation=tmp_path / "h.glb")

@@ -85,6 +85,7 @@ def audit_json(
 ) -> str: ...
 def simulate_motion(
     path: Optional[str],
+    result: Optional[MassResult],
     inertia: Optional[tuple[float, float, float]],
     density: Optional[float],
     mass: Optional[float],

@@ -13,6 +13,7 @@ import numpy.typing as npt
 
 from . import _native
 from ._api import Repairs, _repairs
+from ._native import MassResult
 
 PathLike = Union[str, "os.PathLike[str]"]
 Integrator = Literal[
@@ -58,7 +59,7 @@ def _triple(name: str, value: Any) -> tuple[float, float, float]:
 
 
 def simulate(
-    path: Union[PathLike, None] = None,
+    body: Union[PathLike, MassResult, None] = None,
     *,
     inertia: Union[tuple[float, float, float], None] = None,
     density: Union[float, None] = None,
@@ -77,21 +78,24 @@ def simulate(
     """Spins a body from rest and samples its motion ``fps`` times a second for ``duration``
     seconds, as ``inertia-lab simulate --animation`` does.
 
-    The body is a mesh or body file (``path``, weighed as ``analyze_file`` weighs it: ``density``
-    or ``mass``) or, with ``inertia``, the box of those principal moments (ascending) at
-    ``mass`` (default 1). ``omega`` is the angular velocity at the start in the principal frame
+    The body is a mesh or body file (weighed as ``analyze_file`` weighs it: ``density`` or
+    ``mass``), a ``MassResult`` already computed (``mass_properties`` of arrays, say) or, with
+    ``inertia``, the box of those principal moments (ascending) at ``mass`` (default 1). ``omega`` is the angular velocity at the start in the principal frame
     (moments ascending), rad/s; ``integrator`` and ``model`` are ``simulate``'s. Each keyframe is
     a state of the simulation (``exact``: the elliptic solution itself).
 
     With ``animation`` (a ``.glb`` or ``.usda`` path) the motion is also written there with the
-    body's mesh, the mesh's coordinates taken to be in ``units`` with ``up`` up (the file's axes:
+    body's mesh (a file's, or the box's: a ``MassResult`` has none), the mesh's coordinates taken to be in ``units`` with ``up`` up (the file's axes:
     +Y up for glTF, +Z for USD).
 
     Raises ``ValueError`` for arguments out of range (and ``inertialab.MeshError`` for a file
     that gives no body, as ``analyze_file``).
     """
+    result = body if isinstance(body, MassResult) else None
+    path = None if body is None or result is not None else os.fspath(body)
     out = _native.simulate_motion(
-        None if path is None else os.fspath(path),
+        path,
+        result,
         None if inertia is None else _triple("inertia", inertia),
         None if density is None else float(density),
         None if mass is None else float(mass),
