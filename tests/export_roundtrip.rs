@@ -410,7 +410,21 @@ fn parse(format: &str, text: &str) -> Read {
             assert!(same(f(&v["inertiaTensor"]["y"]), d[1]));
             read
         }
-        "godot" => {
+        "unity-script" => {
+            let q = numbers_after(text, "new Quaternion(");
+            let c = numbers_after(text, "centerOfMass = new Vector3(");
+            let d = numbers_after(text, "inertiaTensor = new Vector3(");
+            let m = line_number(text, "public float mass = ");
+            assert!(text.contains("body.inertiaTensor = inertiaTensor;"));
+            Read::principal(
+                m,
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[3], q[0], q[1], q[2]),
+                [d[0], d[1], d[2]],
+            )
+        }
+        // The scene's RigidBody3D is the fragment's (its mesh and hull are checked apart).
+        "godot" | "godot-scene" => {
             let m = line_number(text, "mass = ");
             let c = numbers_after(text, "center_of_mass = Vector3(");
             let d = numbers_after(text, "inertia = Vector3(");
@@ -477,7 +491,7 @@ fn parse(format: &str, text: &str) -> Read {
 }
 
 /// (format, target frame name in [`target_to_mesh`], length unit of the target in metres).
-const FORMATS: [(&str, &str, f64); 9] = [
+const FORMATS: [(&str, &str, f64); 11] = [
     ("json", "mesh", 1.0),
     ("urdf", "rh-z", 1.0),
     ("sdf", "rh-z", 1.0),
@@ -487,6 +501,8 @@ const FORMATS: [(&str, &str, f64); 9] = [
     ("unreal", "unreal", 0.01),
     ("rapier", "rh-y", 1.0),
     ("gltf", "rh-y", 1.0),
+    ("godot-scene", "rh-y", 1.0),
+    ("unity-script", "unity", 1.0),
 ];
 
 #[test]
@@ -498,10 +514,13 @@ fn every_format_rebuilds_the_tensor_in_the_mesh_frame() {
                 let exact = reference(&b.mesh, metres, 2700.0);
                 for (format, target, target_metres) in FORMATS {
                     for frame in ["com-principal", "origin"] {
-                        let refused = matches!(format, "unity" | "unreal" | "rapier" | "gltf")
-                            && frame == "origin";
+                        let refused = matches!(
+                            format,
+                            "unity" | "unity-script" | "unreal" | "rapier" | "gltf"
+                        ) && frame == "origin";
                         // Godot's body-axes diagonal drops products: checked separately.
-                        if refused || (format == "godot" && frame == "origin") {
+                        let godot = matches!(format, "godot" | "godot-scene");
+                        if refused || (godot && frame == "origin") {
                             continue;
                         }
                         let text = export(
@@ -1651,4 +1670,118 @@ fn three_js_plays_the_baked_glb_as_the_lab_simulates_it() {
         assert!(seen.angle_to(&r) < 1e-6, "{time} s: {}", seen.angle_to(&r));
         assert!((at - t).amax() < 1e-6, "{time} s: {at} vs {t}");
     }
+}
+
+/// The Godot scene: its first line Godot's text-scene header, each mesh file an external
+/// resource whose path, from the scene's folder, is the file, its node's position, quaternion
+/// and scale putting the file's vertices where the body has them (turned to +Y up, millimetres
+/// to metres), the collision hull's points the surface's, and a mesh Godot cannot import named
+/// in a warning.
+#[test]
+fn the_godot_scene_places_each_mesh_and_its_hull() {
+    let b = &bodies()[0];
+    let (file, bytes) = export_file(
+        b.file.path(),
+        "bracket.tscn",
+        &[
+            "--format",
+            "godot-scene",
+            "--units",
+            "mm",
+            "--up",
+            "z",
+            "--frame",
+            "com-principal",
+        ],
+    );
+    let text = String::from_utf8(bytes).expect("text");
+    assert!(
+        text.starts_with("[gd_scene load_steps=3 format=3]\n"),
+        "{text}"
+    );
+    let path = text
+        .lines()
+        .find_map(|l| l.strip_prefix("[ext_resource type=\"ArrayMesh\" path=\""))
+        .and_then(|l| l.split('"').next())
+        .expect("the mesh's resource");
+    let named = std::path::Path::new(file.path())
+        .parent()
+        .expect("folder")
+        .join(path);
+    assert_eq!(
+        std::fs::canonicalize(named).ok(),
+        std::fs::canonicalize(b.file.path()).ok()
+    );
+    let node = &text[text
+        .find("[node name=\"Mesh0\" type=\"MeshInstance3D\" parent=\"MeshFrame\"]")
+        .expect("the mesh's node")..];
+    let position = numbers_after(node, "position = Vector3(");
+    let q = numbers_after(node, "quaternion = Quaternion(");
+    let scale = numbers_after(node, "scale = Vector3(");
+    let turn = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(q[3], q[0], q[1], q[2]));
+    let a = target_to_mesh("rh-y", "z").transpose();
+    let hull = numbers_after(&text, "points = PackedVector3Array(");
+    assert_eq!(hull.len(), 3 * b.mesh.positions.len());
+    // The hull's points are the surface's as read (in the reader's order).
+    let hull: Vec<Vector3<f64>> = hull.chunks(3).map(Vector3::from_column_slice).collect();
+    for p in &b.mesh.positions {
+        let placed = Vector3::from_column_slice(&position) + turn * (p.coords * scale[0]);
+        let expected = a * p.coords * 0.001;
+        assert!((placed - expected).amax() < 1e-15, "{placed} vs {expected}");
+        assert!(
+            hull.iter().any(|h| (h - expected).amax() < 1e-15),
+            "{expected} not in the hull"
+        );
+    }
+    let mut solid = String::from("solid bracket\n");
+    for face in &b.mesh.faces {
+        for k in 1..face.len() - 1 {
+            solid.push_str(" facet normal 0 0 0\n  outer loop\n");
+            for i in [face[0], face[k], face[k + 1]] {
+                let p = b.mesh.positions[i];
+                solid.push_str(&format!("   vertex {} {} {}\n", p.x, p.y, p.z));
+            }
+            solid.push_str("  endloop\n endfacet\n");
+        }
+    }
+    solid.push_str("endsolid bracket\n");
+    let stl = TempFile::new("bracket.stl", solid.as_bytes());
+    let out = TempFile::new("stl.tscn", b"");
+    let said = run(&[
+        "export",
+        stl.path(),
+        "--format",
+        "godot-scene",
+        "-o",
+        out.path(),
+    ]);
+    assert!(said.status.success());
+    let warned = String::from_utf8_lossy(&said.stderr);
+    assert!(
+        warned.contains("Godot 4 does not import") && warned.contains("bracket.stl"),
+        "{warned}"
+    );
+}
+
+/// The Unity script's class is its file's name, as Unity requires of a component.
+#[test]
+fn the_unity_script_is_named_after_its_file() {
+    let b = &bodies()[1];
+    let (file, bytes) = export_file(
+        b.file.path(),
+        "HammerBody.cs",
+        &["--format", "unity-script"],
+    );
+    let text = String::from_utf8(bytes).expect("text");
+    let stem = std::path::Path::new(file.path())
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .expect("a name");
+    assert!(stem.ends_with("HammerBody"), "{stem}");
+    let class = stem.replace(|c: char| !c.is_ascii_alphanumeric(), "_");
+    assert!(
+        text.contains(&format!("public class {class} : MonoBehaviour")),
+        "{text}"
+    );
+    assert!(text.contains("[RequireComponent(typeof(Rigidbody))]"));
 }

@@ -148,8 +148,12 @@ fn write(
             "glb is a binary file: name it with --output FILE.glb".to_owned(),
         ));
     }
-    let name = args
-        .file
+    // Unity names a component's class after its file: the script's class is the output's name.
+    let named = match (&args.output, args.format) {
+        (Some(output), Format::UnityScript) => output.as_path(),
+        _ => args.file.as_path(),
+    };
+    let name = named
         .file_stem()
         .map_or_else(|| "body".to_owned(), |s| s.to_string_lossy().into_owned());
     let geometry = Geometry {

@@ -13,9 +13,13 @@
 //! rotated by the inverse rotation, under which the mesh and collision shapes go: exact.
 
 use std::fmt::Write as _;
+use std::path::Path;
+
+use nalgebra::{Rotation3, UnitQuaternion};
 
 use super::Frame;
 use super::frames::{AXIS_ALIGNED_TOLERANCE, Converted, num, quaternion_wxyz};
+use super::surface::Surface;
 
 fn vector(v: &nalgebra::Vector3<f64>) -> String {
     format!("Vector3({}, {}, {})", num(v.x), num(v.y), num(v.z))
@@ -76,4 +80,135 @@ pub fn render(body: &Converted, frame: Frame, warnings: &mut Vec<String>) -> Str
         );
     }
     s
+}
+
+/// A whole Godot 4 scene (`.tscn`, format 3): the `RigidBody3D` of [`render`] as its root, each
+/// mesh file the surface came from as an external resource on a `MeshInstance3D` (its path
+/// relative to `folder`, the scene's, which Godot resolves from the scene's own folder; the
+/// node placed, turned and scaled into the body's axes and metres), and a `CollisionShape3D`
+/// whose `ConvexPolygonShape3D` is the hull of the surface's points. In the `com-principal`
+/// frame they go under `MeshFrame`, which holds the mesh's axes.
+pub fn scene(
+    body: &Converted,
+    frame: Frame,
+    surface: &Surface,
+    name: &str,
+    folder: Option<&Path>,
+    warnings: &mut Vec<String>,
+) -> String {
+    let s = body.conversion.source_unit.metres() / body.conversion.target_unit.metres();
+    let mut out = String::new();
+    let meshes = surface.files.len();
+    let _ = writeln!(out, "[gd_scene load_steps={} format=3]", meshes + 2);
+    let _ = writeln!(out);
+    let kinds: Vec<Option<Imported>> = surface.files.iter().map(|f| imported(&f.path)).collect();
+    for (k, (file, kind)) in surface.files.iter().zip(&kinds).enumerate() {
+        let Some(kind) = kind else {
+            warnings.push(format!(
+                "godot-scene: Godot 4 does not import {} (it imports .obj as a mesh, and glTF, \
+                 .glb and COLLADA as scenes): convert it to one of them, or the body has its \
+                 collision hull and mass but is not drawn",
+                file.path.display()
+            ));
+            continue;
+        };
+        let _ = writeln!(
+            out,
+            "[ext_resource type=\"{}\" path=\"{}\" id=\"mesh_{k}\"]",
+            match kind {
+                Imported::Mesh => "ArrayMesh",
+                Imported::Scene => "PackedScene",
+            },
+            text(&file.named_from(folder))
+        );
+    }
+    let _ = writeln!(out);
+    let _ = writeln!(
+        out,
+        "[sub_resource type=\"ConvexPolygonShape3D\" id=\"hull\"]"
+    );
+    let points: Vec<String> = surface
+        .points
+        .iter()
+        .map(|p| {
+            let q = body.map * p.coords * s;
+            format!("{}, {}, {}", num(q.x), num(q.y), num(q.z))
+        })
+        .collect();
+    let _ = writeln!(out, "points = PackedVector3Array({})", points.join(", "));
+    let _ = writeln!(out);
+    let node = render(body, frame, warnings).replacen(
+        "[node name=\"Body\" type=\"RigidBody3D\"]",
+        &format!("[node name=\"{}\" type=\"RigidBody3D\"]", text(name)),
+        1,
+    );
+    out.push_str(&node);
+    let parent = match frame {
+        Frame::ComPrincipal => "MeshFrame",
+        Frame::Origin => ".",
+    };
+    // The mesh's axes → the body's: the same turn for every file (Godot is right-handed, so
+    // the map is a rotation), each file's placement within the body before it.
+    let turn = Rotation3::from_matrix_unchecked(body.map);
+    for (k, (file, kind)) in surface.files.iter().zip(&kinds).enumerate() {
+        let Some(kind) = kind else { continue };
+        let rotation = UnitQuaternion::from_rotation_matrix(&turn) * file.placement.rotation;
+        let position = body.map * file.placement.translation.vector * s;
+        let scale = file.scale * s;
+        let _ = writeln!(out);
+        let _ = match kind {
+            Imported::Mesh => writeln!(
+                out,
+                "[node name=\"Mesh{k}\" type=\"MeshInstance3D\" parent=\"{parent}\"]"
+            ),
+            Imported::Scene => writeln!(
+                out,
+                "[node name=\"Mesh{k}\" parent=\"{parent}\" instance=ExtResource(\"mesh_{k}\")]"
+            ),
+        };
+        let _ = writeln!(out, "position = {}", vector(&position));
+        let _ = writeln!(
+            out,
+            "quaternion = Quaternion({}, {}, {}, {})",
+            num(rotation.i),
+            num(rotation.j),
+            num(rotation.k),
+            num(rotation.w)
+        );
+        let _ = writeln!(out, "scale = Vector3({0}, {0}, {0})", num(scale));
+        if *kind == Imported::Mesh {
+            let _ = writeln!(out, "mesh = ExtResource(\"mesh_{k}\")");
+        }
+    }
+    let _ = writeln!(out);
+    let _ = writeln!(
+        out,
+        "[node name=\"Collision\" type=\"CollisionShape3D\" parent=\"{parent}\"]"
+    );
+    let _ = writeln!(out, "shape = SubResource(\"hull\")");
+    out
+}
+
+/// What Godot 4 imports a mesh file as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Imported {
+    /// A mesh resource (Wavefront OBJ), drawn by a `MeshInstance3D`.
+    Mesh,
+    /// A scene (glTF, GLB, COLLADA), instanced as a node.
+    Scene,
+}
+
+/// What Godot 4 imports `path` as, by its extension; `None` for a format it does not import.
+fn imported(path: &Path) -> Option<Imported> {
+    let extension = path.extension()?.to_string_lossy().to_ascii_lowercase();
+    match extension.as_str() {
+        "obj" => Some(Imported::Mesh),
+        "gltf" | "glb" | "dae" => Some(Imported::Scene),
+        _ => None,
+    }
+}
+
+/// Text for a double-quoted `.tscn` string.
+fn text(s: &str) -> String {
+    s.replace('\\', "\\\\").replace('"', "\\\"")
 }

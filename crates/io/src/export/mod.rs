@@ -18,13 +18,16 @@
 //! | `glb` | as `gltf`: a whole file, the mesh on the node | m, kg, kg·m² | as `gltf` | glTF 2.0 §4.4 (GLB) |
 //! | `usd` | right-handed Z-up prim space (`upAxis`) | m, kg, kg·m² (`metersPerUnit`, `kilogramsPerUnit`) | `principalAxes = (w, x, y, z)` | UsdPhysics `MassAPI` |
 //! | `sdf-model` | as `sdf`: a whole `<model>`, meshes by `<uri>` | m, kg, kg·m² | as `sdf` | SDFormat 1.9 |
+//! | `godot-scene` | as `godot`: a whole `.tscn`, meshes by path, a convex hull | m, kg, kg·m² | as `godot` | Godot 4 text scene format 3 |
+//! | `unity-script` | as `unity`: a whole `MonoBehaviour` | m, kg, kg·m² | as `unity` | Unity `Rigidbody` |
 //!
 //! Every target takes the inertia about the centre of mass; "frame" only chooses its axes:
 //! [`Frame::ComPrincipal`] writes the principal moments and the rotation to the principal axes,
 //! [`Frame::Origin`] the full tensor in the mesh's own axes (URDF, SDF, MJCF), or for Godot,
 //! which has no inertia rotation, the diagonal in body axes.
 //!
-//! `glb`, `usd` and `sdf-model` are whole files, which carry the body's [`Surface`] too:
+//! `glb`, `usd`, `sdf-model` and `godot-scene` are whole files, which carry the body's
+//! [`Surface`] too (`unity-script` is a whole file that needs none):
 //! [`export_file`] writes them (and every other format); [`export`] the fragments alone.
 
 mod frames;
@@ -79,6 +82,10 @@ pub enum Format {
     Usd,
     /// A whole SDFormat file: a `<model>` whose link has the `<inertial>` and the meshes.
     SdfModel,
+    /// A whole Godot 4 scene (.tscn): the `RigidBody3D` with its mesh and collision hull.
+    GodotScene,
+    /// A whole Unity C# script: a component that sets its object's `Rigidbody`.
+    UnityScript,
 }
 
 impl Choice for Format {
@@ -96,6 +103,8 @@ impl Choice for Format {
         Format::Glb,
         Format::Usd,
         Format::SdfModel,
+        Format::GodotScene,
+        Format::UnityScript,
     ];
 
     fn name(self) -> &'static str {
@@ -112,6 +121,8 @@ impl Choice for Format {
             Format::Glb => "glb",
             Format::Usd => "usd",
             Format::SdfModel => "sdf-model",
+            Format::GodotScene => "godot-scene",
+            Format::UnityScript => "unity-script",
         }
     }
 
@@ -137,6 +148,12 @@ impl Choice for Format {
             Format::SdfModel => {
                 "A whole SDFormat file: a `<model>` whose link has the `<inertial>` and the meshes"
             }
+            Format::GodotScene => {
+                "A whole Godot 4 scene (.tscn): the `RigidBody3D` with its mesh and collision hull"
+            }
+            Format::UnityScript => {
+                "A whole Unity C# script (.cs): a component that sets its object's `Rigidbody`"
+            }
         }
     }
 }
@@ -149,8 +166,8 @@ impl Format {
             Format::Urdf | Format::Mjcf | Format::Sdf | Format::SdfModel | Format::Usd => {
                 (Axes::RightZUp, LengthUnit::M)
             }
-            Format::Unity => (Axes::UnityLeftYUp, LengthUnit::M),
-            Format::Godot | Format::Rapier | Format::Gltf | Format::Glb => {
+            Format::Unity | Format::UnityScript => (Axes::UnityLeftYUp, LengthUnit::M),
+            Format::Godot | Format::GodotScene | Format::Rapier | Format::Gltf | Format::Glb => {
                 (Axes::RightYUp, LengthUnit::M)
             }
             Format::Unreal => (Axes::UnrealLeftZUp, LengthUnit::Cm),
@@ -166,8 +183,10 @@ impl Format {
             | Format::Sdf
             | Format::SdfModel
             | Format::Mjcf
-            | Format::Godot => (Frame::Origin, true),
+            | Format::Godot
+            | Format::GodotScene => (Frame::Origin, true),
             Format::Unity
+            | Format::UnityScript
             | Format::Unreal
             | Format::Rapier
             | Format::Gltf
@@ -179,7 +198,10 @@ impl Format {
     /// Whether the format is a whole file, which carries the body's surface
     /// ([`export_file`]).
     pub fn is_whole_file(self) -> bool {
-        matches!(self, Format::Glb | Format::Usd | Format::SdfModel)
+        matches!(
+            self,
+            Format::Glb | Format::Usd | Format::SdfModel | Format::GodotScene
+        )
     }
 }
 
@@ -404,6 +426,14 @@ fn write(
             let g = whole(Format::SdfModel)?;
             sdf::model(&body, frame, g.surface, g.name, g.folder)
         }
+        Format::GodotScene => {
+            let g = whole(Format::GodotScene)?;
+            godot::scene(&body, frame, g.surface, g.name, g.folder, &mut warnings)
+        }
+        Format::UnityScript => unity::script(
+            &body,
+            &unity::class_name(geometry.map_or("Body", |g| g.name)),
+        ),
     };
     Ok(ExportOutput {
         bytes: text.into_bytes(),

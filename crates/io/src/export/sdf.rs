@@ -10,7 +10,7 @@
 //! Units m, kg, kg·m²; right-handed Z-up.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use nalgebra::Rotation3;
 
@@ -110,7 +110,7 @@ pub fn model(
         let t = body.map * file.placement.translation.vector * s;
         let rpy = roll_pitch_yaw(&rotation);
         let scale = num(file.scale * s);
-        let uri = xml_text(&uri(&file.path, folder));
+        let uri = xml_text(&file.named_from(folder));
         for tag in ["visual", "collision"] {
             let _ = writeln!(out, "      <{tag} name=\"{tag}_{k}\">");
             let _ = writeln!(
@@ -134,16 +134,6 @@ pub fn model(
     let _ = writeln!(out, "  </model>");
     let _ = writeln!(out, "</sdf>");
     out
-}
-
-/// The mesh's path as the model names it: relative to `folder` when it lies under it, else
-/// absolute (as given when it cannot be resolved).
-fn uri(path: &Path, folder: Option<&Path>) -> String {
-    let absolute = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
-    let relative = folder
-        .and_then(|f| std::fs::canonicalize(f).ok())
-        .and_then(|f| absolute.strip_prefix(&f).ok().map(PathBuf::from));
-    relative.unwrap_or(absolute).to_string_lossy().into_owned()
 }
 
 /// Text for an XML attribute or element.

@@ -33,6 +33,18 @@ pub struct SurfaceFile {
     pub scale: f64,
 }
 
+impl SurfaceFile {
+    /// The file's path as a file written to `folder` names it: relative to `folder` when it lies
+    /// under it, else absolute (as given when it cannot be resolved).
+    pub fn named_from(&self, folder: Option<&Path>) -> String {
+        let absolute = std::fs::canonicalize(&self.path).unwrap_or_else(|_| self.path.clone());
+        let relative = folder
+            .and_then(|f| std::fs::canonicalize(f).ok())
+            .and_then(|f| absolute.strip_prefix(&f).ok().map(PathBuf::from));
+        relative.unwrap_or(absolute).to_string_lossy().into_owned()
+    }
+}
+
 impl Surface {
     /// The surface of what a file resolved to: its mesh, or each part's placed in the body.
     pub fn of(resolved: &Resolved, path: &Path) -> Self {
@@ -62,15 +74,22 @@ impl Surface {
             // A body file's entries are in metres (its parts' placements included).
             let placement = part.entry.placement(1.0);
             surface.add(&part.mesh, &placement);
-            let file = if parts.body_file_units.is_some() {
-                folder.join(&part.entry.mesh)
-            } else {
-                path.to_path_buf()
-            };
-            if !surface.files.iter().any(|f| f.path == file) {
-                surface.files.push(SurfaceFile {
-                    path: file,
+            // A body file places each part's mesh: a file placed twice is named twice, and once
+            // where its parts (objects of one file) lie alike; a mesh file split into parts is
+            // the one file, as it lies.
+            if parts.body_file_units.is_some() {
+                let file = SurfaceFile {
+                    path: folder.join(&part.entry.mesh),
                     placement,
+                    scale: unit,
+                };
+                if !surface.files.contains(&file) {
+                    surface.files.push(file);
+                }
+            } else if surface.files.is_empty() {
+                surface.files.push(SurfaceFile {
+                    path: path.to_path_buf(),
+                    placement: Isometry3::identity(),
                     scale: unit,
                 });
             }

@@ -57,3 +57,62 @@ pub fn render(body: &Converted) -> String {
         f(m.z),
     )
 }
+
+/// A C# class name from `name`: letters, digits and `_`, not starting with a digit.
+pub fn class_name(name: &str) -> String {
+    let mut out: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if !out.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+        out.insert(0, '_');
+    }
+    out
+}
+
+/// A whole C# file: a `MonoBehaviour` named `class` (Unity wants the file named `class.cs`) that
+/// gives its object's `Rigidbody` the body's mass properties in `Awake`, its values as
+/// serialized fields (shown in the Inspector).
+pub fn script(body: &Converted, class: &str) -> String {
+    let c = &body.center_of_mass;
+    let m = &body.moments;
+    let [w, x, y, z] = body.principal_quaternion();
+    format!(
+        "// {}\n\
+         // Unity Rigidbody: lengths m, mass kg, inertia kg*m^2. centerOfMass in the body's local\n\
+         // space; inertiaTensor = principal moments about the centre of mass, in the frame that\n\
+         // inertiaTensorRotation (Quaternion(x, y, z, w)) rotates into the body's local axes.\n\
+         // Save as {class}.cs in Assets and add it to the object with the Rigidbody.\n\
+         using UnityEngine;\n\
+         \n\
+         [RequireComponent(typeof(Rigidbody))]\n\
+         public class {class} : MonoBehaviour\n\
+         {{\n\
+         \x20   public float mass = {};\n\
+         \x20   public Vector3 centerOfMass = new Vector3({}, {}, {});\n\
+         \x20   public Vector3 inertiaTensor = new Vector3({}, {}, {});\n\
+         \x20   public Quaternion inertiaTensorRotation = new Quaternion({}, {}, {}, {});\n\
+         \n\
+         \x20   void Awake()\n\
+         \x20   {{\n\
+         \x20       var body = GetComponent<Rigidbody>();\n\
+         \x20       body.mass = mass;\n\
+         \x20       body.centerOfMass = centerOfMass;\n\
+         \x20       body.inertiaTensorRotation = inertiaTensorRotation;\n\
+         \x20       body.inertiaTensor = inertiaTensor;\n\
+         \x20   }}\n\
+         }}\n",
+        super::provenance(body),
+        f(body.mass),
+        f(c.x),
+        f(c.y),
+        f(c.z),
+        f(m.x),
+        f(m.y),
+        f(m.z),
+        f(x),
+        f(y),
+        f(z),
+        f(w),
+    )
+}
