@@ -1199,17 +1199,13 @@ const USD_ANIMATION: Consumer = Consumer {
 /// The canonical tennis racket's ω₀ (rad/s, principal frame).
 const RACKET_OMEGA: Vector3<f64> = Vector3::new(0.001, 10.0, 0.001);
 
-/// The lab's own states of a body spun at `omega` from rest where its mesh lies (centre of mass
-/// `com`, principal axes `axes` in the mesh): each frame's mesh → world isometry (world = the
-/// mesh's frame), at 30 frames a second from the default integrator at 1/240 s.
-fn lab_frames(
-    mass: f64,
-    moments: Vector3<f64>,
-    axes: nalgebra::Rotation3<f64>,
-    com: Point3<f64>,
-    seconds: f64,
-) -> Vec<Isometry3<f64>> {
-    let mut body = rbcore::Body::from_principal(mass, moments, axes).expect("a body");
+/// The lab's own states of a body of `exact` mass properties spun at the racket's ω₀ from rest
+/// where its mesh lies: each frame's mesh → world isometry (world = the mesh's frame), at 30
+/// frames a second from the default integrator at 1/240 s.
+fn lab_frames(exact: &MassProperties, seconds: f64) -> Vec<Isometry3<f64>> {
+    let p = &exact.principal;
+    let com = exact.center_of_mass;
+    let mut body = rbcore::Body::from_principal(exact.mass, p.moments, p.rotation).expect("a body");
     body.set_position(com).expect("finite");
     body.set_orientation(UnitQuaternion::from_rotation_matrix(&body.principal_axes()))
         .expect("finite");
@@ -1235,6 +1231,41 @@ fn lab_frames(
         ));
     }
     out
+}
+
+/// An asset baked by `simulate --animation` with the racket's spin (and `args`), beside the
+/// lab's own states of it.
+struct BakedAsset {
+    /// The baked file.
+    file: TempFile,
+    /// The asset's mesh.
+    mesh: massprops::PolyMesh,
+    /// Its exact mass properties at density 1 (what `simulate --mesh` weighs it at).
+    exact: MassProperties,
+    /// The lab's frames ([`lab_frames`]).
+    lab: Vec<Isometry3<f64>>,
+}
+
+fn bake_asset(asset: &str, name: &str, seconds: f64, args: &[&str]) -> BakedAsset {
+    let path = root().join("assets").join(asset);
+    let duration = seconds.to_string();
+    let mut all = vec![
+        "--mesh",
+        path.to_str().expect("utf-8"),
+        "--duration",
+        &duration,
+    ];
+    all.extend_from_slice(args);
+    let file = bake(name, &all);
+    let mesh = massprops::load_mesh(&path).expect("the asset").mesh;
+    let exact = mass_properties(&mesh, 1.0).expect("closed");
+    let lab = lab_frames(&exact, seconds);
+    BakedAsset {
+        file,
+        mesh,
+        exact,
+        lab,
+    }
 }
 
 /// `simulate --animation` into a temporary file named `name`.
@@ -1267,16 +1298,9 @@ fn usd_core_plays_the_baked_tumble_as_the_lab_simulates_it() {
     if !USD_ANIMATION.available() {
         return;
     }
-    let mesh_path = root().join("assets/t_handle.obj");
-    let file = bake(
-        "t_handle.usda",
-        &[
-            "--mesh",
-            mesh_path.to_str().expect("utf-8"),
-            "--duration",
-            "24",
-        ],
-    );
+    let BakedAsset {
+        file, exact, lab, ..
+    } = bake_asset("t_handle.obj", "t_handle.usda", 24.0, &[]);
     let v = USD_ANIMATION.read(file.path());
     assert_eq!(
         (f(&v["time_codes_per_second"]), &v["start"], &v["end"]),
@@ -1287,15 +1311,6 @@ fn usd_core_plays_the_baked_tumble_as_the_lab_simulates_it() {
     assert_eq!(
         v["op_order"],
         serde_json::json!(["xformOp:translate", "xformOp:orient"])
-    );
-    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
-    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
-    let lab = lab_frames(
-        exact.mass,
-        exact.principal.moments,
-        exact.principal.rotation,
-        exact.center_of_mass,
-        24.0,
     );
     let a = target_to_mesh("rh-z", "y").transpose();
     let intermediate = a * exact.principal.rotation.matrix().column(1);
@@ -1352,34 +1367,18 @@ fn accessor(doc: &Value, bin: &[u8], index: usize) -> Vec<f32> {
 /// precision; the mesh read back by massprops is the T-handle.
 #[test]
 fn the_baked_glb_keys_the_lab_states_on_the_mesh_node() {
-    let mesh_path = root().join("assets/t_handle.obj");
-    let mesh_file = mesh_path.to_str().expect("utf-8");
-    let file = bake(
+    let BakedAsset {
+        file, exact, lab, ..
+    } = bake_asset(
+        "t_handle.obj",
         "t_handle.glb",
-        &[
-            "--mesh",
-            mesh_file,
-            "--duration",
-            "6",
-            "--up",
-            "z",
-            "--units",
-            "m",
-        ],
+        6.0,
+        &["--up", "z", "--units", "m"],
     );
     let bytes = std::fs::read(file.path()).expect("written");
     let json_length = u32::from_le_bytes(bytes[12..16].try_into().expect("4 bytes")) as usize;
     let doc: Value = serde_json::from_slice(&bytes[20..20 + json_length]).expect("JSON chunk");
     let bin = &bytes[20 + json_length + 8..];
-    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
-    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
-    let lab = lab_frames(
-        exact.mass,
-        exact.principal.moments,
-        exact.principal.rotation,
-        exact.center_of_mass,
-        6.0,
-    );
     let animation = &doc["animations"][0];
     assert_eq!(doc["animations"].as_array().map(Vec::len), Some(1));
     let channel = |path: &str| {
@@ -1465,31 +1464,15 @@ fn blender_imports_the_baked_glb_as_the_lab_simulates_it() {
     if !BLENDER.available() {
         return;
     }
-    let mesh_path = root().join("assets/hammer.obj");
-    let file = bake(
-        "hammer.glb",
-        &[
-            "--mesh",
-            mesh_path.to_str().expect("utf-8"),
-            "--duration",
-            "4",
-        ],
-    );
+    let BakedAsset {
+        file, mesh, lab, ..
+    } = bake_asset("hammer.obj", "hammer.glb", 4.0, &[]);
     let v = BLENDER.read_with(file.path(), &["30"]);
     assert_eq!(v["meshes"].as_array().map(Vec::len), Some(1), "{v}");
     assert_eq!(v["rotation_mode"], "QUATERNION");
-    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
-    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
-    let lab = lab_frames(
-        exact.mass,
-        exact.principal.moments,
-        exact.principal.rotation,
-        exact.center_of_mass,
-        4.0,
-    );
     // glTF's +Y up (the mesh's here) into Blender's +Z up.
     let c = target_to_mesh("rh-z", "y").transpose();
-    let (lo, hi) = mesh.mesh.positions().iter().fold(
+    let (lo, hi) = mesh.positions().iter().fold(
         (
             Vector3::repeat(f64::INFINITY),
             Vector3::repeat(f64::NEG_INFINITY),
@@ -1589,27 +1572,9 @@ fn three_js_plays_the_baked_glb_as_the_lab_simulates_it() {
     let Some(driver) = three_driver(test) else {
         return;
     };
-    let mesh_path = root().join("assets/t_handle.obj");
-    let file = bake(
-        "t_handle_three.glb",
-        &[
-            "--mesh",
-            mesh_path.to_str().expect("utf-8"),
-            "--duration",
-            "2",
-            "--up",
-            "z",
-        ],
-    );
-    let mesh = massprops::load_mesh(&mesh_path).expect("the asset");
-    let exact = mass_properties(&mesh.mesh, 1.0).expect("closed");
-    let lab = lab_frames(
-        exact.mass,
-        exact.principal.moments,
-        exact.principal.rotation,
-        exact.center_of_mass,
-        2.0,
-    );
+    let BakedAsset {
+        file, exact, lab, ..
+    } = bake_asset("t_handle.obj", "t_handle_three.glb", 2.0, &["--up", "z"]);
     // Each keyframe's time, and halfway to the next.
     let times: Vec<String> = (0..lab.len())
         .flat_map(|k| [k as f64 / 30.0, (k as f64 + 0.5) / 30.0])

@@ -430,10 +430,10 @@ fn write(
             let g = whole(Format::GodotScene)?;
             godot::scene(&body, frame, g.surface, g.name, g.folder, &mut warnings)
         }
-        Format::UnityScript => unity::script(
-            &body,
-            &unity::class_name(geometry.map_or("Body", |g| g.name)),
-        ),
+        // C# class names are identifiers.
+        Format::UnityScript => {
+            unity::script(&body, &identifier(geometry.map_or("Body", |g| g.name)))
+        }
     };
     Ok(ExportOutput {
         bytes: text.into_bytes(),
@@ -464,6 +464,19 @@ pub fn inertial_element(props: &MassProperties, format: Format) -> Result<String
 }
 
 /// The source line every output's comment starts with.
+/// `name` as an identifier of USD's and C#'s kind: a letter or `_`, then letters, digits and
+/// `_` (every other character `_`).
+fn identifier(name: &str) -> String {
+    let mut out: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if !out.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+        out.insert(0, '_');
+    }
+    out
+}
+
 fn provenance(body: &frames::Converted) -> String {
     let c = body.conversion;
     format!(
@@ -494,6 +507,13 @@ mod tests {
             UnitQuaternion::from_euler_angles(0.7, 0.2, -1.3),
         );
         shapes::hammer().transformed(&motion).build()
+    }
+
+    #[test]
+    fn names_become_identifiers() {
+        assert_eq!(identifier("t_handle"), "t_handle");
+        assert_eq!(identifier("3 part-body"), "_3_part_body");
+        assert_eq!(identifier(""), "_");
     }
 
     #[test]

@@ -58,18 +58,6 @@ pub fn render(body: &Converted) -> String {
     )
 }
 
-/// A C# class name from `name`: letters, digits and `_`, not starting with a digit.
-pub fn class_name(name: &str) -> String {
-    let mut out: String = name
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect();
-    if !out.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
-        out.insert(0, '_');
-    }
-    out
-}
-
 /// A whole C# file: a `MonoBehaviour` named `class` (Unity wants the file named `class.cs`) that
 /// gives its object's `Rigidbody` the body's mass properties in `Awake`, its values as
 /// serialized fields (shown in the Inspector).

@@ -33,7 +33,8 @@ pub fn render(
     animation: Option<&Motion>,
 ) -> String {
     let s = body.conversion.source_unit.metres() / body.conversion.target_unit.metres();
-    let prim = prim_name(name);
+    // USD prim names are identifiers.
+    let prim = super::identifier(name);
     let c = &body.center_of_mass;
     let m = &body.moments;
     let [w, x, y, z] = body.principal_quaternion();
@@ -213,31 +214,7 @@ fn join(out: &mut String, items: impl Iterator<Item = String>) {
     }
 }
 
-/// A valid prim name (USD identifiers: a letter or `_`, then letters, digits and `_`).
-fn prim_name(name: &str) -> String {
-    let mut out: String = name
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect();
-    if !out.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
-        out.insert(0, '_');
-    }
-    out
-}
-
 /// A string for a double-quoted USD string.
 fn escape(text: &str) -> String {
     text.replace('\\', "\\\\").replace('"', "\\\"")
-}
-
-#[cfg(test)]
-mod tests {
-    use super::prim_name;
-
-    #[test]
-    fn prim_names_are_identifiers() {
-        assert_eq!(prim_name("t_handle"), "t_handle");
-        assert_eq!(prim_name("3 part-body"), "_3_part_body");
-        assert_eq!(prim_name(""), "_");
-    }
 }

@@ -64,6 +64,23 @@ def _selected_mesh(context):
     return obj if obj is not None and obj.type == "MESH" else None
 
 
+def _on_selected(operator, context, work):
+    """Runs `work(context, obj, settings)` on the selected mesh object, its words (or its
+    error, a ``ValueError`` naming the problem) on the panel's message line."""
+    obj = _selected_mesh(context)
+    settings = context.scene.inertia_lab
+    if obj is None:
+        operator.report({"ERROR"}, "Select a mesh object")
+        return {"CANCELLED"}
+    try:
+        settings.message = work(context, obj, settings)
+    except ValueError as e:
+        settings.message = f"{obj.name}: {e}"
+        operator.report({"ERROR"}, settings.message)
+        return {"CANCELLED"}
+    return {"FINISHED"}
+
+
 def _principal_empty(obj, centre, axes, unit: float, size: float):
     """An Empty of arrows on the principal axes at the centre of mass, parented to `obj` in its
     metric local frame (the parent's scale undone), so it moves with the body."""
@@ -92,17 +109,10 @@ class INERTIALAB_OT_measure(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
-        obj = _selected_mesh(context)
-        settings = context.scene.inertia_lab
-        if obj is None:
-            self.report({"ERROR"}, "Select a mesh object")
-            return {"CANCELLED"}
-        try:
-            result = measure.measure(obj, context.scene, settings.density)
-        except ValueError as e:
-            settings.message = str(e)
-            self.report({"ERROR"}, f"{obj.name}: {e}")
-            return {"CANCELLED"}
+        return _on_selected(self, context, self.measure)
+
+    def measure(self, context, obj, settings):
+        result = measure.measure(obj, context.scene, settings.density)
         obj[MASS] = result.mass
         obj[CENTRE] = result.center_of_mass.tolist()
         obj[MOMENTS] = result.principal_moments.tolist()
@@ -117,10 +127,9 @@ class INERTIALAB_OT_measure(bpy.types.Operator):
             with context.temp_override(active_object=obj, object=obj, selected_objects=[obj]):
                 bpy.ops.rigidbody.object_add()
         obj.rigid_body.mass = result.mass
-        settings.message = f"{obj.name}: {result.mass:.6g} kg"
         for line in measure.warning_lines(result):
             self.report({"WARNING"}, line)
-        return {"FINISHED"}
+        return f"{obj.name}: {result.mass:.6g} kg"
 
 
 class INERTIALAB_OT_bake_tumble(bpy.types.Operator):
@@ -132,23 +141,14 @@ class INERTIALAB_OT_bake_tumble(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
-        obj = _selected_mesh(context)
-        settings = context.scene.inertia_lab
-        if obj is None:
-            self.report({"ERROR"}, "Select a mesh object")
-            return {"CANCELLED"}
-        try:
-            result = measure.measure(obj, context.scene, settings.density)
-            omega = bake.spin(int(settings.spin_axis), settings.spin_rate,
-                              settings.perturbation)
-            motion = bake.bake_tumble(obj, context.scene, result, omega, settings.seconds)
-        except ValueError as e:
-            settings.message = str(e)
-            self.report({"ERROR"}, f"{obj.name}: {e}")
-            return {"CANCELLED"}
-        settings.message = (f"{obj.name}: {len(motion.time)} frames baked, "
-                            f"|L| kept to {abs(motion.l_change):.1e}")
-        return {"FINISHED"}
+        return _on_selected(self, context, self.bake)
+
+    def bake(self, context, obj, settings):
+        result = measure.measure(obj, context.scene, settings.density)
+        omega = bake.spin(int(settings.spin_axis), settings.spin_rate, settings.perturbation)
+        motion = bake.bake_tumble(obj, context.scene, result, omega, settings.seconds)
+        return (f"{obj.name}: {len(motion.time)} frames baked, "
+                f"|L| kept to {abs(motion.l_change):.1e}")
 
 
 class INERTIALAB_PT_panel(bpy.types.Panel):
