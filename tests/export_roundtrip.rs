@@ -982,6 +982,46 @@ fn export_file(file: &str, name: &str, args: &[&str]) -> (TempFile, Vec<u8>) {
     (out, bytes)
 }
 
+/// One test body exported as a whole file.
+struct Exported {
+    name: &'static str,
+    up: &'static str,
+    /// The body in metres, of PLA.
+    exact: MassProperties,
+    file: TempFile,
+    bytes: Vec<u8>,
+}
+
+/// Each test body of PLA, with +Y and with +Z up, exported as `format` into a `.{extension}`
+/// file.
+fn exported(format: &str, extension: &str) -> Vec<Exported> {
+    let mut out = Vec::new();
+    for b in bodies() {
+        for up in ["y", "z"] {
+            let args = [
+                "--format",
+                format,
+                "--units",
+                b.units,
+                "--material",
+                "pla",
+                "--up",
+                up,
+            ];
+            let (file, bytes) =
+                export_file(b.file.path(), &format!("{}.{extension}", b.name), &args);
+            out.push(Exported {
+                name: b.name,
+                up,
+                exact: reference(&b.mesh, b.metres, 1240.0),
+                file,
+                bytes,
+            });
+        }
+    }
+    out
+}
+
 /// The USD stage, opened by usd-core: its metres, kilograms and +Z up; UsdPhysics' MassAPI
 /// rebuilds the tensor to single precision, its double-precision attributes to [`TOLERANCE`];
 /// the mesh on its collision prim encloses the body's volume about its centre of mass.
@@ -990,19 +1030,14 @@ fn usd_core_reads_the_stage_as_the_same_body() {
     if !USD_CORE.available() {
         return;
     }
-    for (b, up) in bodies().iter().flat_map(|b| [(b, "y"), (b, "z")]) {
-        let exact = reference(&b.mesh, b.metres, 1240.0);
-        let args = [
-            "--format",
-            "usd",
-            "--units",
-            b.units,
-            "--material",
-            "pla",
-            "--up",
-            up,
-        ];
-        let (file, _) = export_file(b.file.path(), &format!("{}.usda", b.name), &args);
+    for Exported {
+        name,
+        up,
+        exact,
+        file,
+        ..
+    } in exported("usd", "usda")
+    {
         let v = USD_CORE.read(file.path());
         assert_eq!(
             (f(&v["meters_per_unit"]), f(&v["kilograms_per_unit"])),
@@ -1020,7 +1055,7 @@ fn usd_core_reads_the_stage_as_the_same_body() {
                 [d[0], d[1], d[2]],
             )
         };
-        let label = format!("usd-core {} {} +{up} up", v["version"], b.name);
+        let label = format!("usd-core {} {name} +{up} up", v["version"]);
         check(&label, errors(&read(&v["double"]), "rh-z", up, 1.0, &exact));
         check_within(
             &format!("{label} MassAPI"),
@@ -1043,19 +1078,14 @@ fn usd_core_reads_the_stage_as_the_same_body() {
 #[test]
 fn the_glb_is_valid_gltf_and_its_node_holds_the_same_body() {
     let mut files = Vec::new();
-    for (b, up) in bodies().iter().flat_map(|b| [(b, "y"), (b, "z")]) {
-        let exact = reference(&b.mesh, b.metres, 1240.0);
-        let args = [
-            "--format",
-            "glb",
-            "--units",
-            b.units,
-            "--material",
-            "pla",
-            "--up",
-            up,
-        ];
-        let (file, bytes) = export_file(b.file.path(), &format!("{}.glb", b.name), &args);
+    for Exported {
+        name,
+        up,
+        exact,
+        file,
+        bytes,
+    } in exported("glb", "glb")
+    {
         assert_eq!(&bytes[..4], b"glTF");
         let json_length = u32::from_le_bytes(bytes[12..16].try_into().expect("4 bytes")) as usize;
         let doc: Value = serde_json::from_slice(&bytes[20..20 + json_length]).expect("JSON chunk");
@@ -1070,7 +1100,7 @@ fn the_glb_is_valid_gltf_and_its_node_holds_the_same_body() {
             quat(q[3], q[0], q[1], q[2]),
             [d[0], d[1], d[2]],
         );
-        let label = format!("glb {} +{up} up", b.name);
+        let label = format!("glb {name} +{up} up");
         check(&label, errors(&read, "rh-y", up, 1.0, &exact));
         let mesh = massprops::load_mesh(std::path::Path::new(file.path())).expect("reads");
         let solid = mass_properties(&mesh.mesh, 1240.0).expect("closed");

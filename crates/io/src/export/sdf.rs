@@ -49,16 +49,7 @@ pub fn element(body: &Converted, frame: Frame) -> String {
     let c = &body.center_of_mass;
     let mut s = String::new();
     let _ = writeln!(s, "<inertial>");
-    let _ = writeln!(
-        s,
-        "  <pose>{} {} {} {} {} {}</pose>",
-        num(c.x),
-        num(c.y),
-        num(c.z),
-        num(rpy[0]),
-        num(rpy[1]),
-        num(rpy[2])
-    );
+    let _ = writeln!(s, "  {}", pose(c, rpy));
     let _ = writeln!(s, "  <mass>{}</mass>", num(body.mass));
     let _ = writeln!(s, "  <inertia>");
     for (name, (r, k)) in ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"].iter().zip([
@@ -113,16 +104,7 @@ pub fn model(
         let uri = xml_text(&file.named_from(folder));
         for tag in ["visual", "collision"] {
             let _ = writeln!(out, "      <{tag} name=\"{tag}_{k}\">");
-            let _ = writeln!(
-                out,
-                "        <pose>{} {} {} {} {} {}</pose>",
-                num(t.x),
-                num(t.y),
-                num(t.z),
-                num(rpy[0]),
-                num(rpy[1]),
-                num(rpy[2])
-            );
+            let _ = writeln!(out, "        {}", pose(&t, rpy));
             let _ = writeln!(
                 out,
                 "        <geometry><mesh><uri>{uri}</uri><scale>{scale} {scale} {scale}</scale></mesh></geometry>"
@@ -134,6 +116,19 @@ pub fn model(
     let _ = writeln!(out, "  </model>");
     let _ = writeln!(out, "</sdf>");
     out
+}
+
+/// A `<pose>`: the position `t`, then roll, pitch and yaw.
+fn pose(t: &nalgebra::Vector3<f64>, rpy: [f64; 3]) -> String {
+    format!(
+        "<pose>{} {} {} {} {} {}</pose>",
+        num(t.x),
+        num(t.y),
+        num(t.z),
+        num(rpy[0]),
+        num(rpy[1]),
+        num(rpy[2])
+    )
 }
 
 /// Text for an XML attribute or element.
