@@ -9,7 +9,7 @@
 //! `Rotation` is glam's `Quat` (`DQuat`), so `Rotation::from_xyzw(x, y, z, w)` is scalar last.
 //! bevy_rapier3d's `MassProperties` has the same four fields as glam types (`Vec3`,
 //! `Quat::from_xyzw(x, y, z, w)`). rapier has no fixed up axis; Bevy is right-handed +Y up, so
-//! that is the target here. Units m, kg, kg·m². tests/export_roundtrip.rs builds the rapier3d-f64
+//! that is the target here. Units m, kg, kg·m². tests/export_roundtrip/fragments.rs builds the rapier3d-f64
 //! value with this constructor and reads back rapier's own mass, centre of mass and tensor.
 
 use super::frames::{Converted, num};
