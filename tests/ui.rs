@@ -656,3 +656,24 @@ fn the_focused_widget_is_scrolled_into_view() {
     let after = h.get_by_label("Reset settings").rect();
     assert!(screen.contains_rect(after), "out of view at {after:?}");
 }
+
+/// The 3D view is named, for a screen reader, by what it shows in words (the lab's
+/// description): the T-handle spinning about axis 2, and after Spin axis 3 its wobble; the name
+/// changes when the motion does.
+#[test]
+fn the_3d_view_is_described_in_words() {
+    let mut h = harness();
+    h.get_by_label("Spin axis 2").click();
+    frames(&mut h, 3);
+    for words in [
+        "The T-handle spins at",
+        "mostly about axis 2",
+        "Axis 2 will turn over",
+    ] {
+        assert!(h.query_by_label_contains(words).is_some(), "{words}");
+    }
+    h.get_by_label("Spin axis 3").click();
+    frames(&mut h, 3);
+    assert!(h.query_by_label_contains("wobbles about axis 3").is_some());
+    assert!(h.query_by_label_contains("mostly about axis 2").is_none());
+}

@@ -6,8 +6,9 @@
 //! changes it with a click or a tap on the body; opens the scene a link names; loads a mesh
 //! through the file picker and a body file with its meshes dropped on the page, each with the
 //! mass `props` computes for the same files; loads a big mesh in the page's worker while the page
-//! goes on drawing (frames recorded in the page, `tests/web/busy.mjs`); and names the body in the
-//! page's title.
+//! goes on drawing (frames recorded in the page, `tests/web/busy.mjs`); names the body in the
+//! page's title; and says what the canvas shows in a live region that Chromium's accessibility
+//! tree holds.
 //!
 //! Without Chromium, Node.js, the web toolchain or the npm registry it prints a SKIPPED line (a
 //! failure under `CI`; `.ci/run` installs them all).
@@ -153,6 +154,16 @@ fn web_page_runs_the_lab() {
     let plot = shot.count((left, shot.width), (top + height, shot.height), green_line);
     assert!(body > 2000, "the 3D view shows no body ({body} pixels)");
     assert!(plot > 100, "the plots show no lines ({plot} pixels)");
+    // The live region says what the canvas shows, and the accessibility tree holds it.
+    let live = default["live"].as_str().unwrap_or_default();
+    assert!(
+        live.starts_with("The T-handle spins at") && live.contains("mostly about axis"),
+        "the live region: {live:?}"
+    );
+    assert!(
+        default["described"].as_u64().unwrap_or(0) >= 1,
+        "the accessibility tree lacks the description {live:?}"
+    );
 
     // Torque-free, |L| is constant; a click (a tap on a touch screen) on the body pokes it.
     for name in ["poke", "tap"] {

@@ -118,14 +118,27 @@ async function offCentre(page) {
   return { x: left + width / 2 + 0.015 * height, y: top + height / 2 };
 }
 
-// 1. The page as opened: the T-handle, drawn and moving; a screenshot for the pixel checks.
+// 1. The page as opened: the T-handle, drawn and moving; a screenshot for the pixel checks; the
+// live region's description, and whether the accessibility tree holds it.
 await scenario("default", async () => {
   const page = await open("default", "/");
   const first = await figures(page);
   await sleep(3000);
   const later = await figures(page);
   await page.screenshot({ path: join(out, "page-1280x800.png") });
-  result.scenarios.default = { first, later };
+  // What a screen reader is given: the live region's words, found in Chromium's accessibility
+  // tree (every node's name, the uninteresting ones included).
+  const live = await page.$eval("#live", (e) => e.textContent);
+  const tree = await page.accessibility.snapshot({ interestingOnly: false });
+  const names = [];
+  const walk = (node) => {
+    if (!node) return;
+    if (node.name) names.push(node.name);
+    for (const child of node.children ?? []) walk(child);
+  };
+  walk(tree);
+  const described = names.filter((n) => n.includes(live) && live.length > 0).length;
+  result.scenarios.default = { first, later, live, described };
   await page.close();
 });
 

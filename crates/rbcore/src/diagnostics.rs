@@ -141,6 +141,10 @@ impl FlipCounter {
     pub fn flips(&self) -> usize {
         self.crossings.len()
     }
+    /// Time of the last reversal, if any.
+    pub fn last_crossing(&self) -> Option<f64> {
+        self.crossings.last().copied()
+    }
     /// Time between the last two reversals (half a period of ω₂ in torque-free motion).
     pub fn last_interval(&self) -> Option<f64> {
         match self.crossings[..] {

@@ -283,6 +283,7 @@ impl LabApp {
                 [q.w, q.i, q.j, q.k]
             },
             specimens: self.lab.specimens().len(),
+            description: crate::lab::describe::description(&self.lab),
             loading: self.lab.loading().map(|l| l.stage.to_string()),
             view: [view.left(), view.top(), view.width(), view.height()],
         });

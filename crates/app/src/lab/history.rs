@@ -107,6 +107,11 @@ impl History {
         Some((current, self.max_drift))
     }
 
+    /// Simulated time of the last reversal of ω₂ since the last disturbance, if any.
+    pub fn last_reversal(&self) -> Option<f64> {
+        self.flips.last_crossing()
+    }
+
     /// Time between the last two reversals of ω₂ since the last disturbance (half the flip
     /// period of torque-free motion), once two have happened.
     pub fn flip_interval(&self) -> Option<f64> {

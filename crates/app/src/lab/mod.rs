@@ -13,6 +13,7 @@
 pub mod body;
 pub mod clock;
 mod command;
+pub mod describe;
 mod editing;
 mod error;
 pub mod geometry;

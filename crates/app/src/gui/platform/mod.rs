@@ -57,6 +57,8 @@ pub struct Figures {
     pub orientation: [f64; 4],
     /// How many specimens run (the body and its copies).
     pub specimens: usize,
+    /// What is happening, in words ([`crate::lab::describe`]): the page's live region.
+    pub description: String,
     /// The stage of the file loading, when one is.
     pub loading: Option<String>,
     /// The 3D view's rectangle (left, top, width, height), in points: CSS pixels in a page.

@@ -49,6 +49,10 @@ pub const RECORD_HINT: &str =
 /// The id of the canvas the app draws on (`web/index.html`).
 pub const CANVAS_ID: &str = "inertia-lab";
 
+/// The id of the page's live region (`aria-live="polite"`, web/index.html) that holds what is
+/// happening in words.
+const LIVE_ID: &str = "live";
+
 /// Starts the app on the page's canvas with the scene its address names; an error is shown in
 /// the page (the element `#error`) and the console.
 pub fn start() {
@@ -175,6 +179,13 @@ pub fn publish(figures: &Figures) {
         ("data-frames", frames.to_string()),
     ] {
         let _ = canvas.set_attribute(name, &value);
+    }
+    // The live region beside the canvas (eframe's web runner exposes no accessibility tree): a
+    // screen reader reads it again whenever it changes, so it is written only then.
+    if let Some(live) = document().and_then(|d| d.get_element_by_id(LIVE_ID))
+        && live.text_content().as_deref() != Some(figures.description.as_str())
+    {
+        live.set_text_content(Some(&figures.description));
     }
 }
 

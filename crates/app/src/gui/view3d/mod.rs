@@ -151,6 +151,9 @@ impl View3d {
         let response = ui
             .allocate_rect(rect, Sense::click_and_drag())
             .on_hover_cursor(egui::CursorIcon::Crosshair);
+        // What the view shows, in words, for a screen reader (AccessKit names the view so).
+        let description = crate::lab::describe::description(lab);
+        response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &description));
         self.handle_input(ui, &response, lab, commands);
 
         let (origin, params) = self.frame_params(lab);

@@ -1,0 +1,144 @@
+//! What is happening, in words, for a student who cannot see the 3D view, the plots or the
+//! momentum sphere: written from the lab's state, for the desktop's accessibility tree and the
+//! page's live region (`aria-live`).
+//!
+//! The text changes when something happens (a reversal of ω₂, a new spin, a pause, a poke),
+//! not every frame: it states times as simulated times of events ("reversed at t = 12.4 s"),
+//! never as a running "ago", and rates to two significant digits, so that a screen reader is
+//! not made to read it again sixty times a second.
+
+use rbcore::{Polhode, RotationModel};
+
+use super::Lab;
+use crate::lab::specimen::TURNING_OVER;
+
+/// The description of the primary specimen's motion.
+pub fn description(lab: &Lab) -> String {
+    let s = lab.primary();
+    let b = s.sim().body();
+    let name = &s.body().name;
+    // The spin about L, ω·L/|L| = 2T/|L|: held through a torque-free tumble, where |ω| is not.
+    let l = b.angular_momentum();
+    let omega = if l.norm() > 0.0 {
+        b.omega_world().dot(&l) / l.norm()
+    } else {
+        0.0
+    };
+    let mut text = if omega.abs() < 1e-9 {
+        format!("The {name} is at rest.")
+    } else {
+        let w = s.sim().diagnostics().omega_principal;
+        let main = (0..3)
+            .max_by(|&i, &j| w[i].abs().total_cmp(&w[j].abs()))
+            .unwrap_or(0);
+        format!(
+            "The {name} spins at {} rad/s about its angular momentum, mostly about axis {}.",
+            two_digits(omega),
+            main + 1
+        )
+    };
+    let history = s.history();
+    match s.polhode() {
+        Polhode::Circles { axis, .. } if s.cone_angle() >= TURNING_OVER => {
+            match (history.last_reversal(), s.turn_over_interval()) {
+                (Some(last), Some(half)) => text.push_str(&format!(
+                    " Axis 2 turns over: ω₂ reversed at t = {last:.1} s; the next reversal is \
+                     predicted at t = {:.1} s.",
+                    last + half
+                )),
+                (None, Some(half)) => text.push_str(&format!(
+                    " Axis 2 will turn over, every {half:.1} s, while L circles axis {}.",
+                    axis + 1
+                )),
+                (_, None) => {}
+            }
+        }
+        Polhode::Circles { axis, .. } => text.push_str(&format!(
+            " It wobbles about axis {}, its spin axis within {:.0}° of it, and never turns \
+             over.",
+            axis + 1,
+            s.cone_angle().to_degrees()
+        )),
+        Polhode::Steady { axis } => {
+            text.push_str(&format!(" It turns steadily about axis {}.", axis + 1));
+        }
+        Polhode::Separatrix => {
+            text.push_str(" It is on the separatrix: exactly between the two kinds of motion.");
+        }
+        Polhode::AtRest | Polhode::Spherical => {}
+    }
+    if s.sim().settings().model == RotationModel::Textbook {
+        text.push_str(" The textbook model is on: without the term ω × Iω nothing turns over.");
+    }
+    if lab.is_paused() {
+        text.push_str(&format!(" Paused at t = {:.1} s.", s.sim().time()));
+    }
+    let copies = lab.specimens().len() - 1;
+    if copies > 0 {
+        text.push_str(&format!(
+            " {copies} compared {} beside it.",
+            if copies == 1 {
+                "copy runs"
+            } else {
+                "copies run"
+            }
+        ));
+    }
+    text
+}
+
+/// `v` to two significant digits, as text.
+fn two_digits(v: f64) -> String {
+    significant(v, 2)
+}
+
+/// `v` to `digits` significant digits, without an exponent for the sizes a spin has.
+fn significant(v: f64, digits: i32) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let magnitude = v.abs().log10().floor() as i32;
+    let decimals = (digits - 1 - magnitude).max(0) as usize;
+    let step = 10f64.powi(magnitude - digits + 1);
+    format!("{:.decimals$}", (v / step).round() * step)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lab::{Command, Lab};
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(significant(8.04, 2), "8.0");
+        assert_eq!(significant(12.6, 2), "13");
+        assert_eq!(significant(0.0314, 2), "0.031");
+    }
+
+    /// The T-handle spun about axis 2: the words say so, name the reversal once it happened
+    /// and the next one predicted half a period on, and stay the same between events.
+    #[test]
+    fn the_flip_is_told_with_its_reversals() {
+        let mut lab = Lab::new(crate::lab::settings::AppSettings::default()).expect("the lab");
+        lab.apply(Command::Preset(1));
+        let first = description(&lab);
+        assert!(
+            first.contains("mostly about axis 2") && first.contains("will turn over"),
+            "{first}"
+        );
+        let half = lab.primary().turn_over_interval().expect("a flip");
+        lab.advance_for(half * 0.4);
+        assert_eq!(description(&lab), first, "nothing happened yet");
+        lab.advance_for(half);
+        let after = description(&lab);
+        let last = lab.primary().history().last_reversal().expect("a reversal");
+        assert!(
+            after.contains(&format!("reversed at t = {last:.1} s"))
+                && after.contains(&format!("predicted at t = {:.1} s", last + half)),
+            "{after}"
+        );
+        lab.apply(Command::Preset(2));
+        let steady = description(&lab);
+        assert!(steady.contains("wobbles about axis 3"), "{steady}");
+    }
+}
