@@ -677,3 +677,33 @@ fn the_3d_view_is_described_in_words() {
     assert!(h.query_by_label_contains("wobbles about axis 3").is_some());
     assert!(h.query_by_label_contains("mostly about axis 2").is_none());
 }
+
+/// Export motion is reached by its name: its file field (named by the button), the seconds and
+/// the keyframes a second; the button writes the file with that many keyframes.
+#[test]
+fn export_motion_is_named_and_writes_the_file() {
+    let mut h = harness();
+    let path = std::env::temp_dir().join(format!("inertia-lab-ui-{}.usda", std::process::id()));
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Export motion")
+        .focus();
+    frames(&mut h, 1);
+    // The field holds motion.glb: selected whole, then typed over.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    frames(&mut h, 1);
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Export motion")
+        .type_text(&path.display().to_string());
+    frames(&mut h, 1);
+    assert!(h.query_by_label("Seconds baked").is_some());
+    assert!(h.query_by_label("Keyframes a second").is_some());
+    h.get_by_role_and_label(egui::accesskit::Role::Button, "Export motion")
+        .click();
+    frames(&mut h, 2);
+    let text = std::fs::read_to_string(&path).expect("written");
+    std::fs::remove_file(&path).ok();
+    // 10 s at 30 fps, the defaults beside the button.
+    assert!(
+        text.contains("endTimeCode = 300"),
+        "{}",
+        &text[..400.min(text.len())]
+    );
+}

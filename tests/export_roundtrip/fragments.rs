@@ -172,14 +172,12 @@ fn parse(format: &str, text: &str) -> Read {
         "gltf" => {
             let v: Value = serde_json::from_str(text).expect("JSON");
             let motion = &v["extensions"]["KHR_physics_rigid_bodies"]["motion"];
-            let c = floats(&motion["centerOfMass"]);
-            let d = floats(&motion["inertiaDiagonal"]);
-            let q = floats(&motion["inertiaOrientation"]);
-            Read::principal(
-                f(&motion["mass"]),
-                Vector3::new(c[0], c[1], c[2]),
-                quat(q[3], q[0], q[1], q[2]),
-                [d[0], d[1], d[2]],
+            Read::principal_json(
+                &motion["mass"],
+                &motion["centerOfMass"],
+                &motion["inertiaDiagonal"],
+                &motion["inertiaOrientation"],
+                [3, 0, 1, 2],
             )
         }
         other => panic!("unknown format {other}"),
@@ -517,14 +515,12 @@ fn mujoco_compiles_the_mjcf_to_the_same_body() {
             );
             let file = TempFile::new(&format!("{}-{frame}.mjcf", b.name), text.as_bytes());
             let v = MUJOCO.read(file.path());
-            let q = floats(&v["iquat"]);
-            let p = floats(&v["ipos"]);
-            let d = floats(&v["inertia"]);
-            let read = Read::principal(
-                f(&v["mass"]),
-                Vector3::new(p[0], p[1], p[2]),
-                quat(q[0], q[1], q[2], q[3]),
-                [d[0], d[1], d[2]],
+            let read = Read::principal_json(
+                &v["mass"],
+                &v["ipos"],
+                &v["inertia"],
+                &v["iquat"],
+                [0, 1, 2, 3],
             );
             let label = format!("mujoco {} {} {frame}", v["version"], b.name);
             check(&label, errors(&read, "rh-z", "y", 1.0, &exact));

@@ -164,6 +164,24 @@ impl Read {
             inertia: rotation * diag * rotation.transpose(),
         }
     }
+
+    /// [`Read::principal`] of a JSON reader's fields: `mass` a number, `com` and `diagonal`
+    /// three numbers, `quaternion` four in `order` (the indices of w, x, y and z in it).
+    fn principal_json(
+        mass: &Value,
+        com: &Value,
+        diagonal: &Value,
+        quaternion: &Value,
+        order: [usize; 4],
+    ) -> Self {
+        let (c, d, q) = (floats(com), floats(diagonal), floats(quaternion));
+        Read::principal(
+            f(mass),
+            Vector3::new(c[0], c[1], c[2]),
+            quat(q[order[0]], q[order[1]], q[order[2]], q[order[3]]),
+            [d[0], d[1], d[2]],
+        )
+    }
 }
 
 /// Relative errors (mass, centre of mass, tensor) of `read` against `exact`, after taking it back

@@ -103,14 +103,12 @@ fn usd_core_reads_the_stage_as_the_same_body() {
         );
         assert_eq!(v["up_axis"], "Z");
         let read = |m: &Value| {
-            let q = floats(&m["principal_axes"]);
-            let c = floats(&m["center_of_mass"]);
-            let d = floats(&m["diagonal_inertia"]);
-            Read::principal(
-                f(&m["mass"]),
-                Vector3::new(c[0], c[1], c[2]),
-                quat(q[0], q[1], q[2], q[3]),
-                [d[0], d[1], d[2]],
+            Read::principal_json(
+                &m["mass"],
+                &m["center_of_mass"],
+                &m["diagonal_inertia"],
+                &m["principal_axes"],
+                [0, 1, 2, 3],
             )
         };
         let label = format!("usd-core {} {name} +{up} up", v["version"]);
@@ -149,14 +147,12 @@ fn the_glb_is_valid_gltf_and_its_node_holds_the_same_body() {
         let doc: Value = serde_json::from_slice(&bytes[20..20 + json_length]).expect("JSON chunk");
         assert_eq!(doc["extensionsUsed"][0], "KHR_physics_rigid_bodies");
         let motion = &doc["nodes"][0]["extensions"]["KHR_physics_rigid_bodies"]["motion"];
-        let q = floats(&motion["inertiaOrientation"]);
-        let c = floats(&motion["centerOfMass"]);
-        let d = floats(&motion["inertiaDiagonal"]);
-        let read = Read::principal(
-            f(&motion["mass"]),
-            Vector3::new(c[0], c[1], c[2]),
-            quat(q[3], q[0], q[1], q[2]),
-            [d[0], d[1], d[2]],
+        let read = Read::principal_json(
+            &motion["mass"],
+            &motion["centerOfMass"],
+            &motion["inertiaDiagonal"],
+            &motion["inertiaOrientation"],
+            [3, 0, 1, 2],
         );
         let label = format!("glb {name} +{up} up");
         check(&label, errors(&read, "rh-y", up, 1.0, &exact));
@@ -330,6 +326,31 @@ fn the_godot_scene_places_each_mesh_and_its_hull() {
         warned.contains("Godot 4 does not import") && warned.contains("bracket.stl"),
         "{warned}"
     );
+    // The test's meshes and scenes share the temporary folder: named relatively, no word; a
+    // mesh elsewhere is named by its absolute path, which Godot does not load, and said so.
+    let near = TempFile::new("near.tscn", b"");
+    let out = run(&[
+        "export",
+        b.file.path(),
+        "--format",
+        "godot-scene",
+        "-o",
+        near.path(),
+    ]);
+    let warned = String::from_utf8_lossy(&out.stderr);
+    assert!(!warned.contains("not under the scene's folder"), "{warned}");
+    let away = TempFile::new("away.tscn", b"");
+    let elsewhere = root().join("assets/t_handle.obj");
+    let out = run(&[
+        "export",
+        elsewhere.to_str().expect("utf-8"),
+        "--format",
+        "godot-scene",
+        "-o",
+        away.path(),
+    ]);
+    let warned = String::from_utf8_lossy(&out.stderr);
+    assert!(warned.contains("not under the scene's folder"), "{warned}");
 }
 
 /// The Unity script's class is its file's name, as Unity requires of a component.

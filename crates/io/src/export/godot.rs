@@ -112,6 +112,15 @@ pub fn scene(
             ));
             continue;
         };
+        let path = file.named_from(folder);
+        if Path::new(&path).is_absolute() {
+            warnings.push(format!(
+                "godot-scene: {} is not under the scene's folder, so the scene names it by its \
+                 absolute path, which Godot does not load from outside its project: write the \
+                 scene beside the mesh, or move the mesh under the scene's folder",
+                file.path.display()
+            ));
+        }
         let _ = writeln!(
             out,
             "[ext_resource type=\"{}\" path=\"{}\" id=\"mesh_{k}\"]",
@@ -119,7 +128,7 @@ pub fn scene(
                 Imported::Mesh => "ArrayMesh",
                 Imported::Scene => "PackedScene",
             },
-            text(&file.named_from(folder))
+            text(&path)
         );
     }
     let _ = writeln!(out);

@@ -228,9 +228,8 @@ fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<C
     ui.horizontal(|ui| {
         let hint = "Bake the motion from now on into a glTF (.glb) or USD (.usda) file with the \
                     mesh: keyframes of this simulation, for Blender, viewers and engines.";
-        if ui.button("Export motion").on_hover_text(hint).clicked()
-            && !state.motion_path.trim().is_empty()
-        {
+        let export = ui.button("Export motion").on_hover_text(hint);
+        if export.clicked() && !state.motion_path.trim().is_empty() {
             commands.push(Command::ExportMotion {
                 specimen: PRIMARY,
                 path: PathBuf::from(state.motion_path.trim()),
@@ -239,7 +238,8 @@ fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<C
             });
         }
         ui.add(egui::TextEdit::singleline(&mut state.motion_path).desired_width(110.0))
-            .on_hover_text("the file: .glb or .usda");
+            .on_hover_text("the file: .glb or .usda")
+            .labelled_by(export.id);
         if ui
             .add_enabled(!state.dialog_open, egui::Button::new("…"))
             .on_hover_text("choose where to save")
@@ -248,22 +248,22 @@ fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<C
             state.dialog_request = Some(DialogPurpose::SaveMotion);
         }
     });
-    ui.horizontal(|ui| {
-        ui.add(
-            egui::DragValue::new(&mut state.motion_seconds)
-                .range(0.1..=600.0)
-                .speed(0.5)
-                .suffix(" s"),
-        )
-        .on_hover_text("how many seconds to bake");
-        ui.add(
-            egui::DragValue::new(&mut state.motion_fps)
-                .range(1.0..=240.0)
-                .speed(1.0)
-                .suffix(" fps"),
-        )
-        .on_hover_text("keyframes a second");
-    });
+    number(
+        ui,
+        "Seconds baked",
+        &mut state.motion_seconds,
+        0.1..=600.0,
+        0.5,
+        " s",
+    );
+    number(
+        ui,
+        "Keyframes a second",
+        &mut state.motion_fps,
+        1.0..=240.0,
+        1.0,
+        " fps",
+    );
 }
 
 #[cfg(test)]
