@@ -1,5 +1,5 @@
 //! The fragment formats (json, urdf, sdf, mjcf, unity, godot, unreal, rapier, gltf, and the
-//! Godot and Unity whole files' numbers): parsed and rebuilt in the mesh frame; rapier, MuJoCo
+//! Godot, Unity and Unreal whole files' numbers): parsed and rebuilt in the mesh frame; rapier, MuJoCo
 //! and yourdfpy build them themselves.
 
 use super::*;
@@ -153,6 +153,17 @@ fn parse(format: &str, text: &str) -> Read {
                 [d[0], d[1], d[2]],
             )
         }
+        "unreal-script" => {
+            let q = numbers_after(text, "PRINCIPAL_AXES_XYZW = (");
+            let c = numbers_after(text, "CENTER_OF_MASS_CM = (");
+            let d = numbers_after(text, "PRINCIPAL_MOMENTS_KG_CM2 = (");
+            Read::principal(
+                line_number(text, "MASS_KG = "),
+                Vector3::new(c[0], c[1], c[2]),
+                quat(q[3], q[0], q[1], q[2]),
+                [d[0], d[1], d[2]],
+            )
+        }
         "rapier" => {
             let r = rapier_args(text);
             // The bevy_rapier3d literal carries the same values.
@@ -185,7 +196,7 @@ fn parse(format: &str, text: &str) -> Read {
 }
 
 /// (format, target frame name in [`target_to_mesh`], length unit of the target in metres).
-const FORMATS: [(&str, &str, f64); 11] = [
+const FORMATS: [(&str, &str, f64); 12] = [
     ("json", "mesh", 1.0),
     ("urdf", "rh-z", 1.0),
     ("sdf", "rh-z", 1.0),
@@ -197,6 +208,7 @@ const FORMATS: [(&str, &str, f64); 11] = [
     ("gltf", "rh-y", 1.0),
     ("godot-scene", "rh-y", 1.0),
     ("unity-script", "unity", 1.0),
+    ("unreal-script", "unreal", 0.01),
 ];
 
 #[test]
@@ -210,7 +222,12 @@ fn every_format_rebuilds_the_tensor_in_the_mesh_frame() {
                     for frame in ["com-principal", "origin"] {
                         let refused = matches!(
                             format,
-                            "unity" | "unity-script" | "unreal" | "rapier" | "gltf"
+                            "unity"
+                                | "unity-script"
+                                | "unreal"
+                                | "unreal-script"
+                                | "rapier"
+                                | "gltf"
                         ) && frame == "origin";
                         // Godot's body-axes diagonal drops products: checked separately.
                         let godot = matches!(format, "godot" | "godot-scene");

@@ -1,5 +1,8 @@
-//! The whole files (usd, glb, sdf-model, godot-scene, unity-script), opened by usd-core,
-//! Khronos' validator and libsdformat, or checked for the places they name.
+//! The whole files (usd, glb, sdf-model, godot-scene, unity-script, unreal-script), opened by
+//! usd-core, Khronos' validator and libsdformat, checked for the places they name, or (the
+//! Unreal editor script) run against a stand-in of Unreal's Python module.
+
+use serde_json::json;
 
 use super::*;
 
@@ -374,4 +377,167 @@ fn the_unity_script_is_named_after_its_file() {
         "{text}"
     );
     assert!(text.contains("[RequireComponent(typeof(Rigidbody))]"));
+}
+
+const UNREAL_STUB: Consumer = Consumer {
+    test: "the_unreal_script_gives_the_placed_mesh_its_equivalent_box",
+    script: "unreal_editor.py",
+    module: "json",
+    install: "apt-get install python3",
+};
+
+/// The name of the box the Unreal script adds.
+const EQUIVALENT_BOX: &str = "InertiaLab equivalent box";
+
+/// The Unreal editor script, run in a level of the stand-in `unreal` module (Unreal itself does
+/// not run here): on every placed component of its mesh (twice over) it leaves one box, out of
+/// collision, whose solid has the body's mass, centre and tensor in Unreal's frame; the mesh's
+/// own shapes still collide but no longer count; each component's mass is overridden and
+/// nothing else scales the inertia; another mesh's component is left alone. A mesh imported at
+/// another size (metres read as centimetres) or simulated as its complex collision is refused
+/// with the fix named and nothing changed; with actors selected, only theirs change.
+#[test]
+fn the_unreal_script_gives_the_placed_mesh_its_equivalent_box() {
+    if !UNREAL_STUB.available() {
+        return;
+    }
+    for Exported {
+        name,
+        up,
+        exact,
+        file,
+        bytes,
+    } in exported("unreal-script", "py")
+    {
+        let b = bodies()
+            .into_iter()
+            .find(|b| b.name == name)
+            .expect("a body");
+        let text = String::from_utf8(bytes).expect("text");
+        // Unreal names the imported mesh after its file: the exported OBJ's stem.
+        let mesh = text
+            .lines()
+            .find_map(|l| l.strip_prefix("MESH_NAME = \""))
+            .and_then(|l| l.strip_suffix('"'))
+            .expect("the mesh's name")
+            .to_owned();
+        assert!(mesh.ends_with(&format!("-{name}")), "{mesh}");
+        // The mesh as Unreal imports it: in its axes, in centimetres.
+        let to_unreal = target_to_mesh("unreal", up).transpose();
+        let (mut lo, mut hi) = (
+            Vector3::repeat(f64::INFINITY),
+            Vector3::repeat(-f64::INFINITY),
+        );
+        for p in &b.mesh.positions {
+            let q = to_unreal * p.coords * (b.metres * 100.0);
+            lo = lo.inf(&q);
+            hi = hi.sup(&q);
+        }
+        let bounds = |s: f64| json!([(lo * s).as_slice(), (hi * s).as_slice()]);
+        let run = |meshes: Value, actors: Value| {
+            let level = TempFile::new(
+                "level.json",
+                json!({"meshes": meshes, "actors": actors, "runs": 2})
+                    .to_string()
+                    .as_bytes(),
+            );
+            UNREAL_STUB.read_with(file.path(), &[level.path()])
+        };
+        let errors_in = |v: &Value| -> Vec<String> {
+            v["log"]
+                .as_array()
+                .expect("a log")
+                .iter()
+                .filter(|l| l[0] == "error")
+                .map(|l| l[1].as_str().expect("text").to_owned())
+                .collect()
+        };
+        let v = run(
+            json!([{"name": mesh, "bounds": bounds(1.0)}, {"name": "other", "bounds": bounds(1.0)}]),
+            json!([
+                {"name": "A", "mesh": mesh},
+                {"name": "B", "mesh": mesh, "scale": [2.0, 2.0, 2.0]},
+                {"name": "C", "mesh": "other"},
+            ]),
+        );
+        assert!(errors_in(&v).is_empty(), "{v}");
+        let shapes = &v["meshes"][mesh.as_str()];
+        let boxes = shapes["boxes"].as_array().expect("boxes");
+        assert_eq!(boxes.len(), 1, "one box after two runs: {v}");
+        let a = &boxes[0];
+        assert_eq!(a["name"], EQUIVALENT_BOX);
+        assert_eq!(a["collision"], "NO_COLLISION");
+        assert_eq!(a["contribute_to_mass"], true);
+        for hull in shapes["convex"].as_array().expect("hulls") {
+            assert_eq!(hull["collision"], "QUERY_AND_PHYSICS", "{v}");
+            assert_eq!(hull["contribute_to_mass"], false, "{v}");
+        }
+        // A solid box: moments m(b² + c²)/12 about its centre, along its turned axes.
+        let m = f(&v["bodies"]["A"]["mass_in_kg_override"]);
+        let e = floats(&a["edges"]);
+        let moments = [
+            m * (e[1] * e[1] + e[2] * e[2]) / 12.0,
+            m * (e[0] * e[0] + e[2] * e[2]) / 12.0,
+            m * (e[0] * e[0] + e[1] * e[1]) / 12.0,
+        ];
+        let q = floats(&a["xyzw"]);
+        let c = floats(&a["center"]);
+        let read = Read::principal(
+            m,
+            Vector3::new(c[0], c[1], c[2]),
+            quat(q[3], q[0], q[1], q[2]),
+            moments,
+        );
+        let label = format!("{name} up {up} unreal-script's equivalent box");
+        check(&label, errors(&read, "unreal", up, 0.01, &exact));
+        for actor in ["A", "B"] {
+            let body = &v["bodies"][actor];
+            assert_eq!(body["override_mass"], true);
+            assert_eq!(f(&body["mass_in_kg_override"]), m);
+            assert_eq!(body["inertia_conditioning"], false);
+            assert_eq!(floats(&body["com_nudge"]), [0.0; 3]);
+            assert_eq!(floats(&body["inertia_tensor_scale"]), [1.0; 3]);
+        }
+        assert_eq!(v["bodies"]["C"]["override_mass"], false);
+        assert!(
+            v["meshes"]["other"]["boxes"]
+                .as_array()
+                .expect("boxes")
+                .is_empty()
+        );
+
+        // Imported in metres as if centimetres: refused, and how to reimport said.
+        let v = run(
+            json!([{"name": mesh, "bounds": bounds(0.01)}]),
+            json!([{"name": "A", "mesh": mesh}]),
+        );
+        let said = errors_in(&v);
+        assert!(said.iter().any(|e| e.contains("Uniform Scale 100")), "{v}");
+        assert!(
+            v["meshes"][mesh.as_str()]["boxes"]
+                .as_array()
+                .expect("boxes")
+                .is_empty()
+        );
+        assert_eq!(v["bodies"]["A"]["override_mass"], false);
+        // Complex collision as simple: refused.
+        let v = run(
+            json!([{"name": mesh, "bounds": bounds(1.0), "trace": "CTF_USE_COMPLEX_AS_SIMPLE"}]),
+            json!([{"name": "A", "mesh": mesh}]),
+        );
+        let said = errors_in(&v);
+        assert!(
+            said.iter()
+                .any(|e| e.contains("Use Complex Collision As Simple")),
+            "{v}"
+        );
+        assert_eq!(v["bodies"]["A"]["override_mass"], false);
+        // With actors selected, only theirs.
+        let v = run(
+            json!([{"name": mesh, "bounds": bounds(1.0)}]),
+            json!([{"name": "A", "mesh": mesh, "selected": true}, {"name": "B", "mesh": mesh}]),
+        );
+        assert_eq!(v["bodies"]["A"]["override_mass"], true, "{v}");
+        assert_eq!(v["bodies"]["B"]["override_mass"], false, "{v}");
+    }
 }

@@ -75,7 +75,7 @@ mod tests {
         round_trips::<Format>();
         round_trips::<Frame>();
         round_trips::<UpAxis>();
-        assert_eq!(Format::ALL.len(), 14);
+        assert_eq!(Format::ALL.len(), 15);
     }
 
     #[test]

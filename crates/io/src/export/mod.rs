@@ -20,14 +20,15 @@
 //! | `sdf-model` | as `sdf`: a whole `<model>`, meshes by `<uri>` | m, kg, kg·m² | as `sdf` | SDFormat 1.9 |
 //! | `godot-scene` | as `godot`: a whole `.tscn`, meshes by path, a convex hull | m, kg, kg·m² | as `godot` | Godot 4 text scene format 3 |
 //! | `unity-script` | as `unity`: a whole `MonoBehaviour` | m, kg, kg·m² | as `unity` | Unity `Rigidbody` |
+//! | `unreal-script` | as `unreal`: a whole editor Python script | cm, kg, kg·cm² | `unreal.Quat(x, y, z, w)` of the equivalent box | Unreal Python API, Chaos mass properties |
 //!
 //! Every target takes the inertia about the centre of mass; "frame" only chooses its axes:
 //! [`Frame::ComPrincipal`] writes the principal moments and the rotation to the principal axes,
 //! [`Frame::Origin`] the full tensor in the mesh's own axes (URDF, SDF, MJCF), or for Godot,
 //! which has no inertia rotation, the diagonal in body axes.
 //!
-//! `glb`, `usd`, `sdf-model` and `godot-scene` are whole files, which carry the body's
-//! [`Surface`] too (`unity-script` is a whole file that needs none):
+//! `glb`, `usd`, `sdf-model`, `godot-scene` and `unreal-script` are whole files, which carry
+//! the body's [`Surface`] too (`unity-script` is a whole file that needs none):
 //! [`export_file`] writes them (and every other format); [`export`] the fragments alone.
 
 mod frames;
@@ -86,6 +87,9 @@ pub enum Format {
     GodotScene,
     /// A whole Unity C# script: a component that sets its object's `Rigidbody`.
     UnityScript,
+    /// A whole Unreal editor Python script: gives a placed static mesh the body's mass
+    /// properties through its equivalent box.
+    UnrealScript,
 }
 
 impl Choice for Format {
@@ -105,6 +109,7 @@ impl Choice for Format {
         Format::SdfModel,
         Format::GodotScene,
         Format::UnityScript,
+        Format::UnrealScript,
     ];
 
     fn name(self) -> &'static str {
@@ -123,6 +128,7 @@ impl Choice for Format {
             Format::SdfModel => "sdf-model",
             Format::GodotScene => "godot-scene",
             Format::UnityScript => "unity-script",
+            Format::UnrealScript => "unreal-script",
         }
     }
 
@@ -154,6 +160,10 @@ impl Choice for Format {
             Format::UnityScript => {
                 "A whole Unity C# script (.cs): a component that sets its object's `Rigidbody`"
             }
+            Format::UnrealScript => {
+                "A whole Unreal editor Python script (.py): gives the placed static mesh the \
+                 body's mass properties"
+            }
         }
     }
 }
@@ -170,7 +180,7 @@ impl Format {
             Format::Godot | Format::GodotScene | Format::Rapier | Format::Gltf | Format::Glb => {
                 (Axes::RightYUp, LengthUnit::M)
             }
-            Format::Unreal => (Axes::UnrealLeftZUp, LengthUnit::Cm),
+            Format::Unreal | Format::UnrealScript => (Axes::UnrealLeftZUp, LengthUnit::Cm),
         }
     }
 
@@ -188,6 +198,7 @@ impl Format {
             Format::Unity
             | Format::UnityScript
             | Format::Unreal
+            | Format::UnrealScript
             | Format::Rapier
             | Format::Gltf
             | Format::Glb
@@ -200,7 +211,11 @@ impl Format {
     pub fn is_whole_file(self) -> bool {
         matches!(
             self,
-            Format::Glb | Format::Usd | Format::SdfModel | Format::GodotScene
+            Format::Glb
+                | Format::Usd
+                | Format::SdfModel
+                | Format::GodotScene
+                | Format::UnrealScript
         )
     }
 }
@@ -433,6 +448,10 @@ fn write(
         // C# class names are identifiers.
         Format::UnityScript => {
             unity::script(&body, &identifier(geometry.map_or("Body", |g| g.name)))
+        }
+        Format::UnrealScript => {
+            let g = whole(Format::UnrealScript)?;
+            unreal::script(&body, g.surface, g.name, &mut warnings)
         }
     };
     Ok(ExportOutput {
