@@ -111,6 +111,16 @@ pub enum Command {
     RemovePart(usize),
     /// Write the body as a body file (and, beside it, the meshes of parts that have no file).
     SaveBody(PathBuf),
+    /// Open a lesson at its first step (the one open before is left).
+    OpenLesson(super::lessons::LessonSource),
+    /// Commit to choice N of the present step's prediction (its checks start counting).
+    Predict(usize),
+    /// The next step of the lesson, once this one is done.
+    NextStep,
+    /// The step before, set up again.
+    PreviousStep,
+    /// Leave the lesson (its progress is kept).
+    CloseLesson,
     /// Show link N of the loaded robot description as the body (its stated inertia available
     /// as the "stated" source), or the whole robot at its zero pose for `None`.
     ShowLink(Option<usize>),

@@ -18,6 +18,12 @@ pub enum LabError {
     /// A file that gives no body through the one input path.
     #[error(transparent)]
     Input(#[from] inertia_io::input::InputError),
+    /// A lesson that cannot be read or found.
+    #[error(transparent)]
+    Lesson(#[from] super::lessons::LessonError),
+    /// A lesson command that does not fit where the lesson is.
+    #[error("{0}")]
+    LessonStep(&'static str),
     /// A mesh or body named for the message (a file name, a sample's label, a body's name).
     #[error("{name}: {source}")]
     Named {

@@ -18,6 +18,7 @@ mod editing;
 mod error;
 pub mod geometry;
 pub mod history;
+pub mod lessons;
 mod links;
 pub mod loader;
 pub mod parts;
@@ -27,6 +28,7 @@ pub mod robot;
 pub mod samples;
 pub mod settings;
 pub mod specimen;
+mod teaching;
 #[cfg(test)]
 mod tests;
 
@@ -74,6 +76,10 @@ pub struct Lab {
     /// The robot description loaded last, while its links are what is shown.
     robot: Option<RobotModel>,
     message: Option<Message>,
+    /// The lesson open, if any.
+    lesson: Option<lessons::LessonRun>,
+    /// For each lesson (by id), how many of its steps were done, the most ever.
+    lesson_progress: std::collections::BTreeMap<String, usize>,
     /// Bumped whenever what is drawn of the body changes (a new body, a part moved, shown or
     /// hidden), so the 3D view uploads it again; an edit of masses alone leaves it.
     generation: u64,
@@ -120,6 +126,8 @@ impl Lab {
             loading: None,
             robot: None,
             message: None,
+            lesson: None,
+            lesson_progress: std::collections::BTreeMap::new(),
             generation: 0,
             waker: Waker(Arc::new(|| {})),
         })
@@ -142,6 +150,7 @@ impl Lab {
         if let Err(e) = self.try_apply(command) {
             self.message = Some(Message::error(&e));
         }
+        self.update_lesson();
     }
 
     /// Carries out one command, or says why it could not (nothing changed then).
@@ -150,7 +159,7 @@ impl Lab {
     /// The command's own failure: a file that does not load, a part the body does not have, a
     /// setting the simulation refuses, ….
     pub fn try_apply(&mut self, command: Command) -> Result<(), LabError> {
-        match command {
+        match teaching::lesson_opened(command) {
             Command::TogglePause => {
                 self.run_mode = match self.run_mode {
                     RunMode::Running => RunMode::Paused,
@@ -261,6 +270,11 @@ impl Lab {
             Command::RemovePart(index) => self.remove_part(index)?,
             Command::SaveBody(path) => self.save_body(&path)?,
             Command::ShowLink(link) => self.show_link(link)?,
+            Command::OpenLesson(source) => self.open_lesson(&source)?,
+            Command::Predict(choice) => self.predict(choice)?,
+            Command::NextStep => self.next_step()?,
+            Command::PreviousStep => self.previous_step()?,
+            Command::CloseLesson => self.lesson = None,
         }
         Ok(())
     }
@@ -424,6 +438,7 @@ impl Lab {
             self.run_mode = RunMode::Paused;
             self.message = Some(Message::error(&e));
         }
+        self.update_lesson();
     }
 
     /// Runs `seconds` of simulated time at once (every step recorded), in pieces of the
@@ -530,6 +545,10 @@ impl Lab {
             .iter_mut()
             .find(|s| s.id() == id)
             .ok_or(LabError::NoSpecimen(id.0))
+    }
+    /// The principal axis (0, 1, 2; moments ascending) the body was last spun about.
+    pub fn preset_axis(&self) -> usize {
+        self.preset_axis
     }
     /// Whether time runs or stands still (for every specimen).
     pub fn run_mode(&self) -> RunMode {

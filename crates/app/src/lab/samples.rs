@@ -65,3 +65,12 @@ pub const SAMPLE_PART_MESHES: [(&str, &str); 1] = [(
     "hollow_box.obj",
     include_str!("../../../../assets/hollow_box.obj"),
 )];
+
+/// Every sample's label: the meshes, then the bodies of parts.
+pub fn labels() -> Vec<&'static str> {
+    SAMPLES
+        .iter()
+        .map(|(label, ..)| *label)
+        .chain(SAMPLE_BODIES.iter().map(|(label, ..)| *label))
+        .collect()
+}

@@ -105,6 +105,15 @@ pub struct StringView {
     pub force: Vector3<f64>,
 }
 
+/// What a poke did to the angular momentum about the centre of mass (world axes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PokeEffect {
+    /// L after the poke less L before.
+    pub measured: Vector3<f64>,
+    /// r × J: the impulse's moment about the centre of mass.
+    pub predicted: Vector3<f64>,
+}
+
 /// One simulated body.
 #[derive(Debug, Clone)]
 pub struct Specimen {
@@ -119,6 +128,9 @@ pub struct Specimen {
     sim: Simulation,
     history: History,
     poke: Option<PokeFlash>,
+    /// How many pokes since the start, and what the last one did to L.
+    pokes: u64,
+    last_poke: Option<PokeEffect>,
     /// Simulated time the frames asked for but the catch-up cap did not run, since the start.
     dropped: f64,
     /// E and L drift since the start or the last disturbance (every step observed).
@@ -171,6 +183,8 @@ impl Specimen {
             sim,
             history,
             poke: None,
+            pokes: 0,
+            last_poke: None,
             dropped: 0.0,
             drift: DriftTracker::new(&d0),
         })
@@ -316,10 +330,16 @@ impl Specimen {
         }
         let j = direction * (magnitude / n);
         let r = point - self.sim.body().position();
+        let before = self.sim.body().angular_momentum();
         self.sim.poke(&point, &j).map_err(|source| LabError::Body {
             what: "poke",
             source,
         })?;
+        self.pokes += 1;
+        self.last_poke = Some(PokeEffect {
+            measured: self.sim.body().angular_momentum() - before,
+            predicted: r.cross(&j),
+        });
         self.poke = Some(PokeFlash {
             point,
             impulse: j,
@@ -469,6 +489,14 @@ impl Specimen {
             } if separation.is_finite() && self.cone_angle() >= TURNING_OVER => Some(period / 2.0),
             _ => None,
         }
+    }
+    /// How many pokes since the specimen started.
+    pub fn pokes(&self) -> u64 {
+        self.pokes
+    }
+    /// What the last poke did to L.
+    pub fn last_poke(&self) -> Option<PokeEffect> {
+        self.last_poke
     }
     /// The current poke flash.
     pub fn poke_flash(&self) -> Option<PokeFlash> {

@@ -53,6 +53,7 @@ pub mod compare;
 pub mod diagnostics;
 pub mod help;
 pub mod interaction;
+pub mod lessons;
 pub mod motion;
 pub mod parts;
 pub mod plots;

@@ -5,6 +5,7 @@ use super::body::BodySection;
 use super::compare::CompareSection;
 use super::diagnostics::DiagnosticsSection;
 use super::interaction::InteractionSection;
+use super::lessons::LessonsSection;
 use super::motion::MotionSection;
 use super::parts::PartsSection;
 use super::robot::RobotSection;
@@ -21,6 +22,7 @@ impl Default for SidePanel {
     fn default() -> Self {
         Self {
             sections: vec![
+                Box::new(LessonsSection::default()),
                 Box::new(BodySection),
                 Box::new(RobotSection),
                 Box::new(TableSection),

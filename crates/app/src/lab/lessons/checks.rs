@@ -1,0 +1,318 @@
+//! A lesson's checks, evaluated from the lab's state against a [`Snapshot`] taken when the step
+//! began. Each returns whether it holds and, where something was measured, what (in words the
+//! panel shows beside the check).
+
+use nalgebra::{Matrix3, Point3};
+
+use super::{Check, Model, Source};
+use crate::lab::Lab;
+use crate::lab::settings::InertiaSource;
+
+/// Relative agreement asked of the parallel-axis theorem and of r × J: both are identities of
+/// the lab's own arithmetic, so anything above rounding is a bug.
+const IDENTITY: f64 = 1e-9;
+
+/// One check's state.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct CheckState {
+    /// It held (once held, it stays held for the step).
+    pub met: bool,
+    /// What was measured, when the check measures something.
+    pub finding: Option<String>,
+}
+
+/// What a step's checks compare with: the lab when the step began.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Snapshot {
+    /// Simulated time.
+    pub time: f64,
+    /// The body's name.
+    pub body: String,
+    /// Each part's mass and centre of mass (body coordinates, scale 1).
+    parts: Vec<PartPlace>,
+    /// The whole body's tensor about its origin (scale 1), when it has parts.
+    inertia_origin: Option<Matrix3<f64>>,
+    /// How many pokes the primary had had.
+    pokes: u64,
+    /// Reversals of ω₂ counted so far in this step, and the last one seen.
+    pub(crate) reversals: usize,
+    last_reversal: Option<f64>,
+    /// When the spin, model or source last changed, or a poke happened (simulated time).
+    changed_at: f64,
+    /// When the last reversal counted happened.
+    reversal_at: f64,
+    /// What that was measured against: (preset axis, model, source, pokes).
+    state: (usize, Model, Source, u64),
+    /// Simulated time at the last look (a restart sets the clock back).
+    seen: f64,
+}
+
+fn lesson_source(source: InertiaSource) -> Source {
+    match source {
+        InertiaSource::BoundingBox => Source::BoundingBox,
+        InertiaSource::PointMasses => Source::PointMasses,
+        InertiaSource::Exact | InertiaSource::Stated => Source::Exact,
+    }
+}
+
+fn lesson_model(lab: &Lab) -> Model {
+    match lab.settings().physics.model {
+        rbcore::RotationModel::Textbook => Model::Textbook,
+        _ => Model::Full,
+    }
+}
+
+/// A part's mass and centre of mass (body coordinates, scale 1).
+type PartPlace = (f64, Point3<f64>);
+
+/// The whole body's parts (mass, centre) and tensor about the origin, at scale 1.
+fn composition(lab: &Lab) -> (Vec<PartPlace>, Option<Matrix3<f64>>) {
+    let Some(c) = &lab.primary().body().composition else {
+        return (Vec::new(), None);
+    };
+    let parts = c
+        .parts
+        .iter()
+        .filter_map(|p| p.mass().ok())
+        .map(|m| (m.mass, m.center_of_mass))
+        .collect();
+    (
+        parts,
+        Some(about_origin(
+            c.whole.mass,
+            &c.whole.center_of_mass,
+            &c.whole.inertia_com,
+        )),
+    )
+}
+
+/// `inertia_com` of `mass` at `center` moved to the origin (the parallel-axis theorem).
+fn about_origin(mass: f64, center: &Point3<f64>, inertia_com: &Matrix3<f64>) -> Matrix3<f64> {
+    let c = center.coords;
+    inertia_com + mass * (Matrix3::identity() * c.dot(&c) - c * c.transpose())
+}
+
+impl Snapshot {
+    /// The lab now.
+    pub fn of(lab: &Lab) -> Self {
+        let (parts, inertia_origin) = composition(lab);
+        let s = lab.primary();
+        let time = s.sim().time();
+        Self {
+            time,
+            body: s.body().name.clone(),
+            parts,
+            inertia_origin,
+            pokes: s.pokes(),
+            reversals: 0,
+            last_reversal: s.history().last_reversal(),
+            changed_at: time,
+            reversal_at: time,
+            state: state(lab),
+            seen: time,
+        }
+    }
+
+    /// Counts a reversal of ω₂ that happened since the last look, and notes a change of spin,
+    /// model, source or a poke (the start of a quiet stretch).
+    pub(crate) fn observe(&mut self, lab: &Lab) {
+        let s = lab.primary();
+        let now = s.sim().time();
+        if now < self.seen {
+            // A new spin or body started the clock again: measure from its start, keeping what
+            // was counted.
+            self.time = now;
+            self.pokes = s.pokes();
+            self.last_reversal = None;
+            self.changed_at = now;
+            self.reversal_at = now;
+        }
+        self.seen = now;
+        let last = s.history().last_reversal();
+        // ω₂ also crosses zero in the small wobble of a stable spin: a reversal counts only
+        // while the body turns over.
+        if let Some(t) = last
+            && t > self.time
+            && self.last_reversal.is_none_or(|seen| t > seen)
+            && s.turn_over_interval().is_some()
+        {
+            self.reversals += 1;
+            self.reversal_at = t;
+        }
+        self.last_reversal = last;
+        let changed = state(lab);
+        if changed != self.state {
+            self.state = changed;
+            self.changed_at = now;
+        }
+    }
+}
+
+fn state(lab: &Lab) -> (usize, Model, Source, u64) {
+    (
+        lab.preset_axis(),
+        lesson_model(lab),
+        lesson_source(lab.settings().body.source),
+        lab.primary().pokes(),
+    )
+}
+
+impl Check {
+    /// Whether the check holds now, against `snapshot`.
+    pub fn evaluate(&self, lab: &Lab, snapshot: &Snapshot) -> CheckState {
+        let s = lab.primary();
+        let now = s.sim().time();
+        let met = |met: bool| CheckState { met, finding: None };
+        match self {
+            Check::Sample { label } => met(&s.body().name == label),
+            // Not a sample, nor the T-handle the lab starts with.
+            Check::OwnMesh => {
+                let name = s.body().name.as_str();
+                met(!crate::lab::samples::labels().contains(&name) && name != "T-handle")
+            }
+            Check::Source { source } => met(lesson_source(lab.settings().body.source) == *source),
+            Check::Model { model } => met(lesson_model(lab) == *model),
+            Check::SpinAxis { axis } => met(lab.preset_axis() + 1 == *axis),
+            Check::Reversals { at_least } => CheckState {
+                met: snapshot.reversals >= *at_least,
+                finding: Some(format!(
+                    "{} of {at_least} reversals of ω₂ measured",
+                    snapshot.reversals.min(*at_least)
+                )),
+            },
+            Check::NoReversalFor { seconds } => {
+                let quiet = now - snapshot.changed_at.max(snapshot.reversal_at);
+                CheckState {
+                    met: quiet >= *seconds,
+                    finding: Some(format!(
+                        "{:.1} of {seconds:.0} s without a reversal",
+                        quiet.min(*seconds)
+                    )),
+                }
+            }
+            Check::MeasuredHalfPeriod { tolerance } => {
+                match (s.history().flip_interval(), s.turn_over_interval()) {
+                    (Some(measured), Some(predicted)) if snapshot.reversals >= 2 => {
+                        let off = (measured - predicted).abs() / predicted;
+                        CheckState {
+                            met: off <= *tolerance,
+                            finding: Some(format!(
+                                "measured {measured:.2} s between reversals, predicted \
+                                 {predicted:.2} s ({:.1} % apart)",
+                                off * 100.0
+                            )),
+                        }
+                    }
+                    _ => met(false),
+                }
+            }
+            Check::FlipPeriod { seconds, tolerance } => match s.turn_over_interval() {
+                Some(half) => {
+                    let period = 2.0 * half;
+                    CheckState {
+                        met: (period - seconds).abs() <= tolerance * seconds,
+                        finding: Some(format!(
+                            "predicted flip period {period:.2} s (target {seconds} s ± {:.0} %)",
+                            tolerance * 100.0
+                        )),
+                    }
+                }
+                None => CheckState {
+                    met: false,
+                    finding: Some("it does not flip now".to_owned()),
+                },
+            },
+            Check::MomentsEqual { tolerance } => {
+                let m = s.sim().body().moments();
+                let closest = (m[1] - m[0]).min(m[2] - m[1]).abs() / m[2];
+                CheckState {
+                    met: closest <= *tolerance,
+                    finding: Some(format!(
+                        "the two closest moments are {:.1} % apart",
+                        closest * 100.0
+                    )),
+                }
+            }
+            Check::Poked => match s.last_poke() {
+                Some(p) if s.pokes() > snapshot.pokes => {
+                    let off = (p.measured - p.predicted).norm() / p.predicted.norm().max(1e-300);
+                    CheckState {
+                        met: off <= IDENTITY,
+                        finding: Some(format!(
+                            "ΔL = {:.3e} kg·m²/s, r × J = {:.3e} kg·m²/s",
+                            p.measured.norm(),
+                            p.predicted.norm()
+                        )),
+                    }
+                }
+                _ => met(false),
+            },
+            Check::Conserved { seconds, tolerance } => {
+                let quiet = now - snapshot.changed_at.max(s.history().disturbed_at());
+                let drift = s.history().energy_drift().map_or(0.0, |(_, max)| max);
+                CheckState {
+                    met: quiet >= *seconds && drift <= *tolerance,
+                    finding: Some(format!(
+                        "{:.1} of {seconds:.0} s; energy held to {drift:.1e}",
+                        quiet.clamp(0.0, *seconds)
+                    )),
+                }
+            }
+            Check::Elapsed { seconds } => {
+                let passed = now - snapshot.time;
+                CheckState {
+                    met: passed >= *seconds,
+                    finding: Some(format!(
+                        "{:.1} of {seconds:.0} s",
+                        passed.clamp(0.0, *seconds)
+                    )),
+                }
+            }
+            Check::Parts { at_least } => {
+                let n = s.body().composition.as_ref().map_or(1, |c| c.parts.len());
+                CheckState {
+                    met: n >= *at_least,
+                    finding: Some(format!("{n} part{}", if n == 1 { "" } else { "s" })),
+                }
+            }
+            Check::PartMoved { distance } => part_moved(lab, snapshot, *distance),
+        }
+    }
+}
+
+/// [`Check::PartMoved`]: one part moved by `distance` or more, the rest stayed, and the
+/// tensor about the origin changed by exactly m(|p₁|² − |p₀|²)E − m(p₁p₁ᵀ − p₀p₀ᵀ).
+fn part_moved(lab: &Lab, snapshot: &Snapshot, distance: f64) -> CheckState {
+    let (parts, inertia) = composition(lab);
+    let (Some(before), Some(after)) = (&snapshot.inertia_origin, inertia) else {
+        return CheckState::default();
+    };
+    if parts.len() != snapshot.parts.len() {
+        return CheckState::default();
+    }
+    let moved: Vec<usize> = (0..parts.len())
+        .filter(|&k| (parts[k].1 - snapshot.parts[k].1).norm() > 1e-12)
+        .collect();
+    let &[k] = moved.as_slice() else {
+        return CheckState::default();
+    };
+    let (m, p1) = parts[k];
+    let (m0, p0) = snapshot.parts[k];
+    let d = (p1 - p0).norm();
+    if (m - m0).abs() > IDENTITY * m.abs() {
+        return CheckState::default();
+    }
+    let shift = |p: &Point3<f64>| about_origin(m, p, &Matrix3::zeros());
+    let predicted = shift(&p1) - shift(&p0);
+    let measured = after - before;
+    let off = (measured - predicted).amax() / before.amax();
+    CheckState {
+        met: d >= distance && off <= IDENTITY,
+        finding: Some(format!(
+            "a part of {m:.3} kg moved {d:.3} m; the tensor about the origin changed by \
+             {:.4e} kg·m² at most, the parallel-axis theorem says {:.4e}",
+            measured.amax(),
+            predicted.amax()
+        )),
+    }
+}
