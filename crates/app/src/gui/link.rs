@@ -1,30 +1,80 @@
 //! A scene named by a link: the query string of the page's address, as the lab's commands, so
 //! that a teacher can send students straight to the racket spinning about its middle axis
-//! beside its bounding-box copy (`?sample=tennis_racket&spin=2&compare=bbox`). docs/web.md lists
-//! the keys.
+//! beside its bounding-box copy (`?sample=tennis_racket&spin=2&compare=bbox`), or into a
+//! lesson's third step (`?lesson=racket-flip&step=2`). [`share`] writes the link of the scene
+//! shown. docs/web.md lists the keys.
 
+use rbcore::RotationModel;
+
+use crate::lab::lessons::LessonSource;
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
-use crate::lab::settings::InertiaSource;
-use crate::lab::{Command, MAX_COPIES, Variant};
+use crate::lab::settings::{AppSettings, InertiaSource, MassGiven};
+use crate::lab::{Command, Lab, MAX_COPIES, Variant};
 
 /// The keys a link may give.
-pub const KEYS: [&str; 4] = ["sample", "spin", "compare", "bench"];
+pub const KEYS: [&str; 13] = [
+    "sample", "spin", "compare", "source", "model", "size", "density", "mass", "rate", "lesson",
+    "step", "embed", "bench",
+];
 
 /// What a link asks for.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct LinkScene {
-    /// The lab's commands, in order: the body, its spin, the comparison.
+    /// The lab's commands, in order: the body, its spin, the comparison, the lesson.
     pub commands: Vec<Command>,
+    /// Settings the link changes (applied to the saved ones before the lab starts).
+    pub settings: Tweaks,
+    /// `embed=1`: the 3D view, the plots and the lesson only (for an iframe).
+    pub embed: bool,
     /// `bench=N`: measure N frames and print the table to the console.
     pub bench_frames: Option<usize>,
     /// Each key or value that was not understood, in words; the rest still applies.
     pub problems: Vec<String>,
 }
 
+/// The settings a link changes; each left out keeps the user's own.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Tweaks {
+    /// `source=`: the inertia the simulation uses.
+    pub source: Option<InertiaSource>,
+    /// `model=`: full or textbook.
+    pub model: Option<RotationModel>,
+    /// `size=`: the uniform scale.
+    pub scale: Option<f64>,
+    /// `density=` or `mass=`.
+    pub mass: Option<MassGiven>,
+    /// `rate=`: the presets' spin rate (rad/s).
+    pub spin_rate: Option<f64>,
+}
+
+impl Tweaks {
+    /// `settings` with the link's changes.
+    pub fn apply(&self, mut settings: AppSettings) -> AppSettings {
+        let b = &mut settings.body;
+        b.source = self.source.unwrap_or(b.source);
+        b.scale = self.scale.unwrap_or(b.scale);
+        b.mass = self.mass.unwrap_or(b.mass);
+        b.spin_rate = self.spin_rate.unwrap_or(b.spin_rate);
+        if let Some(model) = self.model {
+            settings.physics.model = model;
+        }
+        settings
+    }
+}
+
+/// A positive finite number, or the problem in words.
+fn positive(key: &str, value: &str, unit: &str) -> Result<f64, String> {
+    match value.parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        _ => Err(format!("{key}={value}: give a positive number{unit}")),
+    }
+}
+
 /// The scene of a query string (with or without its leading `?`).
 pub fn parse(query: &str) -> LinkScene {
     let mut scene = LinkScene::default();
     let (mut body, mut spin, mut compare) = (None, None, None);
+    let (mut lesson, mut step) = (None, None);
     for pair in query.trim_start_matches('?').split('&') {
         if pair.is_empty() {
             continue;
@@ -43,6 +93,41 @@ pub fn parse(query: &str) -> LinkScene {
                 )),
             },
             "compare" => variants(&value).map(|v| compare = Some(v)),
+            "source" => match value.as_str() {
+                "exact" => Ok(InertiaSource::Exact),
+                "bbox" => Ok(InertiaSource::BoundingBox),
+                "points" => Ok(InertiaSource::PointMasses),
+                _ => Err(format!("source={value}: exact, bbox or points")),
+            }
+            .map(|s| scene.settings.source = Some(s)),
+            "model" => match value.as_str() {
+                "full" => Ok(RotationModel::Full),
+                "textbook" => Ok(RotationModel::Textbook),
+                _ => Err(format!("model={value}: full or textbook")),
+            }
+            .map(|m| scene.settings.model = Some(m)),
+            "size" => positive(&key, &value, "").map(|v| scene.settings.scale = Some(v)),
+            "density" => positive(&key, &value, " of kg/m³")
+                .map(|v| scene.settings.mass = Some(MassGiven::Density(v))),
+            "mass" => positive(&key, &value, " of kg")
+                .map(|v| scene.settings.mass = Some(MassGiven::Mass(v))),
+            "rate" => {
+                positive(&key, &value, " of rad/s").map(|v| scene.settings.spin_rate = Some(v))
+            }
+            "lesson" => crate::lab::lessons::find(&value)
+                .map(|l| lesson = Some(l.id.clone()))
+                .map_err(|e| format!("lesson={value}: {e}")),
+            "step" => match value.parse::<usize>() {
+                Ok(k) if k >= 1 => {
+                    step = Some(k - 1);
+                    Ok(())
+                }
+                _ => Err(format!("step={value}: the lesson's step, from 1")),
+            },
+            "embed" => {
+                scene.embed = value != "0";
+                Ok(())
+            }
             "bench" => match value.parse::<usize>() {
                 Ok(n) if n > 0 => {
                     scene.bench_frames = Some(n);
@@ -61,10 +146,97 @@ pub fn parse(query: &str) -> LinkScene {
             scene.problems.push(problem);
         }
     }
+    // The lesson first: its step sets the lab up, and the link's own body and spin then win.
+    if let Some(id) = lesson {
+        scene
+            .commands
+            .push(Command::OpenLesson(LessonSource::BuiltIn(id)));
+        scene.commands.extend(step.map(Command::GoToStep));
+    } else if step.is_some() {
+        scene.problems.push("step= needs lesson=".to_owned());
+    }
     scene.commands.extend(body.map(Command::LoadSample));
     scene.commands.extend(spin.map(Command::Preset));
     scene.commands.extend(compare.map(Command::Compare));
     scene
+}
+
+/// The query (`?…`) of a link that opens the scene shown: the sample, its size and mass, the
+/// inertia source, the model, the spin and its rate, the comparison, the lesson and its step.
+///
+/// # Errors
+/// The body is not a sample (a file of the user's cannot travel in a link), in words.
+pub fn share(lab: &Lab) -> Result<String, String> {
+    let name = &lab.primary().body().name;
+    let Some((_, file, _)) = SAMPLES
+        .iter()
+        .chain(SAMPLE_BODIES.iter())
+        .find(|(label, ..)| label == name)
+    else {
+        return Err(format!(
+            "{name} came from a file of yours, which a link cannot carry: a link opens only the \
+             built-in samples (send the file with the link)"
+        ));
+    };
+    let s = lab.settings();
+    let b = &s.body;
+    let mut pairs = vec![
+        ("sample", encode(file)),
+        ("spin", (lab.preset_axis() + 1).to_string()),
+        ("size", b.scale.to_string()),
+        match b.mass {
+            MassGiven::Density(d) => ("density", d.to_string()),
+            MassGiven::Mass(m) => ("mass", m.to_string()),
+        },
+        ("rate", b.spin_rate.to_string()),
+        (
+            "source",
+            match b.source {
+                InertiaSource::BoundingBox => "bbox",
+                InertiaSource::PointMasses => "points",
+                InertiaSource::Exact | InertiaSource::Stated => "exact",
+            }
+            .to_owned(),
+        ),
+        (
+            "model",
+            match s.physics.model {
+                RotationModel::Textbook => "textbook",
+                _ => "full",
+            }
+            .to_owned(),
+        ),
+    ];
+    let copies: Vec<&str> = lab.specimens()[1..]
+        .iter()
+        .filter_map(|c| match c.variant() {
+            Variant::Source(InertiaSource::BoundingBox) => Some("bbox"),
+            Variant::Source(InertiaSource::PointMasses) => Some("points"),
+            Variant::Model(RotationModel::Textbook) => Some("textbook"),
+            _ => None,
+        })
+        .collect();
+    if !copies.is_empty() {
+        pairs.push(("compare", copies.join(",")));
+    }
+    if let Some(run) = lab.lesson() {
+        pairs.push(("lesson", run.lesson.id.clone()));
+        pairs.push(("step", (run.step + 1).to_string()));
+    }
+    let query: Vec<String> = pairs.into_iter().map(|(k, v)| format!("{k}={v}")).collect();
+    Ok(format!("?{}", query.join("&")))
+}
+
+/// A query value: what [`decode`] reads back (letters, digits and `-_.~` as they are).
+fn encode(text: &str) -> String {
+    text.bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => {
+                char::from(b).to_string()
+            }
+            _ => format!("%{b:02X}"),
+        })
+        .collect()
 }
 
 /// The label of the sample a link names: by the label itself, or its file name with or
@@ -181,10 +353,65 @@ mod tests {
         assert_eq!(parse(""), LinkScene::default());
     }
 
+    /// A shared link opens the same scene: settings, spin, copies, lesson and step.
+    #[test]
+    fn a_shared_link_reopens_the_scene() {
+        let mut lab = Lab::new(AppSettings::default()).expect("the lab");
+        lab.apply(Command::OpenLesson(LessonSource::BuiltIn(
+            "stable-axes".to_owned(),
+        )));
+        lab.apply(Command::GoToStep(2));
+        lab.apply(Command::LoadSample("Hammer: steel & wood".to_owned()));
+        let mut s = lab.settings().clone();
+        s.body.scale = 1.5;
+        s.body.mass = MassGiven::Mass(2.25);
+        s.body.spin_rate = 5.5;
+        s.body.source = InertiaSource::BoundingBox;
+        s.physics.model = RotationModel::Textbook;
+        lab.apply(Command::Settings(Box::new(s)));
+        lab.apply(Command::Preset(2));
+        lab.apply(Command::Compare(vec![Variant::Source(
+            InertiaSource::PointMasses,
+        )]));
+        let query = share(&lab).expect("a sample");
+        let scene = parse(&query);
+        assert!(scene.problems.is_empty(), "{query}: {:?}", scene.problems);
+        // As the page starts (gui::start): the link's settings, its commands, the settings again.
+        let mut again = Lab::new(scene.settings.apply(AppSettings::default())).expect("the lab");
+        again.apply_all(scene.commands);
+        let settings = scene.settings.apply(again.settings().clone());
+        again.apply(Command::Settings(Box::new(settings)));
+        assert_eq!(again.lesson().map(|r| r.step), Some(2));
+        assert_eq!(again.primary().body().name, "Hammer: steel & wood");
+        assert_eq!(again.preset_axis(), 2);
+        assert_eq!(again.settings().body, lab.settings().body);
+        assert_eq!(again.settings().physics.model, RotationModel::Textbook);
+        assert_eq!(again.specimens().len(), 2);
+
+        let mut own = Lab::new(AppSettings::default()).expect("the lab");
+        let dir = std::env::temp_dir().join(format!("share-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a folder");
+        let file = dir.join("mine.obj");
+        let cube = massprops::shapes::cuboid(
+            nalgebra::Vector3::new(0.1, 0.2, 0.3),
+            nalgebra::Point3::origin(),
+        );
+        std::fs::write(&file, massprops::shapes::to_obj("mine", "mine", &cube)).expect("written");
+        own.apply(Command::LoadFile(file));
+        own.wait_for_load();
+        let e = share(&own).expect_err("a file of the user's");
+        assert!(e.contains("mine.obj") && e.contains("cannot carry"), "{e}");
+        let _ = std::fs::remove_dir_all(dir);
+    }
+
     #[test]
     fn decoding_keeps_malformed_escapes() {
         assert_eq!(decode("a%20b+c"), "a b c");
         assert_eq!(decode("100%"), "100%");
         assert_eq!(decode("%zz%4"), "%zz%4");
+        assert_eq!(
+            decode(&encode("Hammer: steel & wood")),
+            "Hammer: steel & wood"
+        );
     }
 }

@@ -19,6 +19,7 @@ mod start;
 pub mod view3d;
 pub mod warnings;
 
+use crate::lab::lessons::LessonRun;
 use crate::lab::settings::InertiaSource;
 use crate::lab::{Command, Lab, Message};
 use crate::platform::Instant;
@@ -38,6 +39,10 @@ const SPHERE_PANEL_WIDTH: f32 = 250.0;
 /// Key under which the settings are stored (eframe's storage: a file on the desktop, the page's
 /// local storage in a browser).
 const SETTINGS_KEY: &str = "inertia-lab-settings";
+/// The Lessons panel's width at first (points).
+const LESSON_PANEL_WIDTH: f32 = 300.0;
+/// Where the lessons' progress is kept (each lesson's id and the most steps done).
+const PROGRESS_KEY: &str = "inertia-lab-lesson-progress";
 
 /// The app.
 pub struct LabApp {
@@ -56,6 +61,8 @@ pub struct LabApp {
     bench: Option<Bench>,
     capture: Option<capture::Capture>,
     recording: Option<capture::Recording>,
+    /// The widget that last took the keyboard's focus, in words (egui's description).
+    focus: String,
 }
 
 impl std::fmt::Debug for LabApp {
@@ -100,6 +107,7 @@ impl LabApp {
             bench: None,
             capture: None,
             recording: None,
+            focus: String::new(),
         })
     }
 
@@ -140,25 +148,58 @@ impl LabApp {
                 {
                     self.shared.help_open = !self.shared.help_open;
                 }
+                if ui
+                    .small_button("Lessons")
+                    .on_hover_text("Guided activities: predict, try, measure, explain (L)")
+                    .clicked()
+                {
+                    self.shared.lessons_open = !self.shared.lessons_open;
+                }
+                if ui
+                    .small_button("Share")
+                    .on_hover_text(
+                        "Copy a link that opens this scene: the sample, its size, mass and spin, \
+                         the inertia and model, the comparison and the lesson's step",
+                    )
+                    .clicked()
+                {
+                    commands.push(Command::Notify(match link::share(&self.lab) {
+                        Ok(query) => {
+                            let address = platform::share_address(&query);
+                            ctx.copy_text(address.clone());
+                            Message {
+                                text: format!("copied {address} ({})", platform::SHARE_HINT),
+                                error: false,
+                            }
+                        }
+                        Err(why) => Message {
+                            text: why,
+                            error: true,
+                        },
+                    }));
+                }
                 message_text(ui, self.lab.message(), &mut commands);
             });
         });
         // A fixed width the user can drag; content wraps or truncates to it (a long file name or
         // diagnostics line must not widen the panel over the 3D view).
-        egui::Panel::left("side")
-            .resizable(true)
-            .default_size(SIDE_PANEL_WIDTH)
-            .min_size(260.0)
-            .max_size(640.0)
-            .show(ui, |ui| {
-                let mut frame = Frame {
-                    lab: &self.lab,
-                    settings: &mut draft,
-                    commands: &mut commands,
-                    shared: &mut self.shared,
-                };
-                self.panels.side.show(ui, &mut frame);
-            });
+        // Embedded in another page (`?embed=1`): the view, the plots and the lesson only.
+        if !self.shared.embed {
+            egui::Panel::left("side")
+                .resizable(true)
+                .default_size(SIDE_PANEL_WIDTH)
+                .min_size(260.0)
+                .max_size(640.0)
+                .show(ui, |ui| {
+                    let mut frame = Frame {
+                        lab: &self.lab,
+                        settings: &mut draft,
+                        commands: &mut commands,
+                        shared: &mut self.shared,
+                    };
+                    self.panels.side.show(ui, &mut frame);
+                });
+        }
         let mut frame = Frame {
             lab: &self.lab,
             settings: &mut draft,
@@ -172,6 +213,13 @@ impl LabApp {
                 .default_size(260.0)
                 .min_size(200.0)
                 .show(ui, |ui| self.panels.plots.show(ui, &mut frame));
+        }
+        if frame.shared.lessons_open || self.lab.lesson().is_some() {
+            egui::Panel::right("lessons")
+                .resizable(true)
+                .default_size(LESSON_PANEL_WIDTH)
+                .min_size(220.0)
+                .show(ui, |ui| self.panels.lessons.show(ui, &mut frame));
         }
         egui::CentralPanel::default().show(ui, |ui| {
             // The toolbar spans the whole width; the sphere and the 3D view share the rest.
@@ -269,9 +317,17 @@ impl LabApp {
             platform::set_title(ctx, &title);
             self.title = title;
         }
+        // What the keyboard's focus moved to: the page tells a screen reader (its runner exposes no
+        // tree), and the keyboard-only test finds its way by it.
+        for event in ctx.output(|o| o.events.clone()) {
+            if let egui::output::OutputEvent::FocusGained(info) = event {
+                self.focus = info.description();
+            }
+        }
         let exact = primary.properties(InertiaSource::Exact);
         let body = primary.sim().body();
         let view = self.view.rect().unwrap_or(egui::Rect::NOTHING);
+        let lesson = self.lab.lesson();
         platform::publish(&platform::Figures {
             mass: exact.mass,
             volume: primary.volume(),
@@ -283,7 +339,16 @@ impl LabApp {
                 [q.w, q.i, q.j, q.k]
             },
             specimens: self.lab.specimens().len(),
-            description: crate::lab::describe::description(&self.lab),
+            description: match crate::lab::describe::lesson(&self.lab) {
+                Some(lesson) => {
+                    format!("{} {lesson}", crate::lab::describe::description(&self.lab))
+                }
+                None => crate::lab::describe::description(&self.lab),
+            },
+            focus: self.focus.clone(),
+            lesson: lesson.map(|r| r.lesson.id.clone()).unwrap_or_default(),
+            lesson_step: lesson.map(LessonRun::progress).unwrap_or_default(),
+            lessons: crate::lab::lessons::built_in().len(),
             loading: self.lab.loading().map(|l| l.stage.to_string()),
             view: [view.left(), view.top(), view.width(), view.height()],
         });
@@ -387,6 +452,9 @@ impl LabApp {
         if ctx.input(|i| i.key_pressed(Key::F)) {
             self.view.frame_body(&self.lab);
         }
+        if ctx.input(|i| i.key_pressed(Key::L)) {
+            self.shared.lessons_open = !self.shared.lessons_open;
+        }
     }
 }
 
@@ -410,8 +478,18 @@ impl eframe::App for LabApp {
         // Measuring and capturing runs use default settings and must not replace the user's.
         if self.bench.is_none() && self.capture.is_none() {
             eframe::set_value(storage, SETTINGS_KEY, self.lab.settings());
+            eframe::set_value(storage, PROGRESS_KEY, self.lab.lesson_progress());
         }
     }
+}
+
+/// The lessons' progress kept in `storage` (none for a scripted run, which has no storage).
+fn kept_progress(
+    storage: Option<&dyn eframe::Storage>,
+) -> std::collections::BTreeMap<String, usize> {
+    storage
+        .and_then(|s| eframe::get_value(s, PROGRESS_KEY))
+        .unwrap_or_default()
 }
 
 /// The message line's text: the lab's last message with its dismiss button, or what the lab is.

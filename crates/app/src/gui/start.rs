@@ -31,6 +31,10 @@ pub struct Start {
     pub capture: Option<Capture>,
     /// Simulated seconds before the picture.
     pub after: f64,
+    /// The embedded layout (`?embed=1`): the 3D view, the plots and the lessons.
+    pub embed: bool,
+    /// A link's settings, applied again after `commands` (a lesson's step sets some up).
+    pub tweaks: super::link::Tweaks,
 }
 
 impl Start {
@@ -52,6 +56,8 @@ impl Start {
     ) -> Result<LabApp, LabError> {
         let scripted = self.scripted();
         let mut app = LabApp::new(settings, gl, ctx)?;
+        app.shared.embed = self.embed;
+        app.shared.lessons_open = self.embed;
         if let Some(path) = self.file {
             app.command(Command::LoadFile(path));
             if scripted || self.link.is_some() {
@@ -64,6 +70,10 @@ impl Start {
         }
         for command in self.commands {
             app.command(command);
+        }
+        if self.tweaks != super::link::Tweaks::default() {
+            let settings = self.tweaks.apply(app.lab.settings().clone());
+            app.command(Command::Settings(Box::new(settings)));
         }
         if self.bench.is_some() {
             if !self.ghosts.is_empty() {

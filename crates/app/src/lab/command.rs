@@ -119,6 +119,8 @@ pub enum Command {
     NextStep,
     /// The step before, set up again.
     PreviousStep,
+    /// Step N (from 0) of the open lesson, set up: where a teacher's link starts a class.
+    GoToStep(usize),
     /// Leave the lesson (its progress is kept).
     CloseLesson,
     /// Show link N of the loaded robot description as the body (its stated inertia available

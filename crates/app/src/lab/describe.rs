@@ -87,6 +87,40 @@ pub fn description(lab: &Lab) -> String {
     text
 }
 
+/// The open lesson in words: its title, the step and its text, the prediction asked or made, and
+/// which checks have held (not what they measure, which changes every frame); `None` without a
+/// lesson.
+pub fn lesson(lab: &Lab) -> Option<String> {
+    let run = lab.lesson()?;
+    let step = run.current();
+    let paragraph = |text: &str| text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let mut text = format!(
+        "Lesson: {}. Step {} of {}: {}",
+        run.lesson.title,
+        run.step + 1,
+        run.lesson.steps.len(),
+        paragraph(&step.text)
+    );
+    if let Some(p) = &step.predict {
+        match run.prediction {
+            None => text.push_str(&format!(
+                " Predict: {} Choices: {}.",
+                p.question,
+                p.choices.join("; ")
+            )),
+            Some(k) => text.push_str(&format!(" You predicted: {}.", p.choices[k])),
+        }
+    }
+    if !run.awaits_prediction() && !step.checks.is_empty() {
+        let held = run.checks.iter().filter(|c| c.met).count();
+        text.push_str(&format!(" {held} of {} checks held.", step.checks.len()));
+    }
+    if run.step_done() {
+        text.push_str(&format!(" Done. {}", paragraph(&step.explain)));
+    }
+    Some(text)
+}
+
 /// `v` to two significant digits, as text.
 fn two_digits(v: f64) -> String {
     significant(v, 2)

@@ -274,6 +274,7 @@ impl Lab {
             Command::Predict(choice) => self.predict(choice)?,
             Command::NextStep => self.next_step()?,
             Command::PreviousStep => self.previous_step()?,
+            Command::GoToStep(step) => self.go_to_step(step)?,
             Command::CloseLesson => self.lesson = None,
         }
         Ok(())

@@ -123,6 +123,21 @@ impl Lab {
         begun
     }
 
+    pub(super) fn go_to_step(&mut self, step: usize) -> Result<(), LabError> {
+        let mut run = self
+            .lesson
+            .take()
+            .ok_or(LabError::LessonStep("no lesson is open"))?;
+        if step >= run.lesson.steps.len() {
+            self.lesson = Some(run);
+            return Err(LabError::LessonStep("the lesson has no such step"));
+        }
+        run.step = step;
+        let begun = self.begin_step(&mut run);
+        self.lesson = Some(run);
+        begun
+    }
+
     /// Sets the lab up as `run`'s present step says and starts its checks afresh.
     fn begin_step(&mut self, run: &mut LessonRun) -> Result<(), LabError> {
         let setup = run.current().setup.clone();

@@ -52,6 +52,14 @@ fn show(ctx: &egui::Context, open: &mut bool) {
                     ("S", "one step (pauses)"),
                     ("R", "reset to the start state"),
                     ("1 2 3", "spin about principal axis 1, 2, 3"),
+                    ("Arrows", "move the aim (a ring) over the 3D view"),
+                    ("P", "poke the body at the aim, along the view ray"),
+                    ("F", "frame the body"),
+                    ("L", "show or hide the lessons"),
+                    (
+                        "Enter",
+                        "press the focused button, choose the focused option",
+                    ),
                     ("F1", "this help"),
                     (
                         "Escape",

@@ -1,4 +1,4 @@
-//! The Lessons section: the built-in lessons with the progress kept for each, and the lesson
+//! The Lessons panel, beside the 3D view: the built-in lessons with the progress kept for each, and the lesson
 //! open: its goal, the step's text and the view it needs, the prediction to commit to, the
 //! checks as the lab evaluates them, and the explanation once they hold.
 
@@ -6,21 +6,20 @@ use super::{Frame, Panel};
 use crate::lab::Command;
 use crate::lab::lessons::{self, LessonRun, LessonSource};
 
-/// The Lessons section, open by default: the lab exists to teach.
+/// The Lessons panel (the top bar's Lessons button shows it; an open lesson keeps it shown).
 #[derive(Default)]
-pub struct LessonsSection {
+pub struct LessonsPanel {
     /// The choice selected for the step's prediction, before it is committed.
     choice: Option<usize>,
 }
 
-impl Panel for LessonsSection {
+impl Panel for LessonsPanel {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
-        egui::CollapsingHeader::new("Lessons")
-            .default_open(true)
-            .show(ui, |ui| match f.lab.lesson() {
-                Some(run) => self.lesson(ui, run, f.commands),
-                None => list(ui, f),
-            });
+        ui.heading("Lessons");
+        egui::ScrollArea::vertical().show(ui, |ui| match f.lab.lesson() {
+            Some(run) => self.lesson(ui, run, f.commands),
+            None => list(ui, f),
+        });
     }
 }
 
@@ -34,8 +33,9 @@ fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
             .copied()
             .unwrap_or(0);
         let steps = lesson.steps.len();
+        // Words, not a check mark: egui's default fonts have no ✔.
         let mark = if done >= steps {
-            " ✔".to_owned()
+            " (done)".to_owned()
         } else if done > 0 {
             format!(" ({done}/{steps})")
         } else {
@@ -54,7 +54,7 @@ fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
     ui.small("A lesson file of your own opens with File → Open or by dropping it here.");
 }
 
-impl LessonsSection {
+impl LessonsPanel {
     fn lesson(&mut self, ui: &mut egui::Ui, run: &LessonRun, commands: &mut Vec<Command>) {
         let lesson = &run.lesson;
         let step = run.current();
@@ -92,7 +92,7 @@ impl LessonsSection {
         if !run.awaits_prediction() {
             ui.separator();
             for (check, state) in step.checks.iter().zip(&run.checks) {
-                let mark = if state.met { "✔" } else { "…" };
+                let mark = if state.met { "Done:" } else { "Waiting:" };
                 let what = describe(check);
                 let text = match &state.finding {
                     Some(found) => format!("{mark} {what}: {found}"),

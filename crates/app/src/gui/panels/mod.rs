@@ -46,6 +46,8 @@ pub struct Panels {
     pub sphere: sphere::SpherePanel,
     /// The F1 help.
     pub help: help::HelpWindow,
+    /// The lessons, beside the 3D view.
+    pub lessons: lessons::LessonsPanel,
 }
 
 pub mod body;
@@ -71,6 +73,10 @@ pub struct PanelState {
     pub path: String,
     /// Whether the F1 help is shown.
     pub help_open: bool,
+    /// Whether the Lessons panel is shown (it is, too, while a lesson is open).
+    pub lessons_open: bool,
+    /// The embedded layout (`?embed=1`): no side panel.
+    pub embed: bool,
     /// A file dialog a panel asked for this frame (the app opens it).
     pub dialog_request: Option<DialogPurpose>,
     /// Whether a file dialog is open (its buttons are disabled meanwhile).
@@ -103,6 +109,8 @@ impl Default for PanelState {
         Self {
             path: String::new(),
             help_open: false,
+            lessons_open: false,
+            embed: false,
             dialog_request: None,
             dialog_open: false,
             frame_request: false,

@@ -5,7 +5,6 @@ use super::body::BodySection;
 use super::compare::CompareSection;
 use super::diagnostics::DiagnosticsSection;
 use super::interaction::InteractionSection;
-use super::lessons::LessonsSection;
 use super::motion::MotionSection;
 use super::parts::PartsSection;
 use super::robot::RobotSection;
@@ -22,7 +21,6 @@ impl Default for SidePanel {
     fn default() -> Self {
         Self {
             sections: vec![
-                Box::new(LessonsSection::default()),
                 Box::new(BodySection),
                 Box::new(RobotSection),
                 Box::new(TableSection),

@@ -59,6 +59,14 @@ pub struct Figures {
     pub specimens: usize,
     /// What is happening, in words ([`crate::lab::describe`]): the page's live region.
     pub description: String,
+    /// The widget that has the keyboard's focus, in words.
+    pub focus: String,
+    /// The open lesson's id (empty when none is open).
+    pub lesson: String,
+    /// Its step, `k/N`, or `done` (empty when none is open).
+    pub lesson_step: String,
+    /// How many built-in lessons there are.
+    pub lessons: usize,
     /// The stage of the file loading, when one is.
     pub loading: Option<String>,
     /// The 3D view's rectangle (left, top, width, height), in points: CSS pixels in a page.

@@ -15,9 +15,10 @@ use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
 use crate::gui::start::Start;
 use crate::gui::{SETTINGS_KEY, capture};
-use crate::lab::Variant;
+use crate::lab::lessons::LessonSource;
 use crate::lab::loader::LoadSource;
 use crate::lab::settings::{AppSettings, InertiaSource};
+use crate::lab::{Command, Variant};
 
 /// What the window opens: meshes, bodies and robot descriptions.
 const OPENABLE: Openable = Openable { robots: true };
@@ -48,6 +49,15 @@ pub fn set_title(ctx: &egui::Context, title: &str) {
 
 /// Nothing: a window shows its figures in its panels alone. (A page also gives them to scripts.)
 pub fn publish(_: &Figures) {}
+
+/// The link to share for a scene's `query`: the desktop has no page address of its own, so the
+/// query alone, to put after the lab page's address.
+pub fn share_address(query: &str) -> String {
+    query.to_owned()
+}
+
+/// What a shared link is, for the message that it was copied.
+pub const SHARE_HINT: &str = "put it after the address of the lab's page";
 
 /// A native file dialog running on its own thread (they block until closed).
 #[derive(Debug)]
@@ -153,6 +163,9 @@ pub struct GuiArgs {
     /// With a robot description (URDF, MJCF or SDFormat): show this link as the body.
     #[arg(long, value_name = "NAME", requires = "file")]
     pub link: Option<String>,
+    /// Open a lesson: its number from 1, its id, or a lesson file (….lesson.toml).
+    #[arg(long, value_name = "LESSON")]
+    pub lesson: Option<String>,
     /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
     /// settings, after --after simulated seconds, paused there.
     #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
@@ -198,7 +211,18 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
     let start = Start {
         file: args.file.clone(),
         link: args.link.clone(),
-        commands: Vec::new(),
+        commands: args
+            .lesson
+            .iter()
+            .map(|key| {
+                let path = PathBuf::from(key);
+                Command::OpenLesson(if crate::lab::lessons::is_lesson_file(&path) {
+                    LessonSource::Path(path)
+                } else {
+                    LessonSource::BuiltIn(key.clone())
+                })
+            })
+            .collect(),
         bench: args
             .bench_frames
             .map(|frames| Bench::new(frames, args.bench_no_plots)),
@@ -216,6 +240,8 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
             .clone()
             .map(|path| capture::Capture::new(path, Arc::clone(&outcome))),
         after: args.after,
+        embed: false,
+        tweaks: crate::gui::link::Tweaks::default(),
     };
     let scripted = start.scripted();
     let options = eframe::NativeOptions {
@@ -246,11 +272,12 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
                 }
                 _ => AppSettings::default(),
             };
-            Ok(Box::new(start.app(
-                settings,
-                cc.gl.clone(),
-                &cc.egui_ctx,
-            )?))
+            let mut app = start.app(settings, cc.gl.clone(), &cc.egui_ctx)?;
+            if !scripted {
+                app.lab
+                    .restore_lesson_progress(crate::gui::kept_progress(cc.storage));
+            }
+            Ok(Box::new(app))
         }),
     )?;
     if args.screenshot.is_some() {

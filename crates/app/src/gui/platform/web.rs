@@ -52,6 +52,8 @@ pub const CANVAS_ID: &str = "inertia-lab";
 /// The id of the page's live region (`aria-live="polite"`, web/index.html) that holds what is
 /// happening in words.
 const LIVE_ID: &str = "live";
+/// The region that names the widget with the keyboard's focus (a screen reader says it at once).
+const FOCUS_ID: &str = "focus";
 
 /// Starts the app on the page's canvas with the scene its address names; an error is shown in
 /// the page (the element `#error`) and the console.
@@ -99,6 +101,7 @@ async fn run() -> Result<(), JsValue> {
                     }
                     _ => AppSettings::default(),
                 };
+                let settings = scene.settings.apply(settings);
                 let mut commands = scene.commands;
                 if !scene.problems.is_empty() {
                     commands.push(Command::Notify(Message {
@@ -109,13 +112,14 @@ async fn run() -> Result<(), JsValue> {
                 let start = Start {
                     commands,
                     bench: scene.bench_frames.map(|n| Bench::new(n, false)),
+                    embed: scene.embed,
+                    tweaks: scene.settings,
                     ..Start::default()
                 };
-                Ok(Box::new(start.app(
-                    settings,
-                    cc.gl.clone(),
-                    &cc.egui_ctx,
-                )?))
+                let mut app = start.app(settings, cc.gl.clone(), &cc.egui_ctx)?;
+                app.lab
+                    .restore_lesson_progress(crate::gui::kept_progress(cc.storage));
+                Ok(Box::new(app))
             }),
         )
         .await?;
@@ -127,6 +131,18 @@ async fn run() -> Result<(), JsValue> {
 fn document() -> Option<web_sys::Document> {
     web_sys::window()?.document()
 }
+
+/// The link to share for a scene's `query`: this page's address with it.
+pub fn share_address(query: &str) -> String {
+    let location = web_sys::window().map(|w| w.location());
+    let base = location
+        .and_then(|l| Some(format!("{}{}", l.origin().ok()?, l.pathname().ok()?)))
+        .unwrap_or_default();
+    format!("{base}{query}")
+}
+
+/// What a shared link is, for the message that it was copied.
+pub const SHARE_HINT: &str = "it opens this scene in the page";
 
 /// Shows `text` in the page's `#error` element (the canvas may be what failed).
 fn show_error(text: &str) {
@@ -176,16 +192,22 @@ pub fn publish(figures: &Figures) {
         ("data-loading", figures.loading.is_some().to_string()),
         ("data-stage", figures.loading.clone().unwrap_or_default()),
         ("data-view", format!("{left} {top} {width} {height}")),
+        ("data-focus", figures.focus.clone()),
+        ("data-lesson", figures.lesson.clone()),
+        ("data-lesson-step", figures.lesson_step.clone()),
+        ("data-lessons", figures.lessons.to_string()),
         ("data-frames", frames.to_string()),
     ] {
         let _ = canvas.set_attribute(name, &value);
     }
     // The live region beside the canvas (eframe's web runner exposes no accessibility tree): a
     // screen reader reads it again whenever it changes, so it is written only then.
-    if let Some(live) = document().and_then(|d| d.get_element_by_id(LIVE_ID))
-        && live.text_content().as_deref() != Some(figures.description.as_str())
-    {
-        live.set_text_content(Some(&figures.description));
+    for (id, text) in [(LIVE_ID, &figures.description), (FOCUS_ID, &figures.focus)] {
+        if let Some(region) = document().and_then(|d| d.get_element_by_id(id))
+            && region.text_content().as_deref() != Some(text.as_str())
+        {
+            region.set_text_content(Some(text));
+        }
     }
 }
 

@@ -45,12 +45,18 @@ pub struct View3d {
     followed: Option<Point3<f64>>,
     /// Where the view was last drawn (points).
     shown: Option<egui::Rect>,
+    /// The keyboard's aim (the arrow keys move it, P pokes there): its offset from the view's
+    /// centre in view heights, once the arrows have moved it.
+    aim: Option<egui::Vec2>,
 }
+
+/// How far one press of an arrow key moves the keyboard's aim (view heights).
+const AIM_STEP: f32 = 0.02;
 
 /// The one-line hint under the view.
 pub const HINT: &str = "Click body: poke · Drag body: string · Drag background: orbit · \
                         Right/middle drag: pan · Wheel: zoom · F: frame · Space: pause · S: step · \
-                        R: reset · F1: help";
+                        R: reset · Arrows and P: aim and poke · L: lessons · F1: help";
 
 /// Where specimen `k` (0: the body) stands in a row, in bounding radii along the screen's right:
 /// the body in the middle, the first copy to its left, the others to its right.
@@ -318,6 +324,37 @@ impl View3d {
         if response.double_clicked() {
             self.frame_body(lab);
         }
+        // The keyboard's poke: the arrows aim, P pokes along the view ray through the aim (while
+        // no widget holds the keys, which the arrows would move between).
+        if !ui.ctx().text_edit_focused() && ui.memory(|m| m.focused().is_none()) {
+            let moved = ui.input(|i| {
+                [
+                    (egui::Key::ArrowLeft, egui::vec2(-1.0, 0.0)),
+                    (egui::Key::ArrowRight, egui::vec2(1.0, 0.0)),
+                    (egui::Key::ArrowUp, egui::vec2(0.0, -1.0)),
+                    (egui::Key::ArrowDown, egui::vec2(0.0, 1.0)),
+                ]
+                .into_iter()
+                .filter(|(k, _)| i.key_pressed(*k))
+                .map(|(_, d)| d * AIM_STEP)
+                .reduce(|a, b| a + b)
+            });
+            if let Some(d) = moved {
+                let aim = self.aim.unwrap_or_default() + d;
+                self.aim = Some(aim.clamp(egui::vec2(-0.5, -0.5), egui::vec2(0.5, 0.5)));
+            }
+            if ui.input(|i| i.key_pressed(egui::Key::P)) {
+                let pos = rect.center() + self.aim.unwrap_or_default() * rect.height();
+                let ray = ray_at(&self.camera, pos);
+                if let Some(hit) = lab.primary().pick(&ray) {
+                    commands.push(Command::Poke {
+                        specimen: PRIMARY,
+                        point: hit.point,
+                        direction: ray.dir,
+                    });
+                }
+            }
+        }
         if response.hovered() {
             let scroll = ui.input(|i| i.smooth_scroll_delta.y);
             if scroll != 0.0 {
@@ -335,6 +372,12 @@ impl View3d {
                 .project(p, size)
                 .map(|q| convert::screen(&q, rect.min))
         };
+        if let Some(aim) = self.aim {
+            // The keyboard's aim: a ring where P pokes.
+            let at = rect.center() + aim * rect.height();
+            painter.circle_stroke(at, 7.0, Stroke::new(2.0, Color32::WHITE));
+            painter.circle_stroke(at, 9.0, Stroke::new(1.0, Color32::BLACK));
+        }
         for s in &overlay.segments {
             let (Some(a), Some(b)) = (project(&s.a), project(&s.b)) else {
                 continue;
