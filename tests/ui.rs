@@ -513,13 +513,15 @@ fn every_symbol_the_gui_writes_has_a_glyph() {
         .clear();
     let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
-    let mut dirs = vec![src.join("gui"), src.join("lab")];
+    // The built-in lessons' text is drawn by the same fonts.
+    let lessons = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../lessons");
+    let mut dirs = vec![src.join("gui"), src.join("lab"), lessons];
     while let Some(dir) = dirs.pop() {
         for entry in std::fs::read_dir(&dir).expect("source folder") {
             let path = entry.expect("entry").path();
             if path.is_dir() {
                 dirs.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") {
+            } else if path.extension().is_some_and(|e| e == "rs" || e == "toml") {
                 files.push(path);
             }
         }
@@ -706,4 +708,35 @@ fn export_motion_is_named_and_writes_the_file() {
         "{}",
         &text[..400.min(text.len())]
     );
+}
+
+/// Lesson 1 by the panel's widgets, found by role and name as a screen reader finds them: the
+/// Lessons button, the lesson, the prediction's choice and its commit, the inertia source, Next.
+#[test]
+fn lesson_1_is_completed_from_the_lessons_panel() {
+    use egui::accesskit::Role;
+    let mut h = harness();
+    frames(&mut h, 1);
+    h.get_by_role_and_label(Role::Button, "Lessons").click();
+    frames(&mut h, 2);
+    h.get_by_label_contains("1. What the inertia tensor is").click();
+    frames(&mut h, 2);
+    assert_eq!(h.state().lab().primary().body().name, "L-bracket");
+    assert!(h.query_by_label_contains("Step 1 of 2").is_some());
+    h.get_by_role_and_label(Role::RadioButton, "larger than the exact ones")
+        .click();
+    frames(&mut h, 1);
+    h.get_by_role_and_label(Role::Button, "Commit to my prediction")
+        .click();
+    frames(&mut h, 2);
+    h.get_by_role_and_label(Role::RadioButton, "bounding box").click();
+    frames(&mut h, 2);
+    assert!(h.query_by_label_contains("Your prediction was right").is_some());
+    h.get_by_role_and_label(Role::Button, "Next step").click();
+    frames(&mut h, 2);
+    h.get_by_role_and_label(Role::RadioButton, "exact").click();
+    frames(&mut h, 2);
+    assert!(h.query_by_label_contains("Lesson done").is_some());
+    let run = h.state().lab().lesson().expect("open");
+    assert_eq!(run.progress(), "done");
 }

@@ -51,7 +51,7 @@ fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
             )));
         }
     }
-    ui.small("A lesson file of your own opens with File → Open or by dropping it here.");
+    ui.small("A lesson file of your own (….lesson.toml) opens with Open mesh… or by dropping it on the window.");
 }
 
 impl LessonsPanel {
