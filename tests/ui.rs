@@ -719,7 +719,8 @@ fn lesson_1_is_completed_from_the_lessons_panel() {
     frames(&mut h, 1);
     h.get_by_role_and_label(Role::Button, "Lessons").click();
     frames(&mut h, 2);
-    h.get_by_label_contains("1. What the inertia tensor is").click();
+    h.get_by_label_contains("1. What the inertia tensor is")
+        .click();
     frames(&mut h, 2);
     assert_eq!(h.state().lab().primary().body().name, "L-bracket");
     assert!(h.query_by_label_contains("Step 1 of 2").is_some());
@@ -729,9 +730,13 @@ fn lesson_1_is_completed_from_the_lessons_panel() {
     h.get_by_role_and_label(Role::Button, "Commit to my prediction")
         .click();
     frames(&mut h, 2);
-    h.get_by_role_and_label(Role::RadioButton, "bounding box").click();
+    h.get_by_role_and_label(Role::RadioButton, "bounding box")
+        .click();
     frames(&mut h, 2);
-    assert!(h.query_by_label_contains("Your prediction was right").is_some());
+    assert!(
+        h.query_by_label_contains("Your prediction was right")
+            .is_some()
+    );
     h.get_by_role_and_label(Role::Button, "Next step").click();
     frames(&mut h, 2);
     h.get_by_role_and_label(Role::RadioButton, "exact").click();
