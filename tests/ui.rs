@@ -9,16 +9,25 @@ use egui_kittest::kittest::Queryable;
 
 use inertia_lab::gui::LabApp;
 use inertia_lab::gui::view3d::overlay::{Overlay, Selection};
+use inertia_lab::i18n::Language;
 use inertia_lab::lab::Variant;
 use inertia_lab::lab::settings::{AppSettings, InertiaSource, MassGiven};
 use rbcore::RotationModel;
+
+/// The default settings in English, whatever the machine's locale: the tests find widgets by
+/// their English names.
+fn english() -> AppSettings {
+    let mut s = AppSettings::default();
+    s.display.language = Some(Language::English);
+    s
+}
 
 fn harness() -> Harness<'static, LabApp> {
     harness_of_size([1280.0, 800.0])
 }
 
 fn harness_of_size(size: [f32; 2]) -> Harness<'static, LabApp> {
-    let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
+    let app = LabApp::new(english(), None, &egui::Context::default()).expect("app");
     Harness::builder()
         .with_size(size)
         .build_ui_state(|ui, app: &mut LabApp| app.show(ui), app)
@@ -198,7 +207,11 @@ fn reset_settings_spin_presets_and_reset_from_the_panel() {
     assert!(h.state().lab().primary().sim().time() < 0.1);
     h.get_by_label("Reset settings").click();
     frames(&mut h, 2);
-    assert_eq!(h.state().lab().settings(), &AppSettings::default());
+    assert_eq!(
+        h.state().lab().settings(),
+        &english(),
+        "the defaults, the language kept"
+    );
 }
 
 /// An open mesh under a long path: while it loads and after, the side panel keeps its width (a
@@ -219,7 +232,7 @@ fn the_layout_fits_at_1366x768() {
 /// 1920×1080 pixels at 1.5 pixels per point: a 1280×720-point screen.
 #[test]
 fn the_layout_fits_at_1920x1080_with_1_5_pixels_per_point() {
-    let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
+    let app = LabApp::new(english(), None, &egui::Context::default()).expect("app");
     let h = Harness::builder()
         .with_size([1920.0 / 1.5, 1080.0 / 1.5])
         .with_pixels_per_point(1.5)
@@ -233,7 +246,7 @@ fn the_layout_fits_at_1920x1080_with_1_5_pixels_per_point() {
 /// sphere open the view's row is narrower still.
 #[test]
 fn the_toolbar_wraps_in_a_narrow_window() {
-    let app = LabApp::new(AppSettings::default(), None, &egui::Context::default()).expect("app");
+    let app = LabApp::new(english(), None, &egui::Context::default()).expect("app");
     let mut h = Harness::builder()
         .with_size([900.0, 700.0])
         .with_pixels_per_point(1.5)

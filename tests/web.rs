@@ -113,7 +113,21 @@ fn web_page_runs_the_lab() {
         root().join("assets/hammer.obj"),
     ];
     let gltf = write_box_gltf(&work);
+    // The site as one HTML file that runs from the disk (web/build.sh --single-file's last step).
+    let single = work.join("inertia-lab.html");
+    let made = Command::new("python3")
+        .arg(root().join("web/single_file.py"))
+        .arg(&site)
+        .arg(&single)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        made.status.success(),
+        "web/single_file.py failed:\n{}",
+        String::from_utf8_lossy(&made.stderr)
+    );
     let driven = Command::new("node")
+        .env("SINGLE_FILE", &single)
         .env(
             "DROP_GLTF",
             format!("{}:{}", work.join("box.bin").display(), gltf.display()),
@@ -220,6 +234,59 @@ fn web_page_runs_the_lab() {
     check_busy_page(&s["busy_part"], number(&s["busy_part"]["before"]["volume"]));
     check_recording(&s["record"]);
     check_restarts(&s["restarts"]);
+    check_keyboard_lesson(&s["keyboard_lesson"]);
+    // The single file runs from the disk, and a file dropped on it loads in its worker with the
+    // mass props computes.
+    let single = &s["single_file"];
+    assert_eq!(single["first"]["title"], "Inertia Lab — T-handle", "single file: {single}");
+    let shown = number(&single["dropped"]["mass"]);
+    let props = props_mass(&picked);
+    assert!(
+        (shown - props).abs() <= 1e-12 * props,
+        "single file: the dropped mesh shows {shown} kg, props {props} kg"
+    );
+    for (lang, spins) in [("de", "dreht sich"), ("es", "gira")] {
+        let page = &s[format!("lang_{lang}")];
+        assert_eq!(page["figures"]["lang"], lang, "?lang={lang}: data-lang");
+        assert_eq!(page["documentLang"], lang, "?lang={lang}: <html lang>");
+        let live = page["live"].as_str().unwrap_or_default();
+        assert!(
+            live.contains(spins) && live.contains("rad/s") && !live.contains("spins at"),
+            "?lang={lang}: the live description is not in that language: {live:?}"
+        );
+        // Rates to two significant digits, with the language's decimal comma ("6,2 rad/s").
+        let rate = live
+            .split_whitespace()
+            .take_while(|w| *w != "rad/s")
+            .last()
+            .unwrap_or_default();
+        assert!(
+            rate.contains(',') && !rate.contains('.'),
+            "?lang={lang}: the rate {rate:?} has no decimal comma: {live:?}"
+        );
+    }
+}
+
+/// Lesson 1 done by the keyboard alone: each widget reached by Tab and pressed by Enter, the
+/// lesson open from the first, and its last step done.
+fn check_keyboard_lesson(run: &serde_json::Value) {
+    let steps = run["steps"]
+        .as_array()
+        .expect("the keyboard lesson's steps");
+    assert_eq!(steps.len(), 6, "keyboard lesson: {run}");
+    assert_eq!(
+        steps[0]["lesson"], "tensor",
+        "Enter on lesson 1 opened it: {run}"
+    );
+    assert_eq!(steps[0]["title"], "Inertia Lab — L-bracket", "{run}");
+    assert_eq!(steps[2]["step"], "1/2", "{run}");
+    assert_eq!(steps[4]["step"], "2/2", "Next step went on: {run}");
+    assert_eq!(run["end"]["lessonStep"], "done", "lesson 1 not done: {run}");
+    let live = run["live"].as_str().unwrap_or_default();
+    assert!(
+        live.contains("Lesson: What the inertia tensor is"),
+        "{live:?}"
+    );
 }
 
 /// Fifty restarts, by keys and buttons, with the view or a widget holding the keys: each starts

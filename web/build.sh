@@ -4,6 +4,9 @@
 #
 #   web/build.sh [OUT]      build into OUT (default target/web); with INERTIA_LAB_URL set (the
 #                           project's home page), the page links to its "the-app" section
+#   web/build.sh --single-file [OUT.html]
+#                           the same page as one HTML file (default target/inertia-lab.html) that
+#                           runs from the disk with no server: the module and the worker inline
 #   web/build.sh --check    only check the toolchain (exit 3 and the install line when missing)
 #   web/build.sh --clippy   lint the code the web build compiles (the platform modules' web sides
 #                           are seen by no desktop build), with warnings as errors
@@ -47,6 +50,11 @@ if [[ ${1:-} == --clippy ]]; then
   exit
 fi
 
+SINGLE_FILE=
+if [[ ${1:-} == --single-file ]]; then
+  SINGLE_FILE=${2:-target/inertia-lab.html}
+  set -- target/web-single
+fi
 OUT=${1:-target/web}
 # A target folder of its own: another compiler, and Cargo holds the workspace's locked while
 # its tests run (the browser test calls this script).
@@ -70,6 +78,11 @@ if [[ -n ${INERTIA_LAB_URL:-} ]]; then
   sed "s|@INERTIA_LAB_URL@|${INERTIA_LAB_URL//|/\\|}|" web/index.html >"$OUT/index.html"
 else
   grep -v '@INERTIA_LAB_URL@\|INERTIA_LAB_URL)' web/index.html >"$OUT/index.html"
+fi
+if [[ -n $SINGLE_FILE ]]; then
+  python3 web/single_file.py "$OUT" "$SINGLE_FILE"
+  echo "web/build.sh: built $SINGLE_FILE ($(du -h "$SINGLE_FILE" | cut -f1)), which runs from the disk"
+  exit
 fi
 echo "web/build.sh: built $OUT:"
 ls -l "$OUT"

@@ -68,7 +68,9 @@ async function open(name, query, viewport = { width: 1280, height: 800 }, scale 
       return transfer;
     };
   });
-  await page.goto(base + query, { waitUntil: "load", timeout: TIMEOUT });
+  // A query, or a whole address (the single file, opened from the disk).
+  const address = query.startsWith("file://") ? query : base + query;
+  await page.goto(address, { waitUntil: "load", timeout: TIMEOUT });
   await frames(page, 3);
   return page;
 }
@@ -360,6 +362,71 @@ await scenario("restarts", async () => {
     runs.push({ route, focused, restarted, ran, start: start.time, end: end.time, turned, redrawn });
   }
   result.scenarios.restarts = runs;
+  await page.close();
+});
+
+// 7c. Lesson 1 by the keyboard alone: L shows the lessons, Tab moves the focus (the page
+// publishes which widget has it, as a screen reader is told), Enter presses or chooses. Nothing
+// is clicked: a page that cannot be reached by Tab fails here.
+await scenario("keyboard_lesson", async () => {
+  const page = await open("keyboard_lesson", "/");
+  const steps = [];
+  // Tabs until the focused widget's name starts with `words` (egui describes it as "name: role"); then Enter.
+  const choose = async (words) => {
+    for (let k = 0; k < 250; k++) {
+      await page.keyboard.press("Tab");
+      await frames(page, Number((await figures(page)).frames) + 1);
+      const focus = (await figures(page)).focus;
+      if (focus.startsWith(words)) {
+        await page.keyboard.press("Enter");
+        await frames(page, Number((await figures(page)).frames) + 2);
+        const f = await figures(page);
+        steps.push({ words, tabs: k + 1, focus, lesson: f.lesson, step: f.lessonStep, title: f.title });
+        return;
+      }
+    }
+    throw new Error(`no widget named "${words}" within 250 Tabs`);
+  };
+  // The page's canvas takes the keys once it has the focus; the keyboard gives it that too.
+  await page.focus("#inertia-lab");
+  await page.keyboard.press("l");
+  await choose("1. What the inertia tensor is");
+  await choose("larger than the exact ones");
+  await choose("Commit to my prediction");
+  await choose("bounding box");
+  await choose("Next step");
+  await choose("exact");
+  const end = await figures(page);
+  const live = await page.$eval("#live", (e) => e.textContent);
+  await page.screenshot({ path: join(out, "keyboard-lesson-done.png") });
+  result.scenarios.keyboard_lesson = { steps, end, live };
+  await page.close();
+});
+
+// 7d. The page in German and in Spanish (?lang=): the document's language, data-lang, and the
+// live description in that language with a decimal comma; a screenshot of each.
+for (const lang of ["de", "es"]) {
+  await scenario(`lang_${lang}`, async () => {
+    const page = await open(`lang_${lang}`, `/?lang=${lang}&lesson=3`);
+    await sleep(1500);
+    const f = await figures(page);
+    const documentLang = await page.evaluate(() => document.documentElement.lang);
+    const live = await page.$eval("#live", (e) => e.textContent);
+    await page.screenshot({ path: join(out, `page-${lang}-1280x800.png`) });
+    result.scenarios[`lang_${lang}`] = { figures: f, documentLang, live };
+    await page.close();
+  });
+}
+
+// 7e. The page as one file opened from the disk (SINGLE_FILE, made by web/single_file.py): it
+// runs, and a file dropped on it loads in its worker (a blob the page made: nothing is beside it).
+await scenario("single_file", async () => {
+  const page = await open("single_file", `file://${process.env.SINGLE_FILE}`);
+  await frames(page, 10);
+  const first = await figures(page);
+  await drop(page, encoded([picked]));
+  const dropped = await loaded(page, basename(picked));
+  result.scenarios.single_file = { first, dropped };
   await page.close();
 });
 

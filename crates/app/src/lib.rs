@@ -5,6 +5,8 @@
 //! - [`timeseries`]: the one time-series schema (CSV columns) of `simulate` and the app's plots;
 //! - [`platform`]: what the system tells about the process (its memory);
 //! - [`cli`]: the `props`, `simulate`, `export` and `audit` commands: their flags and exit codes;
+//! - [`i18n`]: the words of the window, the page and the live description, in the user's
+//!   language (Fluent message files in `messages/`);
 //! - [`lab`]: the app's headless model (specimens, commands, loader, bodies of parts, picking);
 //! - `gui` (feature `gui`, default on): the desktop app drawing the lab with eframe and three-d.
 //!
@@ -16,6 +18,7 @@
 pub mod cli;
 #[cfg(feature = "gui")]
 pub mod gui;
+pub mod i18n;
 pub mod lab;
 pub mod platform;
 pub mod timeseries;

@@ -4,6 +4,8 @@
 //! directory and its end record; sizes and offsets are 32-bit (no ZIP64: an archive over 4 GiB
 //! is refused).
 
+use crate::i18n::tr;
+
 /// A ZIP archive being written.
 #[derive(Debug, Default)]
 pub struct Archive {
@@ -30,7 +32,7 @@ impl Archive {
     /// # Errors
     /// The archive would pass 4 GiB or 65 535 files, or the name is over 65 535 bytes.
     pub fn add(&mut self, name: &str, data: &[u8]) -> Result<(), String> {
-        let too_big = || format!("{name}: the archive would pass 4 GiB or 65 535 files");
+        let too_big = || tr!("capture-archive-too-big", name = name);
         let offset = u32::try_from(self.bytes.len()).map_err(|_| too_big())?;
         let size = u32::try_from(data.len()).map_err(|_| too_big())?;
         let name_len = u16::try_from(name.len()).map_err(|_| too_big())?;

@@ -10,6 +10,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use super::archive::Archive;
+use crate::i18n::{self, tr};
 use crate::platform::Instant;
 
 /// Frames drawn before the picture: the window maps, the mesh is uploaded, shaders compile.
@@ -57,7 +58,7 @@ impl Capture {
             if at.elapsed() > CAPTURE_TIMEOUT
                 && let Ok(mut slot) = self.outcome.lock()
             {
-                slot.get_or_insert(Err("the window's pixels never arrived".to_owned()));
+                slot.get_or_insert(Err(tr!("capture-no-pixels")));
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }
             return;
@@ -68,8 +69,11 @@ impl Capture {
         }
         self.requested = Some(Instant::now());
         let (path, outcome, ctx2) = (self.path.clone(), Arc::clone(&self.outcome), ctx.clone());
+        // The language is a thread's own: the writing thread words a failure in the app's.
+        let language = i18n::language();
         ctx.request_screenshot(move |image| {
             std::thread::spawn(move || {
+                i18n::set_language(language);
                 let result = write_png(&path, &image);
                 if let Ok(mut slot) = outcome.lock() {
                     *slot = Some(result);
@@ -128,8 +132,13 @@ impl Recording {
     /// # Errors
     /// The folder cannot be created.
     pub fn start(dir: PathBuf, seconds: f64, now: Instant) -> Result<Self, String> {
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        std::fs::create_dir_all(&dir).map_err(|e| {
+            tr!(
+                "capture-cannot-create",
+                path = dir.display().to_string(),
+                error = e.to_string()
+            )
+        })?;
         Ok(Self::with_pictures(Pictures::Folder(dir), seconds, now))
     }
 
@@ -156,7 +165,7 @@ impl Recording {
     pub fn frame(&mut self, ctx: &egui::Context, now: Instant) -> Option<(String, bool)> {
         ctx.request_repaint();
         if let Some(e) = self.failure.lock().ok().and_then(|f| f.clone()) {
-            return Some((format!("recording stopped: {e}"), true));
+            return Some((tr!("capture-recording-stopped", error = e), true));
         }
         if now < self.until {
             if now >= self.next {
@@ -165,14 +174,19 @@ impl Recording {
                 let name = format!("frame-{:04}.png", self.requested);
                 let pictures = self.pictures.clone();
                 let (written, failure) = (Arc::clone(&self.written), Arc::clone(&self.failure));
+                // The language is a thread's own: the writing thread words a failure in the app's.
+                let language = i18n::language();
                 ctx.request_screenshot(move |image| {
-                    crate::platform::spawn(move || match pictures.keep(&name, &image) {
-                        Ok(()) => {
-                            written.fetch_add(1, Ordering::SeqCst);
-                        }
-                        Err(e) => {
-                            if let Ok(mut f) = failure.lock() {
-                                f.get_or_insert(e);
+                    crate::platform::spawn(move || {
+                        i18n::set_language(language);
+                        match pictures.keep(&name, &image) {
+                            Ok(()) => {
+                                written.fetch_add(1, Ordering::SeqCst);
+                            }
+                            Err(e) => {
+                                if let Ok(mut f) = failure.lock() {
+                                    f.get_or_insert(e);
+                                }
                             }
                         }
                     });
@@ -195,7 +209,11 @@ impl Recording {
                 });
                 if let Err(e) = saved {
                     return Some((
-                        format!("recording not saved: {}: {e}", name.display()),
+                        tr!(
+                            "capture-recording-not-saved",
+                            path = name.display().to_string(),
+                            error = e
+                        ),
                         true,
                     ));
                 }
@@ -203,10 +221,12 @@ impl Recording {
             }
         };
         Some((
-            format!(
-                "recorded {written} of {} pictures ({RECORD_FPS} per second) to {}",
-                self.requested,
-                place.display()
+            tr!(
+                "capture-recorded",
+                written = written,
+                requested = self.requested,
+                rate = i18n::localize(RECORD_FPS.to_string()),
+                path = place.display().to_string()
             ),
             written < self.requested,
         ))
@@ -228,7 +248,13 @@ impl Recording {
 /// # Errors
 /// The file cannot be created or written; the message names it.
 pub fn write_png(path: &Path, image: &egui::ColorImage) -> Result<(), String> {
-    let fail = |e: &dyn std::fmt::Display| format!("cannot write {}: {e}", path.display());
+    let fail = |e: &dyn std::fmt::Display| {
+        tr!(
+            "capture-cannot-write",
+            path = path.display().to_string(),
+            error = e.to_string()
+        )
+    };
     std::fs::write(path, png_bytes(image).map_err(|e| fail(&e))?).map_err(|e| fail(&e))
 }
 

@@ -6,6 +6,7 @@
 
 use rbcore::RotationModel;
 
+use crate::i18n::tr;
 use crate::lab::lessons::LessonSource;
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassGiven};
@@ -62,12 +63,12 @@ impl Tweaks {
     }
 }
 
-/// A positive finite number, or the problem in words.
-fn positive(key: &str, value: &str, unit: &str) -> Result<f64, String> {
-    match value.parse::<f64>() {
-        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
-        _ => Err(format!("{key}={value}: give a positive number{unit}")),
-    }
+/// A positive finite number, if `value` is one.
+fn positive(value: &str) -> Option<f64> {
+    value
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite() && *v > 0.0)
 }
 
 /// The scene of a query string (with or without its leading `?`).
@@ -88,32 +89,34 @@ pub fn parse(query: &str) -> LinkScene {
                     spin = value.parse::<usize>().ok().map(|axis| axis - 1);
                     Ok(())
                 }
-                _ => Err(format!(
-                    "spin={value}: the principal axis is 1, 2 or 3 (smallest to largest moment)"
-                )),
+                _ => Err(tr!("link-spin-invalid", value = &value)),
             },
             "compare" => variants(&value).map(|v| compare = Some(v)),
             "source" => match value.as_str() {
                 "exact" => Ok(InertiaSource::Exact),
                 "bbox" => Ok(InertiaSource::BoundingBox),
                 "points" => Ok(InertiaSource::PointMasses),
-                _ => Err(format!("source={value}: exact, bbox or points")),
+                _ => Err(tr!("link-source-invalid", value = &value)),
             }
             .map(|s| scene.settings.source = Some(s)),
             "model" => match value.as_str() {
                 "full" => Ok(RotationModel::Full),
                 "textbook" => Ok(RotationModel::Textbook),
-                _ => Err(format!("model={value}: full or textbook")),
+                _ => Err(tr!("link-model-invalid", value = &value)),
             }
             .map(|m| scene.settings.model = Some(m)),
-            "size" => positive(&key, &value, "").map(|v| scene.settings.scale = Some(v)),
-            "density" => positive(&key, &value, " of kg/m³")
-                .map(|v| scene.settings.mass = Some(MassGiven::Density(v))),
-            "mass" => positive(&key, &value, " of kg")
-                .map(|v| scene.settings.mass = Some(MassGiven::Mass(v))),
-            "rate" => {
-                positive(&key, &value, " of rad/s").map(|v| scene.settings.spin_rate = Some(v))
-            }
+            "size" => positive(&value)
+                .map(|v| scene.settings.scale = Some(v))
+                .ok_or_else(|| tr!("link-size-invalid", value = &value)),
+            "density" => positive(&value)
+                .map(|v| scene.settings.mass = Some(MassGiven::Density(v)))
+                .ok_or_else(|| tr!("link-density-invalid", value = &value)),
+            "mass" => positive(&value)
+                .map(|v| scene.settings.mass = Some(MassGiven::Mass(v)))
+                .ok_or_else(|| tr!("link-mass-invalid", value = &value)),
+            "rate" => positive(&value)
+                .map(|v| scene.settings.spin_rate = Some(v))
+                .ok_or_else(|| tr!("link-rate-invalid", value = &value)),
             "lesson" => crate::lab::lessons::find(&value)
                 .map(|l| lesson = Some(l.id.clone()))
                 .map_err(|e| format!("lesson={value}: {e}")),
@@ -122,7 +125,7 @@ pub fn parse(query: &str) -> LinkScene {
                     step = Some(k - 1);
                     Ok(())
                 }
-                _ => Err(format!("step={value}: the lesson's step, from 1")),
+                _ => Err(tr!("link-step-invalid", value = &value)),
             },
             "embed" => {
                 scene.embed = value != "0";
@@ -133,13 +136,12 @@ pub fn parse(query: &str) -> LinkScene {
                     scene.bench_frames = Some(n);
                     Ok(())
                 }
-                _ => Err(format!(
-                    "bench={value}: give the number of frames to measure"
-                )),
+                _ => Err(tr!("link-bench-invalid", value = &value)),
             },
-            _ => Err(format!(
-                "unknown link parameter {key:?} (known: {})",
-                KEYS.join(", ")
+            _ => Err(tr!(
+                "link-unknown-key",
+                key = format!("{key:?}"),
+                known = KEYS.join(", ")
             )),
         };
         if let Err(problem) = result {
@@ -153,7 +155,7 @@ pub fn parse(query: &str) -> LinkScene {
             .push(Command::OpenLesson(LessonSource::BuiltIn(id)));
         scene.commands.extend(step.map(Command::GoToStep));
     } else if step.is_some() {
-        scene.problems.push("step= needs lesson=".to_owned());
+        scene.problems.push(tr!("link-step-needs-lesson"));
     }
     scene.commands.extend(body.map(Command::LoadSample));
     scene.commands.extend(spin.map(Command::Preset));
@@ -173,10 +175,7 @@ pub fn share(lab: &Lab) -> Result<String, String> {
         .chain(SAMPLE_BODIES.iter())
         .find(|(label, ..)| label == name)
     else {
-        return Err(format!(
-            "{name} came from a file of yours, which a link cannot carry: a link opens only the \
-             built-in samples (send the file with the link)"
-        ));
+        return Err(tr!("link-own-file", name = name));
     };
     let s = lab.settings();
     let b = &s.body;
@@ -250,9 +249,10 @@ fn sample(value: &str) -> Result<String, String> {
         .map(|(label, ..)| (*label).to_owned())
         .ok_or_else(|| {
             let names: Vec<&str> = all().map(|(_, file, _)| *file).collect();
-            format!(
-                "sample={value}: no such sample (there are {})",
-                names.join(", ")
+            tr!(
+                "link-sample-unknown",
+                value = value,
+                samples = names.join(", ")
             )
         })
 }
@@ -265,13 +265,19 @@ fn variants(value: &str) -> Result<Vec<Variant>, String> {
             "bbox" => Ok(Variant::Source(InertiaSource::BoundingBox)),
             "points" => Ok(Variant::Source(InertiaSource::PointMasses)),
             "textbook" => Ok(Variant::Model(rbcore::RotationModel::Textbook)),
-            other => Err(format!(
-                "compare={value}: {other:?} is none of bbox, points, textbook"
+            other => Err(tr!(
+                "link-compare-unknown",
+                value = value,
+                name = format!("{other:?}")
             )),
         })
         .collect::<Result<_, _>>()?;
     if list.len() > MAX_COPIES {
-        return Err(format!("compare={value}: at most {MAX_COPIES} copies"));
+        return Err(tr!(
+            "link-compare-too-many",
+            value = value,
+            most = MAX_COPIES
+        ));
     }
     Ok(list)
 }

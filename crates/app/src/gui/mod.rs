@@ -9,6 +9,8 @@ use std::sync::Arc;
 
 use egui::Key;
 
+use crate::i18n::tr;
+
 mod archive;
 mod bench;
 pub mod capture;
@@ -63,6 +65,10 @@ pub struct LabApp {
     recording: Option<capture::Recording>,
     /// The widget that last took the keyboard's focus, in words (egui's description).
     focus: String,
+    /// The language "the system's" stands for (the desktop's locale, the browser's language).
+    system_language: crate::i18n::Language,
+    /// The display settings last applied to the context (its zoom, animations and voice).
+    display: Option<crate::lab::settings::DisplaySettings>,
 }
 
 impl std::fmt::Debug for LabApp {
@@ -108,6 +114,8 @@ impl LabApp {
             capture: None,
             recording: None,
             focus: String::new(),
+            system_language: crate::i18n::Language::of_system(),
+            display: None,
         })
     }
 
@@ -129,6 +137,12 @@ impl LabApp {
     /// One frame of the whole UI.
     pub fn show(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
+        let display = &self.lab.settings().display;
+        crate::i18n::set_language(display.language.unwrap_or(self.system_language));
+        if self.display.as_ref() != Some(display) {
+            panels::display::apply(&ctx, display);
+            self.display = Some(display.clone());
+        }
         let mut commands = Vec::new();
         self.shortcuts(&ctx, &mut commands);
         self.take_dropped(&ctx, &mut commands);
@@ -142,25 +156,22 @@ impl LabApp {
             ui.horizontal(|ui| {
                 // First, so that a long message cannot push it off the window.
                 if ui
-                    .small_button("Help")
-                    .on_hover_text("What you see, the controls and the keys (F1)")
+                    .small_button(tr!("top-help"))
+                    .on_hover_text(tr!("top-help-hover"))
                     .clicked()
                 {
                     self.shared.help_open = !self.shared.help_open;
                 }
                 if ui
-                    .small_button("Lessons")
-                    .on_hover_text("Guided activities: predict, try, measure, explain (L)")
+                    .small_button(tr!("top-lessons"))
+                    .on_hover_text(tr!("top-lessons-hover"))
                     .clicked()
                 {
                     self.shared.lessons_open = !self.shared.lessons_open;
                 }
                 if ui
-                    .small_button("Share")
-                    .on_hover_text(
-                        "Copy a link that opens this scene: the sample, its size, mass and spin, \
-                         the inertia and model, the comparison and the lesson's step",
-                    )
+                    .small_button(tr!("top-share"))
+                    .on_hover_text(tr!("top-share-hover"))
                     .clicked()
                 {
                     commands.push(Command::Notify(match link::share(&self.lab) {
@@ -168,7 +179,11 @@ impl LabApp {
                             let address = platform::share_address(&query);
                             ctx.copy_text(address.clone());
                             Message {
-                                text: format!("copied {address} ({})", platform::SHARE_HINT),
+                                text: tr!(
+                                    "top-share-copied",
+                                    address = address,
+                                    hint = platform::share_hint()
+                                ),
                                 error: false,
                             }
                         }
@@ -178,6 +193,8 @@ impl LabApp {
                         },
                     }));
                 }
+                panels::display::show(ui, &mut draft.display, self.system_language);
+                ui.separator();
                 message_text(ui, self.lab.message(), &mut commands);
             });
         });
@@ -250,9 +267,9 @@ impl LabApp {
                 ctx.content_rect().center(),
                 egui::Align2::CENTER_CENTER,
                 if self.lab.drop_may_add_parts() {
-                    "Drop a mesh to add it as a part (a body file to open it)"
+                    tr!("drop-adds-part")
                 } else {
-                    "Drop to load"
+                    tr!("drop-loads")
                 },
                 egui::FontId::proportional(32.0),
                 egui::Color32::WHITE,
@@ -294,7 +311,7 @@ impl LabApp {
             commands.push(match ready {
                 Some(source) => Command::Drop(source),
                 None => Command::Notify(Message {
-                    text: platform::NO_FILE_CHOSEN.to_owned(),
+                    text: platform::no_file_chosen(),
                     error: false,
                 }),
             });
@@ -312,7 +329,7 @@ impl LabApp {
     /// The window's or page's title names the body; the page also publishes its figures.
     fn show_status(&mut self, ctx: &egui::Context) {
         let primary = self.lab.primary();
-        let title = format!("Inertia Lab — {}", primary.body().name);
+        let title = tr!("window-title", body = &primary.body().name);
         if title != self.title {
             platform::set_title(ctx, &title);
             self.title = title;
@@ -349,6 +366,7 @@ impl LabApp {
             lesson: lesson.map(|r| r.lesson.id.clone()).unwrap_or_default(),
             lesson_step: lesson.map(LessonRun::progress).unwrap_or_default(),
             lessons: crate::lab::lessons::built_in().len(),
+            language: crate::i18n::language().code(),
             loading: self.lab.loading().map(|l| l.stage.to_string()),
             view: [view.left(), view.top(), view.width(), view.height()],
         });
@@ -413,7 +431,7 @@ impl LabApp {
                 fps: self.shared.motion_fps,
             },
             _ => Command::Notify(Message {
-                text: platform::NO_FILE_CHOSEN.to_owned(),
+                text: platform::no_file_chosen(),
                 error: false,
             }),
         });
@@ -502,12 +520,16 @@ fn message_text(ui: &mut egui::Ui, message: Option<&Message>, commands: &mut Vec
                 ui.visuals().text_color()
             };
             ui.colored_label(color, &m.text);
-            if ui.small_button("x").on_hover_text("dismiss").clicked() {
+            if ui
+                .small_button("x")
+                .on_hover_text(tr!("message-dismiss"))
+                .clicked()
+            {
                 commands.push(Command::DismissMessage);
             }
         }
         None => {
-            ui.label("Inertia Lab — exact inertia vs the bounding-box guess.");
+            ui.label(tr!("message-none"));
         }
     }
 }

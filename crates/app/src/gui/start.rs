@@ -35,6 +35,8 @@ pub struct Start {
     pub embed: bool,
     /// A link's settings, applied again after `commands` (a lesson's step sets some up).
     pub tweaks: super::link::Tweaks,
+    /// The language asked for (`--lang`, `?lang=`), over the saved one.
+    pub language: Option<crate::i18n::Language>,
 }
 
 impl Start {
@@ -55,6 +57,10 @@ impl Start {
         ctx: &egui::Context,
     ) -> Result<LabApp, LabError> {
         let scripted = self.scripted();
+        let mut settings = settings;
+        if let Some(language) = self.language {
+            settings.display.language = Some(language);
+        }
         let mut app = LabApp::new(settings, gl, ctx)?;
         app.shared.embed = self.embed;
         app.shared.lessons_open = self.embed;

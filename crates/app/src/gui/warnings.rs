@@ -4,25 +4,27 @@
 
 use massprops::{Defect, Warning};
 
+use crate::i18n::{localize, sci, tr};
+
 /// A one-line title: "Duplicate faces (12)".
 pub fn title(w: &Warning) -> String {
     let what = match &w.defect {
-        Defect::DuplicateFaces => "Duplicate faces",
-        Defect::OppositeDuplicateFaces => "Internal walls",
-        Defect::OverlappingShells { .. } => "Overlapping parts",
-        Defect::NestedShell { .. } => "Part inside a part",
-        Defect::SelfOverlappingShell { .. } => "Part passing through itself",
-        Defect::CracksClosed { .. } => "Cracks closed",
-        Defect::HolesCapped { .. } => "Holes capped",
-        Defect::NonplanarFaces { .. } => "Non-flat polygons",
-        Defect::TwoCornerFaces { .. } => "Faces with two corners",
-        Defect::StlTriangleCount { .. } => "Wrong triangle count in the file",
-        Defect::UpAxisNotApplied { .. } => "The file's up axis",
-        Defect::InconsistentWinding { .. } => "Faces pointing the wrong way",
-        Defect::Flipped { whole: true, .. } => "Inside-out mesh",
-        Defect::Flipped { .. } => "Inside-out parts",
-        Defect::DegenerateFaces => "Faces without area",
-        Defect::NonmanifoldEdges { .. } => "Parts touching along edges",
+        Defect::DuplicateFaces => tr!("warnings-duplicate-faces"),
+        Defect::OppositeDuplicateFaces => tr!("warnings-internal-walls"),
+        Defect::OverlappingShells { .. } => tr!("warnings-overlapping-parts"),
+        Defect::NestedShell { .. } => tr!("warnings-nested-part"),
+        Defect::SelfOverlappingShell { .. } => tr!("warnings-self-overlapping-part"),
+        Defect::CracksClosed { .. } => tr!("warnings-cracks-closed"),
+        Defect::HolesCapped { .. } => tr!("warnings-holes-capped"),
+        Defect::NonplanarFaces { .. } => tr!("warnings-nonplanar-faces"),
+        Defect::TwoCornerFaces { .. } => tr!("warnings-two-corner-faces"),
+        Defect::StlTriangleCount { .. } => tr!("warnings-stl-triangle-count"),
+        Defect::UpAxisNotApplied { .. } => tr!("warnings-up-axis"),
+        Defect::InconsistentWinding { .. } => tr!("warnings-inconsistent-winding"),
+        Defect::Flipped { whole: true, .. } => tr!("warnings-inside-out-mesh"),
+        Defect::Flipped { .. } => tr!("warnings-inside-out-parts"),
+        Defect::DegenerateFaces => tr!("warnings-degenerate-faces"),
+        Defect::NonmanifoldEdges { .. } => tr!("warnings-nonmanifold-edges"),
     };
     format!("{what} ({})", w.count)
 }
@@ -33,37 +35,51 @@ pub fn title(w: &Warning) -> String {
 pub fn effect(w: &Warning) -> Option<String> {
     match w.defect {
         Defect::NonplanarFaces { uncertainty } => {
-            return Some(format!("± {} mass", percent(uncertainty)));
+            return Some(tr!(
+                "warnings-effect-uncertainty",
+                percent = percent(uncertainty)
+            ));
         }
         // The caps' share reads more plainly than what the holes "remove".
         Defect::HolesCapped { .. } => {
             let added = -w.effect_on_mass?;
-            let verb = if added >= 0.0 { "add" } else { "remove" };
-            return Some(format!("caps {verb} {} mass", percent(added.abs())));
+            let share = percent(added.abs());
+            return Some(if added >= 0.0 {
+                tr!("warnings-effect-caps-add", percent = share)
+            } else {
+                tr!("warnings-effect-caps-remove", percent = share)
+            });
         }
         _ => {}
     }
     let e = w.effect_on_mass?;
     Some(if e == 0.0 {
-        "no effect on mass".to_owned()
+        tr!("warnings-effect-none")
+    } else if e > 0.0 {
+        tr!("warnings-effect-more", percent = percent(e))
     } else {
-        let sign = if e > 0.0 { "+" } else { "−" };
-        format!("{sign}{} mass", percent(e.abs()))
+        tr!("warnings-effect-less", percent = percent(e.abs()))
     })
 }
 
-/// `x` (a fraction) as a percentage with two significant digits: "9.4 %", "0.0012 %", "1.2e-5 %".
+/// `x` (a fraction) as a percentage with two significant digits: "9.4 %", "0.0012 %", "1.2e-5 %",
+/// with the language's decimal separator.
 fn percent(x: f64) -> String {
     let p = x * 100.0;
     if p == 0.0 || !p.is_finite() {
-        return format!("{p} %");
+        return localize(format!("{p} %"));
     }
     let digits = (1.0 - p.abs().log10().floor()).max(0.0) as usize;
-    if digits > 4 {
+    localize(if digits > 4 {
         format!("{p:.1e} %")
     } else {
         format!("{p:.digits$} %")
-    }
+    })
+}
+
+/// A whole number of the library's (a file's triangle count) as a message's count.
+fn count(n: u64) -> i64 {
+    i64::try_from(n).unwrap_or(i64::MAX)
 }
 
 /// The warning in full, as the side panel shows it under its title: no command-line flags;
@@ -72,15 +88,8 @@ fn percent(x: f64) -> String {
 pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
     let faces = faces(&w.faces, lines);
     match &w.defect {
-        Defect::DuplicateFaces => format!(
-            "These faces repeat another face exactly ({faces}). Each is counted once here; \
-             counted twice they would have added their volume again. Remove the duplicates in \
-             your modelling program."
-        ),
-        Defect::OppositeDuplicateFaces => format!(
-            "These faces are listed together with their own reverse ({faces}): walls between two \
-             parts, which enclose nothing. They are left out, so the parts count as one solid."
-        ),
+        Defect::DuplicateFaces => tr!("warnings-duplicate-faces-text", faces = faces),
+        Defect::OppositeDuplicateFaces => tr!("warnings-internal-walls-text", faces = faces),
         Defect::OverlappingShells {
             volume,
             uncertainty,
@@ -88,15 +97,18 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             candidates,
             ..
         } => {
-            let mut text = format!(
-                "Closed parts overlap ({faces}): the volume they share, about {volume:.3e} ± \
-                 {uncertainty:.1e} (mesh units cubed), is counted twice, so the mass shown is too \
-                 high by that much. Join the parts (a boolean union) in your modelling program."
+            let mut text = tr!(
+                "warnings-overlapping-parts-text",
+                faces = faces,
+                volume = sci(*volume, 3),
+                uncertainty = sci(*uncertainty, 1),
             );
             if compared < candidates {
-                text.push_str(&format!(
-                    " Only {compared} of {candidates} pairs of parts could be compared within the \
-                     work allowed; others may overlap too."
+                text.push(' ');
+                text.push_str(&tr!(
+                    "warnings-overlapping-parts-uncompared",
+                    compared = *compared,
+                    candidates = *candidates,
                 ));
             }
             text
@@ -106,105 +118,71 @@ pub fn warning_text(w: &Warning, lines: &[u32]) -> String {
             uncertainty,
             total_effect,
             ..
-        } => format!(
-            "A closed part passes through itself ({faces}): the volume where it does, about \
-             {volume:.3e} ± {uncertainty:.1e} (mesh units cubed), is counted twice, so the mass \
-             shown is too high by that much ({} with any overlap between parts). Remove the \
-             self-intersection (a boolean union of the part with itself) in your modelling \
-             program.",
-            percent(*total_effect)
+        } => tr!(
+            "warnings-self-overlapping-part-text",
+            faces = faces,
+            volume = sci(*volume, 3),
+            uncertainty = sci(*uncertainty, 1),
+            total = percent(*total_effect),
         ),
-        Defect::NestedShell { .. } => format!(
-            "A closed part lies inside another and points outward ({faces}), so its volume counts \
-             a second time. If it is meant as a hollow, reverse its faces in your modelling \
-             program; if it is a separate part inside, remove it or give it its own density."
-        ),
-        Defect::CracksClosed { largest_gap } => format!(
-            "Vertices that should be one were a hair apart (at most {largest_gap:.2e}, the \
-             rounding of the file's numbers; {faces}). They were merged, which closes the mesh; \
-             the numbers barely change."
+        Defect::NestedShell { .. } => tr!("warnings-nested-part-text", faces = faces),
+        Defect::CracksClosed { largest_gap } => tr!(
+            "warnings-cracks-closed-text",
+            gap = sci(*largest_gap, 2),
+            faces = faces,
         ),
         Defect::HolesCapped {
             cap_area_fraction, ..
-        } => format!(
-            "The mesh has holes ({faces}). Each was closed by a fan from its centre; the caps \
-             are {} of the surface. The effect on the mass says how much the numbers depend on \
-             how the holes are closed: close them in your modelling program if it is large.",
-            percent(*cap_area_fraction)
+        } => tr!(
+            "warnings-holes-capped-text",
+            faces = faces,
+            share = percent(*cap_area_fraction),
         ),
-        Defect::NonplanarFaces { .. } => format!(
-            "Some polygons are not flat ({faces}); each is counted as if pressed flat onto its \
-             best-fit plane, and splitting them into triangles another way would change the mass \
-             by up to the amount shown. Triangulate the mesh in your modelling program for exact \
-             numbers."
+        Defect::NonplanarFaces { .. } => tr!("warnings-nonplanar-faces-text", faces = faces),
+        Defect::TwoCornerFaces { lines } => {
+            tr!("warnings-two-corner-faces-text", lines = list(lines))
+        }
+        Defect::StlTriangleCount { header, records } => tr!(
+            "warnings-stl-triangle-count-text",
+            header = count(*header),
+            records = count(*records),
         ),
-        Defect::TwoCornerFaces { lines } => format!(
-            "The file has faces with fewer than three corners (line {}), which are lines, not \
-             faces: they were skipped.",
-            list(lines)
-        ),
-        Defect::StlTriangleCount { header, records } => format!(
-            "The file's header says it holds {header} triangles, but {records} follow it: all \
-             {records} were read. The program that wrote it left the count wrong; nothing needs \
-             fixing here."
-        ),
-        Defect::UpAxisNotApplied { axis } => format!(
-            "The file says {} is up. Its axes are used as they are, as robot tools (rviz, \
-             MoveIt, Gazebo) use a robot's meshes, so the numbers are in the file's own axes.",
-            axis.trim_end_matches("_UP")
-        ),
+        Defect::UpAxisNotApplied { axis } => {
+            tr!("warnings-up-axis-text", axis = axis.trim_end_matches("_UP"),)
+        }
         Defect::InconsistentWinding { face_pairs } => {
             let pairs: Vec<String> = face_pairs
                 .iter()
-                .map(|&(a, b)| format!("{} and {}", face(a, lines), face(b, lines)))
+                .map(|&(a, b)| tr!("warnings-face-pair", a = face(a, lines), b = face(b, lines)))
                 .collect();
             if w.effect_on_mass.is_some() {
-                return format!(
-                    "Some faces pointed the wrong way (between {}): they were turned to agree \
-                     with their neighbours, and the numbers are those of the mesh made \
-                     consistent. Recalculate the normals in your modelling program to fix the \
-                     file itself.",
-                    pairs.join(", ")
-                );
+                return tr!("warnings-winding-fixed-text", pairs = pairs.join(", "));
             }
-            format!(
-                "Some faces point the wrong way (between faces {}: one of each pair is \
-                 flipped) and cannot all be made to agree (a one-sided surface); they count as \
-                 negative volume, so the numbers are wrong. Recalculate the normals (make them \
-                 consistent) in your modelling program.",
-                pairs.join(", ")
-            )
+            tr!("warnings-winding-text", pairs = pairs.join(", "))
         }
-        Defect::Flipped { whole: true, .. } => "All faces point inwards; the numbers shown are \
-             those of the correctly oriented mesh, so nothing needs fixing for them here."
-            .to_owned(),
-        Defect::Flipped { .. } => format!(
-            "Some separate parts point inwards ({faces}); they were turned outward (a part \
-             cannot have negative mass). Flip their normals in your modelling program."
-        ),
-        Defect::DegenerateFaces => format!(
-            "These faces have no area ({faces}); they change nothing, but often mark a \
-             modelling mistake worth cleaning up."
-        ),
-        Defect::NonmanifoldEdges { .. } => format!(
-            "Edges shared by more than two faces ({faces}): parts that touch there are each \
-             counted in full, which is right when they only touch."
-        ),
+        Defect::Flipped { whole: true, .. } => tr!("warnings-inside-out-mesh-text"),
+        Defect::Flipped { .. } => tr!("warnings-inside-out-parts-text", faces = faces),
+        Defect::DegenerateFaces => tr!("warnings-degenerate-faces-text", faces = faces),
+        Defect::NonmanifoldEdges { .. } => tr!("warnings-nonmanifold-edges-text", faces = faces),
     }
 }
 
-/// "face 12 (line 40)" or "face 12".
+/// "face 12 (line 40)" or "face 12" (the app's own wording of `inertia_io::wording::face_line`,
+/// which is the command line's English).
 fn face(f: usize, lines: &[u32]) -> String {
-    format!("face {}", inertia_io::wording::face_line(f, lines))
+    match lines.get(f) {
+        Some(&line) => tr!("warnings-face-line", face = f, line = line),
+        None => tr!("warnings-face", face = f),
+    }
 }
 
 /// "e.g. face 12 (line 40), face 13 (line 41)".
 fn faces(list: &[usize], lines: &[u32]) -> String {
     if list.is_empty() {
-        return "no face of the file".to_owned();
+        return tr!("warnings-no-face");
     }
     let named: Vec<String> = list.iter().map(|&f| face(f, lines)).collect();
-    format!("e.g. {}", named.join(", "))
+    tr!("warnings-example-faces", faces = named.join(", "))
 }
 
 fn list(indices: &[usize]) -> String {
@@ -214,6 +192,178 @@ fn list(indices: &[usize]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[path = "/tmp/i18n_old/warnings.rs"]
+    #[allow(dead_code)]
+    mod old;
+
+    #[test]
+    fn i18n_tmp_warnings_english_unchanged() {
+        let w = |defect: Defect, faces: Vec<usize>, effect: Option<f64>| Warning {
+            defect,
+            count: faces.len().max(1),
+            faces,
+            effect_on_mass: effect,
+        };
+        let all = [
+            w(Defect::DuplicateFaces, vec![6, 7], Some(1.0 / 3.0)),
+            w(Defect::DuplicateFaces, vec![], Some(-0.2)),
+            w(Defect::OppositeDuplicateFaces, vec![1, 8], Some(0.0)),
+            w(
+                Defect::OverlappingShells {
+                    pairs: vec![(0, 1)],
+                    volume: 2.0,
+                    uncertainty: 0.01,
+                    compared: 1,
+                    candidates: 3,
+                    uncompared_bound: 0.5,
+                },
+                vec![0, 6],
+                Some(0.17),
+            ),
+            w(
+                Defect::OverlappingShells {
+                    pairs: vec![(0, 1)],
+                    volume: 2.0,
+                    uncertainty: 0.01,
+                    compared: 3,
+                    candidates: 3,
+                    uncompared_bound: 0.5,
+                },
+                vec![0, 6],
+                Some(0.17),
+            ),
+            w(
+                Defect::SelfOverlappingShell {
+                    shells: vec![1],
+                    volume: 1.5e-3,
+                    uncertainty: 2e-5,
+                    crossing_faces: 4,
+                    total_effect: 0.0123,
+                    total_uncertainty: 0.001,
+                },
+                vec![3],
+                Some(0.01),
+            ),
+            w(
+                Defect::NestedShell { shells: vec![1] },
+                vec![6],
+                Some(0.036),
+            ),
+            w(
+                Defect::CracksClosed { largest_gap: 1e-8 },
+                vec![1],
+                Some(1e-9),
+            ),
+            w(
+                Defect::HolesCapped {
+                    boundary_edges: 4,
+                    cap_area_fraction: 0.2,
+                },
+                vec![1, 2],
+                Some(-1.0 / 6.0),
+            ),
+            w(
+                Defect::HolesCapped {
+                    boundary_edges: 4,
+                    cap_area_fraction: 0.2,
+                },
+                vec![1, 2],
+                Some(0.05),
+            ),
+            w(
+                Defect::HolesCapped {
+                    boundary_edges: 4,
+                    cap_area_fraction: 0.2,
+                },
+                vec![1, 2],
+                None,
+            ),
+            w(
+                Defect::NonplanarFaces { uncertainty: 0.003 },
+                vec![1, 2, 5],
+                None,
+            ),
+            w(
+                Defect::TwoCornerFaces {
+                    lines: vec![11, 14],
+                },
+                vec![],
+                Some(0.0),
+            ),
+            w(
+                Defect::StlTriangleCount {
+                    header: 0,
+                    records: 12,
+                },
+                vec![],
+                None,
+            ),
+            w(
+                Defect::UpAxisNotApplied {
+                    axis: "Y_UP".to_owned(),
+                },
+                vec![],
+                None,
+            ),
+            w(
+                Defect::InconsistentWinding {
+                    face_pairs: vec![(0, 5), (2, 40)],
+                },
+                vec![0, 5],
+                None,
+            ),
+            w(
+                Defect::InconsistentWinding {
+                    face_pairs: vec![(0, 5)],
+                },
+                vec![0, 5],
+                Some(0.0),
+            ),
+            w(
+                Defect::Flipped {
+                    shells: vec![1],
+                    whole: false,
+                },
+                vec![6],
+                Some(-1.0),
+            ),
+            w(
+                Defect::Flipped {
+                    shells: vec![1],
+                    whole: true,
+                },
+                vec![6],
+                Some(f64::NAN),
+            ),
+            w(Defect::DegenerateFaces, vec![12, 13], Some(0.0)),
+            w(
+                Defect::NonmanifoldEdges {
+                    edges: vec![((3, 7), vec![1, 4, 9])],
+                },
+                vec![1, 4, 9],
+                Some(1e-3),
+            ),
+        ];
+        let lines: Vec<u32> = (10..30).collect();
+        for x in &all {
+            for l in [&lines[..], &[]] {
+                assert_eq!(warning_text(x, l), old::warning_text(x, l));
+            }
+            assert_eq!(title(x), old::title(x));
+            assert_eq!(effect(x), old::effect(x));
+            crate::i18n::set_language(crate::i18n::Language::German);
+            println!("{} {:?}\n{}", title(x), effect(x), warning_text(x, &lines));
+            crate::i18n::set_language(crate::i18n::Language::Spanish);
+            println!(
+                "{} {:?}\n{}\n",
+                title(x),
+                effect(x),
+                warning_text(x, &lines)
+            );
+            crate::i18n::set_language(crate::i18n::Language::English);
+        }
+    }
 
     fn warning(defect: Defect, faces: Vec<usize>, effect: Option<f64>) -> Warning {
         Warning {

@@ -22,7 +22,8 @@ pub enum Command {
     Preset(usize),
     /// New settings, applied live to every specimen.
     Settings(Box<AppSettings>),
-    /// Settings back to defaults.
+    /// Settings back to defaults, except the display's (the language, larger text, reduced
+    /// motion): a person who needs those needs them after a reset too.
     ResetSettings,
     /// Load a mesh file on the worker thread; it replaces every specimen's body.
     LoadFile(PathBuf),

@@ -10,6 +10,7 @@
 use rbcore::{Polhode, RotationModel};
 
 use super::Lab;
+use crate::i18n::{fixed, localize, tr};
 use crate::lab::specimen::TURNING_OVER;
 
 /// The description of the primary specimen's motion.
@@ -25,64 +26,59 @@ pub fn description(lab: &Lab) -> String {
         0.0
     };
     let mut text = if omega.abs() < 1e-9 {
-        format!("The {name} is at rest.")
+        tr!("describe-at-rest", name = name)
     } else {
         let w = s.sim().diagnostics().omega_principal;
         let main = (0..3)
             .max_by(|&i, &j| w[i].abs().total_cmp(&w[j].abs()))
             .unwrap_or(0);
-        format!(
-            "The {name} spins at {} rad/s about its angular momentum, mostly about axis {}.",
-            two_digits(omega),
-            main + 1
+        tr!(
+            "describe-spins",
+            name = name,
+            rate = two_digits(omega),
+            axis = main + 1
         )
+    };
+    // Each further sentence follows a space (a message's text cannot begin with one).
+    let mut add = |sentence: String| {
+        text.push(' ');
+        text.push_str(&sentence);
     };
     let history = s.history();
     match s.polhode() {
         Polhode::Circles { axis, .. } if s.cone_angle() >= TURNING_OVER => {
             match (history.last_reversal(), s.turn_over_interval()) {
-                (Some(last), Some(half)) => text.push_str(&format!(
-                    " Axis 2 turns over: ω₂ reversed at t = {last:.1} s; the next reversal is \
-                     predicted at t = {:.1} s.",
-                    last + half
+                (Some(last), Some(half)) => add(tr!(
+                    "describe-reversed",
+                    last = fixed(last, 1),
+                    next = fixed(last + half, 1)
                 )),
-                (None, Some(half)) => text.push_str(&format!(
-                    " Axis 2 will turn over, every {half:.1} s, while L circles axis {}.",
-                    axis + 1
+                (None, Some(half)) => add(tr!(
+                    "describe-will-turn-over",
+                    half = fixed(half, 1),
+                    axis = axis + 1
                 )),
                 (_, None) => {}
             }
         }
-        Polhode::Circles { axis, .. } => text.push_str(&format!(
-            " It wobbles about axis {}, its spin axis within {:.0}° of it, and never turns \
-             over.",
-            axis + 1,
-            s.cone_angle().to_degrees()
+        Polhode::Circles { axis, .. } => add(tr!(
+            "describe-wobbles",
+            axis = axis + 1,
+            angle = fixed(s.cone_angle().to_degrees(), 0)
         )),
-        Polhode::Steady { axis } => {
-            text.push_str(&format!(" It turns steadily about axis {}.", axis + 1));
-        }
-        Polhode::Separatrix => {
-            text.push_str(" It is on the separatrix: exactly between the two kinds of motion.");
-        }
+        Polhode::Steady { axis } => add(tr!("describe-steady", axis = axis + 1)),
+        Polhode::Separatrix => add(tr!("describe-separatrix")),
         Polhode::AtRest | Polhode::Spherical => {}
     }
     if s.sim().settings().model == RotationModel::Textbook {
-        text.push_str(" The textbook model is on: without the term ω × Iω nothing turns over.");
+        add(tr!("describe-textbook"));
     }
     if lab.is_paused() {
-        text.push_str(&format!(" Paused at t = {:.1} s.", s.sim().time()));
+        add(tr!("describe-paused", time = fixed(s.sim().time(), 1)));
     }
     let copies = lab.specimens().len() - 1;
     if copies > 0 {
-        text.push_str(&format!(
-            " {copies} compared {} beside it.",
-            if copies == 1 {
-                "copy runs"
-            } else {
-                "copies run"
-            }
-        ));
+        add(tr!("describe-copies", copies = copies));
     }
     text
 }
@@ -94,39 +90,48 @@ pub fn lesson(lab: &Lab) -> Option<String> {
     let run = lab.lesson()?;
     let step = run.current();
     let paragraph = |text: &str| text.split_whitespace().collect::<Vec<_>>().join(" ");
-    let mut text = format!(
-        "Lesson: {}. Step {} of {}: {}",
-        run.lesson.title,
-        run.step + 1,
-        run.lesson.steps.len(),
-        paragraph(&step.text)
+    let mut text = tr!(
+        "describe-lesson",
+        title = &run.lesson.title,
+        step = run.step + 1,
+        steps = run.lesson.steps.len(),
+        text = paragraph(&step.text)
     );
+    let mut add = |sentence: String| {
+        text.push(' ');
+        text.push_str(&sentence);
+    };
     if let Some(p) = &step.predict {
         match run.prediction {
-            None => text.push_str(&format!(
-                " Predict: {} Choices: {}.",
-                p.question,
-                p.choices.join("; ")
+            None => add(tr!(
+                "describe-predict",
+                question = &p.question,
+                choices = p.choices.join("; ")
             )),
-            Some(k) => text.push_str(&format!(" You predicted: {}.", p.choices[k])),
+            Some(k) => add(tr!("describe-predicted", choice = &p.choices[k])),
         }
     }
     if !run.awaits_prediction() && !step.checks.is_empty() {
         let held = run.checks.iter().filter(|c| c.met).count();
-        text.push_str(&format!(" {held} of {} checks held.", step.checks.len()));
+        add(tr!(
+            "describe-checks-held",
+            held = held,
+            checks = step.checks.len()
+        ));
     }
     if run.step_done() {
-        text.push_str(&format!(" Done. {}", paragraph(&step.explain)));
+        add(tr!("describe-done", explain = paragraph(&step.explain)));
     }
     Some(text)
 }
 
-/// `v` to two significant digits, as text.
+/// `v` to two significant digits, as text in the language's decimal separator.
 fn two_digits(v: f64) -> String {
-    significant(v, 2)
+    localize(significant(v, 2))
 }
 
-/// `v` to `digits` significant digits, without an exponent for the sizes a spin has.
+/// `v` to `digits` significant digits, without an exponent for the sizes a spin has, in the C
+/// locale.
 fn significant(v: f64, digits: i32) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
@@ -174,5 +179,41 @@ mod tests {
         lab.apply(Command::Preset(2));
         let steady = description(&lab);
         assert!(steady.contains("wobbles about axis 3"), "{steady}");
+    }
+
+    /// In German the description takes the decimal comma, and the compared copies their plural
+    /// in each language.
+    #[test]
+    fn the_description_speaks_the_thread_s_language() {
+        use crate::i18n::{Arg, Language, set_language, text_in};
+        let mut lab = Lab::new(crate::lab::settings::AppSettings::default()).expect("the lab");
+        lab.apply(Command::Preset(1));
+        let half = lab.primary().turn_over_interval().expect("a flip");
+        set_language(Language::German);
+        let german = description(&lab);
+        set_language(Language::English);
+        let every = format!("alle {half:.1} s").replace('.', ",");
+        assert!(
+            german.contains("überwiegend um Achse 2") && german.contains(&every),
+            "{german}"
+        );
+        let copies =
+            |language, n: usize| text_in(language, "describe-copies", &[("copies", Arg::from(n))]);
+        assert_eq!(
+            copies(Language::English, 1),
+            "1 compared copy runs beside it."
+        );
+        assert_eq!(
+            copies(Language::English, 2),
+            "2 compared copies run beside it."
+        );
+        assert_eq!(
+            copies(Language::German, 1),
+            "Eine verglichene Kopie läuft daneben."
+        );
+        assert_eq!(
+            copies(Language::Spanish, 3),
+            "3 copias comparadas se ejecutan a su lado."
+        );
     }
 }

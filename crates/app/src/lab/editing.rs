@@ -3,6 +3,7 @@
 //! moves one part; see [`LoadedBody::edit_part`]), remove one, save the body file. Each leaves
 //! every specimen running with p and L kept, or changes nothing and says why.
 
+use crate::i18n::tr;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -21,7 +22,7 @@ impl Lab {
         let parts = self.current_parts(false)?;
         let n = parts.len();
         self.rebody(parts)?;
-        self.info(format!("{n} parts"));
+        self.info(tr!("lab-split", parts = n));
         Ok(())
     }
 
@@ -91,7 +92,11 @@ impl Lab {
     pub(super) fn save_body(&mut self, path: &Path) -> Result<(), LabError> {
         let parts = self.current_parts(true)?;
         let written = parts::save(&parts, path)?;
-        self.info(format!("saved {} ({written})", path.display()));
+        self.info(tr!(
+            "lab-saved",
+            path = path.display().to_string(),
+            what = written
+        ));
         Ok(())
     }
 

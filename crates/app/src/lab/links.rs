@@ -4,6 +4,7 @@
 use super::robot;
 use super::settings::InertiaSource;
 use super::{Command, Lab, LabError, Message, RunMode, SpecimenId, Variant};
+use crate::i18n::tr;
 
 impl Lab {
     /// The command that shows the loaded robot's link called `name` (a message naming the links
@@ -49,18 +50,17 @@ impl Lab {
         if let Some(m) = &mut self.robot {
             m.shown = link;
         }
-        // The whole robot stands still at its zero pose; a link is there to be spun.
-        self.run_mode = if link.is_none() {
+        // The whole robot stands still at its zero pose; a link is there to be spun (when the
+        // user lets things move by themselves).
+        self.run_mode = if link.is_none() || self.settings.display.reduced_motion {
             RunMode::Paused
         } else {
             RunMode::Running
         };
         let mut text = match (link, stated) {
-            (None, _) => "the whole robot at its zero pose, with each link's ellipsoids".to_owned(),
-            (Some(_), true) => format!(
-                "link {name}: its collision geometry, spinning beside a copy with the inertia its file states"
-            ),
-            (Some(_), false) => format!("link {name}: its collision geometry (no inertia stated)"),
+            (None, _) => tr!("lab-whole-robot"),
+            (Some(_), true) => tr!("lab-link-stated", link = &name),
+            (Some(_), false) => tr!("lab-link-unstated", link = &name),
         };
         // A link that states an inertia spins beside a copy that uses it (the ghost).
         let copy = Variant::Source(InertiaSource::Stated);
@@ -73,8 +73,10 @@ impl Lab {
             self.next_id += 1;
             let body = self.primary().body_arc().clone();
             if let Err(e) = self.start_all(&plan, &body, self.preset_axis) {
-                text = format!(
-                    "link {name}: its collision geometry; its stated inertia cannot be simulated: {e}"
+                text = tr!(
+                    "lab-link-not-simulated",
+                    link = &name,
+                    error = e.to_string()
                 );
             }
         }

@@ -35,6 +35,7 @@ mod tests;
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::i18n::tr;
 use crate::platform::Instant;
 
 use body::LoadedBody;
@@ -97,6 +98,16 @@ impl std::fmt::Debug for Waker {
     }
 }
 
+/// How a body just opened starts: spinning, or waiting for Run where the user asked for reduced
+/// motion (nothing on the screen moves unless they start it).
+fn first_run_mode(settings: &AppSettings) -> RunMode {
+    if settings.display.reduced_motion {
+        RunMode::Paused
+    } else {
+        RunMode::Running
+    }
+}
+
 impl Lab {
     /// The lab on the default T-handle with `settings` (falls back to defaults if they cannot
     /// build a simulation).
@@ -117,11 +128,11 @@ impl Lab {
                 }
             };
         Ok(Self {
+            run_mode: first_run_mode(&settings),
             settings,
             specimens: vec![primary],
             next_id: 1,
             preset_axis: axis,
-            run_mode: RunMode::Running,
             clock: FrameClock::new(),
             loading: None,
             robot: None,
@@ -177,7 +188,10 @@ impl Lab {
             Command::Reset => self.restart(self.preset_axis)?,
             Command::Preset(axis) => self.restart(axis.min(2))?,
             Command::Settings(s) => self.set_settings(*s)?,
-            Command::ResetSettings => self.set_settings(AppSettings::default())?,
+            Command::ResetSettings => self.set_settings(AppSettings {
+                display: self.settings.display.clone(),
+                ..AppSettings::default()
+            })?,
             Command::LoadFile(path) => self.start_load(LoadSource::Path(path), Purpose::Open),
             Command::LoadFiles(files) => self.start_load(LoadSource::Files(files), Purpose::Open),
             Command::AddPart(path) => {
@@ -206,7 +220,11 @@ impl Lab {
                     path: path.clone(),
                     message: e.to_string(),
                 })?;
-                self.info(format!("wrote {n} samples to {}", path.display()));
+                self.info(tr!(
+                    "lab-wrote-samples",
+                    samples = n,
+                    path = path.display().to_string()
+                ));
             }
             Command::ExportMotion {
                 specimen,
@@ -219,9 +237,12 @@ impl Lab {
                     path: path.clone(),
                     message: e.to_string(),
                 })?;
-                self.info(format!(
-                    "wrote {frames} keyframes ({seconds} s at {fps} fps) to {}",
-                    path.display()
+                self.info(tr!(
+                    "lab-wrote-keyframes",
+                    frames = frames,
+                    seconds = crate::i18n::localize(seconds.to_string()),
+                    fps = crate::i18n::localize(fps.to_string()),
+                    path = path.display().to_string()
                 ));
             }
             Command::Poke {
@@ -360,11 +381,11 @@ impl Lab {
         self.settings = new;
         if switched && self.settings.physics.restart_on_switch {
             self.restart(self.preset_axis)?;
-            self.info(format!(
-                "started again from the spin about axis {} with the {} inertia and the {} model",
-                self.preset_axis + 1,
-                self.settings.body.source.label(),
-                self.settings.physics.model.name(),
+            self.info(tr!(
+                "lab-started-again",
+                axis = self.preset_axis + 1,
+                source = self.settings.body.source.label(),
+                model = settings::model_words(self.settings.physics.model),
             ));
         }
         Ok(())
@@ -386,16 +407,16 @@ impl Lab {
             .collect();
         self.start_all(&plan, &body, self.preset_axis)?;
         self.generation += 1;
+        if self.settings.display.reduced_motion {
+            self.run_mode = RunMode::Paused;
+            self.clock.stop();
+        }
         // The diagnostics sit low in the side panel: the message line says whether to look.
-        let warnings = match body.analysis.warnings.len() {
-            0 => String::new(),
-            1 => "; 1 mesh warning, under Mesh diagnostics".to_owned(),
-            n => format!("; {n} mesh warnings, under Mesh diagnostics"),
-        };
-        self.info(format!(
-            "loaded {} ({} triangles){warnings}",
-            body.name,
-            body.mesh.triangles.len()
+        self.info(tr!(
+            "lab-loaded",
+            body = &body.name,
+            triangles = body.mesh.triangles.len(),
+            warnings = body.analysis.warnings.len()
         ));
         Ok(())
     }
@@ -488,7 +509,7 @@ impl Lab {
                     return Err(LabError::ChangedWhileAdding(added));
                 }
                 self.set_body(Arc::new(body), true)?;
-                self.info(format!("added {added}"));
+                self.info(tr!("lab-added", parts = &added));
                 Ok(())
             }
             Loaded::Body(body) => {
@@ -499,11 +520,11 @@ impl Lab {
             Loaded::Robot(model, body) => {
                 self.install(body)?;
                 let flagged = model.audit.links.iter().filter(|l| l.flagged()).count();
-                self.info(format!(
-                    "loaded robot {} ({} links, {flagged} with findings on their inertial): \
-                     choose a link under Robot",
-                    model.robot.name,
-                    model.robot.links.len()
+                self.info(tr!(
+                    "lab-loaded-robot",
+                    robot = &model.robot.name,
+                    links = model.robot.links.len(),
+                    flagged = flagged
                 ));
                 self.robot = Some(*model);
                 // The whole robot is shown at its zero pose, still; Run spins it as one body.
@@ -513,7 +534,7 @@ impl Lab {
         });
         if let Err(e) = outcome {
             self.message = Some(Message {
-                text: format!("{e} (the current body is kept)"),
+                text: tr!("lab-load-failed", error = e.to_string()),
                 error: true,
             });
         }

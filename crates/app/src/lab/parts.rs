@@ -2,6 +2,7 @@
 //! ([`massprops::PartEntry`]), its mesh and its mass integrals at unit density, kept so that a
 //! change of material or placement is a sum (`massprops::composite::combine`), not a new integration.
 
+use crate::i18n::tr;
 use std::path::{Path, PathBuf};
 
 use std::sync::Arc;
@@ -340,9 +341,13 @@ pub fn saved_words(parts: usize, files: &[(PathBuf, String)]) -> String {
         .filter_map(|(p, _)| p.file_name().map(|n| n.to_string_lossy().into_owned()))
         .collect();
     if meshes.is_empty() {
-        format!("{parts} parts")
+        tr!("lab-parts", parts = parts)
     } else {
-        format!("{parts} parts; meshes {}", meshes.join(", "))
+        tr!(
+            "lab-parts-meshes",
+            parts = parts,
+            meshes = meshes.join(", ")
+        )
     }
 }
 

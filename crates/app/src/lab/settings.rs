@@ -4,6 +4,8 @@
 use rbcore::{Damping, Integrator, RotationModel};
 use serde::{Deserialize, Serialize};
 
+use crate::i18n::tr;
+
 /// Everything the user can set, grouped as in the side panel.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default)]
@@ -18,6 +20,25 @@ pub struct AppSettings {
     pub interaction: InteractionSettings,
     /// The plot panel.
     pub plots: PlotSettings,
+    /// The language, the size of everything and how much moves by itself.
+    pub display: DisplaySettings,
+}
+
+/// How the lab reads and moves for its user: the language, larger text, reduced motion and the
+/// page's own voice.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default)]
+pub struct DisplaySettings {
+    /// The language chosen; `None` follows the system's (the browser's in a page).
+    pub language: Option<crate::i18n::Language>,
+    /// Everything drawn a quarter larger (text, buttons, plots), as a browser's zoom does.
+    pub larger_text: bool,
+    /// Nothing moves unless the user starts it: a body opened or a lesson's step set up waits
+    /// paused for Run, and panels open without sliding.
+    pub reduced_motion: bool,
+    /// The page reads aloud what takes the keyboard's focus (egui's own screen reader, through
+    /// the browser's speech synthesis; the desktop has AccessKit for real screen readers).
+    pub read_aloud: bool,
 }
 
 /// Overlays of the 3D view.
@@ -148,6 +169,14 @@ impl PhysicsSettings {
     }
 }
 
+/// A rotation model in the user's words ([`RotationModel::name`] is the command line's).
+pub fn model_words(model: RotationModel) -> String {
+    match model {
+        RotationModel::Full => tr!("model-full"),
+        RotationModel::Textbook => tr!("model-textbook"),
+    }
+}
+
 /// Which mass properties drive the simulation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub enum InertiaSource {
@@ -171,13 +200,13 @@ impl InertiaSource {
         InertiaSource::Stated,
     ];
 
-    /// Label in the UI.
-    pub fn label(self) -> &'static str {
+    /// Label in the UI, in the user's language.
+    pub fn label(self) -> String {
         match self {
-            InertiaSource::Exact => "exact",
-            InertiaSource::BoundingBox => "bounding box",
-            InertiaSource::PointMasses => "point masses",
-            InertiaSource::Stated => "stated",
+            InertiaSource::Exact => tr!("source-exact"),
+            InertiaSource::BoundingBox => tr!("source-bounding-box"),
+            InertiaSource::PointMasses => tr!("source-point-masses"),
+            InertiaSource::Stated => tr!("source-stated"),
         }
     }
 }

@@ -5,6 +5,7 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use crate::i18n::tr;
 use crate::platform::Instant;
 
 use massprops::MassProperties;
@@ -73,9 +74,11 @@ impl Variant {
     /// A short name for legends and tables.
     pub fn label(self) -> String {
         match self {
-            Variant::Same => "same settings".to_owned(),
-            Variant::Source(source) => format!("{} inertia", source.label()),
-            Variant::Model(model) => format!("{} model", model.name()),
+            Variant::Same => tr!("variant-same"),
+            Variant::Source(source) => tr!("variant-source", source = source.label()),
+            Variant::Model(model) => {
+                tr!("variant-model", model = super::settings::model_words(model))
+            }
             Variant::Integrator(integrator) => integrator.name().to_owned(),
         }
     }

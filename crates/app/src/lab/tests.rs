@@ -599,8 +599,46 @@ fn reset_and_presets_start_the_documented_spin() {
         }
     }
     lab.apply(settings_with(&lab, |s| s.body.spin_rate = 3.0));
+    lab.apply(settings_with(&lab, |s| s.display.larger_text = true));
     lab.apply(Command::ResetSettings);
-    assert_eq!(lab.settings(), &AppSettings::default());
+    let kept = AppSettings {
+        display: crate::lab::settings::DisplaySettings {
+            larger_text: true,
+            ..Default::default()
+        },
+        ..AppSettings::default()
+    };
+    assert_eq!(
+        lab.settings(),
+        &kept,
+        "all but the display's back to default"
+    );
+}
+
+/// With reduced motion a body opened waits paused for Run (nothing moves unless the user starts
+/// it); without, it spins at once, as it always did.
+#[test]
+fn reduced_motion_opens_a_body_paused() {
+    let mut lab = Lab::new(AppSettings::default()).expect("lab");
+    assert!(!lab.is_paused());
+    lab.apply(settings_with(&lab, |s| s.display.reduced_motion = true));
+    lab.apply(Command::LoadSample("Tennis racket".to_owned()));
+    assert!(lab.is_paused(), "a body opened with reduced motion moves");
+    lab.apply(Command::TogglePause);
+    lab.advance(0.1);
+    assert!(lab.primary().sim().time() > 0.0, "Run starts it");
+    lab.apply(settings_with(&lab, |s| s.display.reduced_motion = false));
+    lab.apply(Command::LoadSample("T-handle".to_owned()));
+    assert!(!lab.is_paused());
+    let lab = Lab::new(AppSettings {
+        display: crate::lab::settings::DisplaySettings {
+            reduced_motion: true,
+            ..Default::default()
+        },
+        ..AppSettings::default()
+    })
+    .expect("lab");
+    assert!(lab.is_paused(), "the first body too");
 }
 
 /// Edits part `index` and checks the lab took it.

@@ -17,6 +17,17 @@ use super::{Job, JobEvent, Memory, encode, event_of};
 
 /// The worker's script, beside the page (web/build.sh puts it there).
 const WORKER_SCRIPT: &str = "./worker.js";
+/// Where a page with nothing beside it (`web/build.sh --single-file`, opened from the disk)
+/// names the worker's script it made itself, a `blob:` address.
+const WORKER_SCRIPT_GLOBAL: &str = "INERTIA_LAB_WORKER";
+
+/// The worker's script: the one the page made itself, else the one beside the page.
+fn worker_script() -> String {
+    web_sys::window()
+        .and_then(|w| js_sys::Reflect::get(&w, &WORKER_SCRIPT_GLOBAL.into()).ok())
+        .and_then(|v| v.as_string())
+        .unwrap_or_else(|| WORKER_SCRIPT.to_owned())
+}
 
 type Queued = Box<dyn FnOnce()>;
 
@@ -137,7 +148,7 @@ fn send(name: &str, input: &[u8], hear: Rc<dyn Fn(Reply)>) -> Result<(), String>
 fn start_worker() -> Result<PageWorker, JsValue> {
     let options = web_sys::WorkerOptions::new();
     options.set_type(web_sys::WorkerType::Module);
-    let worker = web_sys::Worker::new_with_options(WORKER_SCRIPT, &options)?;
+    let worker = web_sys::Worker::new_with_options(&worker_script(), &options)?;
     let on_message =
         Closure::<dyn FnMut(web_sys::MessageEvent)>::new(|e: web_sys::MessageEvent| {
             let data = e.data();

@@ -5,6 +5,8 @@ use std::path::PathBuf;
 
 use super::{Frame, HEADING_CHARS, Panel, PanelState, elide, number};
 use crate::gui::platform::{self, DialogPurpose};
+use crate::i18n::{sci, tr};
+use crate::lab::loader::Stage;
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassGiven};
 use crate::lab::{Command, Lab};
@@ -25,34 +27,37 @@ fn body_section(
     commands: &mut Vec<Command>,
     s: &mut AppSettings,
 ) {
-    egui::CollapsingHeader::new("Body")
+    egui::CollapsingHeader::new(tr!("body-header"))
+        .id_salt("body")
         .default_open(true)
         .show(ui, |ui| {
             // Wrapped: a row wider than the panel would widen it for good.
             ui.horizontal_wrapped(|ui| {
                 if ui
-                    .add_enabled(!state.dialog_open, egui::Button::new("Open mesh…"))
+                    .add_enabled(!state.dialog_open, egui::Button::new(tr!("body-open-mesh")))
                     .clicked()
                 {
                     state.dialog_request = Some(DialogPurpose::OpenMesh);
                 }
                 ui.label(platform::drop_hint())
-                    .on_hover_text(inertia_io::kind::mesh_formats_hint());
+                    .on_hover_text(mesh_formats());
             });
             if platform::READS_PATHS {
                 ui.horizontal(|ui| {
-                    let l = ui.label("Path");
+                    let l = ui.label(tr!("body-path"));
                     let edit = ui
                         .add(egui::TextEdit::singleline(&mut state.path).desired_width(150.0))
                         .labelled_by(l.id);
                     let enter = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-                    if (ui.button("Load").clicked() || enter) && !state.path.trim().is_empty() {
+                    if (ui.button(tr!("body-load")).clicked() || enter)
+                        && !state.path.trim().is_empty()
+                    {
                         commands.push(Command::LoadFile(PathBuf::from(state.path.trim())));
                     }
                 });
             }
             ui.horizontal_wrapped(|ui| {
-                ui.label("Samples:");
+                ui.label(tr!("body-samples"));
                 for (label, ..) in SAMPLES {
                     if ui.small_button(label).clicked() {
                         commands.push(Command::LoadSample(label.to_owned()));
@@ -60,7 +65,7 @@ fn body_section(
                 }
             });
             ui.horizontal_wrapped(|ui| {
-                ui.label("Made of parts:");
+                ui.label(tr!("body-made-of-parts"));
                 for (label, ..) in SAMPLE_BODIES {
                     if ui.small_button(label).clicked() {
                         commands.push(Command::LoadSample(label.to_owned()));
@@ -79,46 +84,75 @@ fn body_section(
                     ui.label(elide(&name, HEADING_CHARS))
                         .on_hover_text(l.path.display().to_string());
                 });
-                ui.label(format!("{}…", l.stage));
+                ui.label(stage_text(l.stage));
                 // A stage that measures no fraction has the spinner alone.
                 if let Some(f) = l.fraction {
                     ui.add(egui::ProgressBar::new(f).show_percentage());
                 }
             }
-            number(ui, "Size ×", &mut s.body.scale, 1e-3..=1e3, 0.01, "");
+            number(
+                ui,
+                &tr!("body-size"),
+                &mut s.body.scale,
+                1e-3..=1e3,
+                0.01,
+                "",
+            );
             if lab.primary().body().composition.is_some() {
                 let m = lab.primary().properties(InertiaSource::Exact).mass;
-                ui.label(format!(
-                    "Mass {m:.4e} kg, from the parts' materials (below)"
-                ));
-                ui.label(format!("Volume {:.4e} m³", lab.primary().volume()))
-                    .on_hover_text("The solid parts and thin walls, less the voids.");
+                ui.label(tr!("body-mass-from-parts", mass = sci(m, 4)));
+                ui.label(tr!("body-volume", volume = sci(lab.primary().volume(), 4)))
+                    .on_hover_text(tr!("body-volume-hover"));
                 return;
             }
             ui.horizontal(|ui| {
                 let density = matches!(s.body.mass, MassGiven::Density(_));
                 let primary = lab.primary();
-                if ui.radio(density, "Density").clicked() && !density {
+                if ui.radio(density, tr!("body-density")).clicked() && !density {
                     s.body.mass = MassGiven::Density(primary.density());
                 }
-                if ui.radio(!density, "Mass").clicked() && density {
+                if ui.radio(!density, tr!("body-mass")).clicked() && density {
                     let exact = primary.properties(InertiaSource::Exact);
                     s.body.mass = MassGiven::Mass(exact.mass);
                 }
             });
             match &mut s.body.mass {
                 MassGiven::Density(d) => {
-                    number(ui, "Density", d, 1e-6..=1e6, 10.0, " kg/m³");
+                    number(ui, &tr!("body-density"), d, 1e-6..=1e6, 10.0, " kg/m³");
                 }
                 MassGiven::Mass(m) => {
-                    number(ui, "Mass", m, 1e-9..=1e9, 0.01, " kg");
+                    number(ui, &tr!("body-mass"), m, 1e-9..=1e9, 0.01, " kg");
                 }
             }
             let primary = lab.primary();
-            ui.label(format!(
-                "Volume {:.4e} m³, mass {:.4e} kg",
-                primary.volume(),
-                primary.properties(InertiaSource::Exact).mass
+            ui.label(tr!(
+                "body-volume-mass",
+                volume = sci(primary.volume(), 4),
+                mass = sci(primary.properties(InertiaSource::Exact).mass, 4),
             ));
         });
+}
+
+/// The mesh formats the readers take, for the drop hint's tooltip: "Meshes: OBJ (.obj), …".
+fn mesh_formats() -> String {
+    let formats: Vec<String> = massprops::io::MESH_FORMATS
+        .iter()
+        .map(|f| {
+            let extensions: Vec<String> = f.extensions.iter().map(|e| format!(".{e}")).collect();
+            format!("{} ({})", f.name, extensions.join(", "))
+        })
+        .collect();
+    tr!("body-mesh-formats", formats = formats.join(", "))
+}
+
+/// Where a load is, in the user's words (the lab's `Display` stays English: the page's state
+/// reports it to scripts).
+fn stage_text(stage: Stage) -> String {
+    match stage {
+        Stage::Starting => tr!("body-stage-starting"),
+        Stage::Reading => tr!("body-stage-reading"),
+        Stage::Checking => tr!("body-stage-checking"),
+        Stage::PickingIndex => tr!("body-stage-picking-index"),
+        Stage::Robot => tr!("body-stage-robot"),
+    }
 }

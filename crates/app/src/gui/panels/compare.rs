@@ -7,6 +7,7 @@ use rbcore::{Integrator, RotationModel};
 
 use super::{Frame, Panel};
 use crate::gui::view3d::ghost_color;
+use crate::i18n::{fixed, sci, tr};
 use crate::lab::settings::{AppSettings, GhostLayout, InertiaSource};
 use crate::lab::{Command, Lab, MAX_COPIES, Variant};
 
@@ -82,33 +83,29 @@ fn show(
     choice: &mut CompareChoice,
     commands: &mut Vec<Command>,
 ) {
-    egui::CollapsingHeader::new("Compare")
+    egui::CollapsingHeader::new(tr!("compare-header"))
+        .id_salt("compare")
         .default_open(false)
         .show(ui, |ui| {
-            ui.add(
-                egui::Label::new(
-                    "Copies of the body from the same start, each differing in one choice:",
-                )
-                .wrap(),
-            );
+            ui.add(egui::Label::new(tr!("compare-intro")).wrap());
             let c = choice;
             let stated = lab.primary().body().stated.is_some();
             for (k, source) in InertiaSource::ALL.into_iter().enumerate() {
                 if source == InertiaSource::Stated && !stated {
                     c.sources[k] = false;
                 } else if source != s.body.source {
-                    ui.checkbox(&mut c.sources[k], format!("{} inertia", source.label()));
+                    ui.checkbox(&mut c.sources[k], Variant::Source(source).label());
                 }
             }
             let model = other_model(s.physics.model);
             let model_label = match model {
-                RotationModel::Textbook => "textbook model (no ω × Iω)".to_owned(),
-                RotationModel::Full => "full model (with ω × Iω)".to_owned(),
+                RotationModel::Textbook => tr!("compare-model-textbook"),
+                RotationModel::Full => tr!("compare-model-full"),
             };
             ui.checkbox(&mut c.other_model, model_label);
             ui.horizontal(|ui| {
                 let mut on = c.integrator.is_some();
-                ui.checkbox(&mut on, "integrator");
+                ui.checkbox(&mut on, tr!("compare-integrator"));
                 let own = s.physics.integrator;
                 let mut chosen =
                     c.integrator
@@ -130,31 +127,36 @@ fn show(
             let variants = c.variants(s);
             ui.horizontal_wrapped(|ui| {
                 let ok = (1..=MAX_COPIES).contains(&variants.len());
-                let label = format!("Compare {} from the start", variants.len());
+                let label = tr!("compare-start", count = variants.len());
                 if ui.add_enabled(ok, egui::Button::new(label)).clicked() {
                     commands.push(Command::Compare(variants.clone()));
                 }
-                if lab.specimens().len() > 1 && ui.button("Stop comparing").clicked() {
+                if lab.specimens().len() > 1 && ui.button(tr!("compare-stop")).clicked() {
                     commands.push(Command::Compare(Vec::new()));
                 }
             });
             if variants.len() > MAX_COPIES {
                 ui.colored_label(
                     Color32::from_rgb(255, 170, 60),
-                    format!("At most {MAX_COPIES} copies at a time."),
+                    tr!("compare-too-many", max = MAX_COPIES),
                 );
             }
             ui.horizontal(|ui| {
-                ui.label("Ghosts");
-                ui.radio_value(&mut s.view.ghosts, GhostLayout::Overlaid, "overlaid");
-                ui.radio_value(&mut s.view.ghosts, GhostLayout::Row, "in a row");
+                ui.label(tr!("compare-ghosts"));
+                ui.radio_value(
+                    &mut s.view.ghosts,
+                    GhostLayout::Overlaid,
+                    tr!("compare-overlaid"),
+                );
+                ui.radio_value(
+                    &mut s.view.ghosts,
+                    GhostLayout::Row,
+                    tr!("compare-in-a-row"),
+                );
             });
             if lab.specimens().len() > 1 {
                 drift_table(ui, lab);
-                ui.small(
-                    "Drift since the start or the last poke, pull or change. Poke and string act \
-                     on the body itself, not on its copies.",
-                );
+                ui.small(tr!("compare-drift-note"));
             }
         });
 }
@@ -162,24 +164,23 @@ fn show(
 /// Each specimen's turn-over interval, predicted and measured, and its largest E and |L| drift
 /// since the start or its last disturbance.
 fn drift_table(ui: &mut egui::Ui, lab: &Lab) {
-    let seconds = |t: Option<f64>| t.map_or_else(|| "—".to_owned(), |t| format!("{t:.3} s"));
+    let seconds =
+        |t: Option<f64>| t.map_or_else(|| "—".to_owned(), |t| format!("{} s", fixed(t, 3)));
     egui::Grid::new("compare-drift")
         .striped(true)
         .num_columns(5)
         .show(ui, |ui| {
             ui.label("");
-            ui.strong("turns over every").on_hover_text(
-                "T/2 predicted from the copy's E and |L| (— when it only wobbles or spins \
-                 steadily)",
-            );
-            ui.strong("measured")
-                .on_hover_text("the time between the last two reversals of ω₂ seen in the run");
-            ui.strong("max ΔE/E");
-            ui.strong("max Δ|L|/|L|");
+            ui.strong(tr!("compare-turns-over"))
+                .on_hover_text(tr!("compare-turns-over-hover"));
+            ui.strong(tr!("compare-measured"))
+                .on_hover_text(tr!("compare-measured-hover"));
+            ui.strong(tr!("compare-max-energy"));
+            ui.strong(tr!("compare-max-momentum"));
             ui.end_row();
             for (k, sp) in lab.specimens().iter().enumerate() {
                 let name = if k == 0 {
-                    RichText::new("body")
+                    RichText::new(tr!("compare-body"))
                 } else {
                     let [r, g, b, _] = ghost_color(k);
                     RichText::new(sp.variant().label()).color(Color32::from_rgb(r, g, b))
@@ -187,8 +188,8 @@ fn drift_table(ui: &mut egui::Ui, lab: &Lab) {
                 ui.label(name);
                 ui.label(seconds(sp.turn_over_interval()));
                 ui.label(seconds(sp.history().flip_interval()));
-                ui.label(format!("{:.1e}", sp.drift().max_energy()));
-                ui.label(format!("{:.1e}", sp.drift().max_l_norm()));
+                ui.label(sci(sp.drift().max_energy(), 1));
+                ui.label(sci(sp.drift().max_l_norm(), 1));
                 ui.end_row();
             }
         });

@@ -6,6 +6,7 @@ use massprops::defects::Orientation;
 
 use super::{Frame, Panel, PanelState};
 use crate::gui::warnings;
+use crate::i18n::{sci, tr};
 use crate::lab::Lab;
 
 /// The Mesh diagnostics section, for the primary specimen's body.
@@ -28,19 +29,22 @@ fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
         state.selected_warning = None;
     }
     egui::CollapsingHeader::new(if a.warnings.is_empty() {
-        "Mesh diagnostics".to_owned()
+        tr!("diagnostics-header")
     } else {
-        match a.warnings.len() {
-            1 => "Mesh diagnostics (1 warning)".to_owned(),
-            n => format!("Mesh diagnostics ({n} warnings)"),
-        }
+        tr!("diagnostics-header-warnings", count = a.warnings.len())
     })
+    // A new count of warnings is a new header (opened again when there are some), as when the
+    // title was its id; the language is not.
+    .id_salt(("diagnostics", a.warnings.len()))
     .default_open(!a.warnings.is_empty())
     .show(ui, |ui| {
         let d = &a.diagnostics;
-        ui.label(format!(
-            "{} vertices, {} faces ({} triangles), {} edges",
-            d.vertices, d.faces, d.triangles, d.edges
+        ui.label(tr!(
+            "diagnostics-counts",
+            vertices = d.vertices,
+            faces = d.faces,
+            triangles = d.triangles,
+            edges = d.edges,
         ));
         ui.label(shells_line(a));
         // A body of parts has its volume from the parts (voids taken away); the surfaces
@@ -50,16 +54,17 @@ fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState) {
             None => a.volume,
         };
         if let Some(v) = volume {
-            ui.label(format!(
-                "volume {v:.5e} m³ (unscaled), area {:.5e} m²",
-                d.surface_area
+            ui.label(tr!(
+                "diagnostics-volume-area",
+                volume = sci(v, 5),
+                area = sci(d.surface_area, 5),
             ));
         }
         if a.warnings.is_empty() {
-            ui.label("No defects found: the numbers are exact for this mesh.");
+            ui.label(tr!("diagnostics-no-defects"));
             return;
         }
-        ui.small("Click a warning to highlight its faces.");
+        ui.small(tr!("diagnostics-click-hint"));
         for (i, w) in a.warnings.iter().enumerate() {
             let selected = state.selected_warning == Some(i);
             let mut title = warnings::title(w);
@@ -84,15 +89,19 @@ fn shells_line(a: &massprops::Analysis) -> String {
         .count();
     let capped = a.shells.iter().filter(|s| s.capped).count();
     let uneven = a.shells.len() - closed.len() - capped;
-    let mut parts = vec![format!("{} closed", closed.len())];
+    let mut parts = vec![tr!("diagnostics-shells-closed", count = closed.len())];
     if cavities > 0 {
-        parts.push(format!("{cavities} of them cavities"));
+        parts.push(tr!("diagnostics-shells-cavities", count = cavities));
     }
     if capped > 0 {
-        parts.push(format!("{capped} open (capped)"));
+        parts.push(tr!("diagnostics-shells-capped", count = capped));
     }
     if uneven > 0 {
-        parts.push(format!("{uneven} joined unevenly to others"));
+        parts.push(tr!("diagnostics-shells-uneven", count = uneven));
     }
-    format!("{} shell(s): {}", a.shells.len(), parts.join(", "))
+    tr!(
+        "diagnostics-shells",
+        count = a.shells.len(),
+        parts = parts.join(", ")
+    )
 }

@@ -2,6 +2,7 @@
 
 use super::{Frame, Panel};
 use crate::gui::view3d::overlay::AXIS_COLORS;
+use crate::i18n::tr;
 
 /// The help window, shown while the shared `help_open` is set (F1, or the Help button).
 #[derive(Debug, Default)]
@@ -15,89 +16,63 @@ impl Panel for HelpWindow {
 
 /// Shows the help window while `open`.
 fn show(ctx: &egui::Context, open: &mut bool) {
-    egui::Window::new("Help (F1)")
+    egui::Window::new(tr!("help-title"))
         .open(open)
         .collapsible(false)
         .resizable(false)
         .default_width(460.0)
         .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
         .show(ctx, |ui| {
-            ui.heading("On the body");
+            ui.heading(tr!("help-on-the-body"));
             egui::Grid::new("help-gestures")
                 .striped(true)
                 .show(ui, |ui| {
                     for (what, how) in [
+                        (tr!("help-click-body"), tr!("help-click-body-does")),
+                        (tr!("help-drag-body"), tr!("help-drag-body-does")),
                         (
-                            "Click the body",
-                            "poke: impulse J along the view ray; ΔL = r × J flashes",
+                            tr!("help-drag-background"),
+                            tr!("help-drag-background-does"),
                         ),
-                        (
-                            "Drag the body",
-                            "string: pulls the grabbed point towards the pointer",
-                        ),
-                        ("Drag the background", "orbit the camera"),
-                        ("Right or middle drag", "pan"),
-                        ("Wheel", "zoom"),
-                        ("F or double-click", "frame the body"),
+                        (tr!("help-pan-drag"), tr!("help-pan-drag-does")),
+                        (tr!("help-wheel"), tr!("help-wheel-does")),
+                        (tr!("help-frame-gesture"), tr!("help-frame-does")),
                     ] {
                         ui.strong(what);
                         ui.label(how);
                         ui.end_row();
                     }
                 });
-            ui.heading("Keys");
+            ui.heading(tr!("help-keys"));
             egui::Grid::new("help-keys").striped(true).show(ui, |ui| {
                 for (key, what) in [
-                    ("Space", "pause / run"),
-                    ("S", "one step (pauses)"),
-                    ("R", "reset to the start state"),
-                    ("1 2 3", "spin about principal axis 1, 2, 3"),
-                    ("Arrows", "move the aim (a ring) over the 3D view"),
-                    ("P", "poke the body at the aim, along the view ray"),
-                    ("F", "frame the body"),
-                    ("L", "show or hide the lessons"),
-                    (
-                        "Enter",
-                        "press the focused button, choose the focused option",
-                    ),
-                    ("F1", "this help"),
-                    (
-                        "Escape",
-                        "gives the keys back to the view from a button or field \
-                         (the keys above act whatever button has focus; a field being edited \
-                         takes them)",
-                    ),
-                    ("Tab", "moves between the buttons and fields"),
+                    (tr!("help-key-space"), tr!("help-key-space-does")),
+                    ("S".to_owned(), tr!("help-key-s-does")),
+                    ("R".to_owned(), tr!("help-key-r-does")),
+                    ("1 2 3".to_owned(), tr!("help-key-axes-does")),
+                    (tr!("help-key-arrows"), tr!("help-key-arrows-does")),
+                    ("P".to_owned(), tr!("help-key-p-does")),
+                    ("F".to_owned(), tr!("help-frame-does")),
+                    ("L".to_owned(), tr!("help-key-l-does")),
+                    (tr!("help-key-enter"), tr!("help-key-enter-does")),
+                    ("F1".to_owned(), tr!("help-key-f1-does")),
+                    (tr!("help-key-escape"), tr!("help-key-escape-does")),
+                    (tr!("help-key-tab"), tr!("help-key-tab-does")),
                 ] {
                     ui.strong(key);
                     ui.label(what);
                     ui.end_row();
                 }
             });
-            ui.heading("What you see");
+            ui.heading(tr!("help-what-you-see"));
             ui.horizontal_wrapped(|ui| {
-                ui.label("Principal axes");
+                ui.label(tr!("help-principal-axes"));
                 for (i, c) in AXIS_COLORS.iter().enumerate() {
                     ui.colored_label(*c, format!("{}", i + 1));
                 }
-                ui.label(
-                    "(moments ascending). Orange ω and purple L arrows are in world space: with \
-                     no torque L stays fixed while ω wanders — the T-handle flips about it.",
-                );
+                ui.label(tr!("help-arrows-in-world"));
             });
-            ui.label(
-                "Spinning about axis 2 (intermediate moment) is unstable: a tiny perturbation \
-                 grows and the body flips periodically (Dzhanibekov effect). Axes 1 and 3 are \
-                 stable. Switch \"Simulation uses\" to the bounding box to see how the usual \
-                 approximation changes the motion; the Textbook model drops the gyroscopic term \
-                 and never flips.",
-            );
-            ui.label(
-                "The momentum sphere (right) shows L as seen from the body: it runs along its \
-                 violet polhode; the orange separatrix through axis 2 parts the curves around \
-                 axes 1 and 3. Poinsot (toolbar) rolls the inertia ellipsoid on the plane \
-                 perpendicular to L. Compare (side panel) runs copies that differ in one choice \
-                 as ghosts; Record (plot bar) saves the window as pictures.",
-            );
+            ui.label(tr!("help-axis-2-unstable"));
+            ui.label(tr!("help-sphere-poinsot-compare"));
         });
 }

@@ -2,6 +2,7 @@
 //! and force cap.
 
 use super::{Frame, Panel, number};
+use crate::i18n::{sci, tr};
 use crate::lab::Lab;
 use crate::lab::settings::AppSettings;
 
@@ -15,32 +16,38 @@ impl Panel for InteractionSection {
 }
 
 fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
-    egui::CollapsingHeader::new("Poke and string")
+    egui::CollapsingHeader::new(tr!("interaction-header"))
+        .id_salt("interaction")
         .default_open(false)
         .show(ui, |ui| {
             let i = &mut s.interaction;
             // Shown in percent; written back only when edited (×100 ÷ 100 need not give the same
             // number, and a changed draft is a settings command every frame).
             let mut percent = i.poke_fraction * 100.0;
-            if number(ui, "Poke", &mut percent, 0.0..=100.0, 0.1, " % of |L|")
-                .on_hover_text(
-                    "How much a click changes the angular momentum L, at most: a click at the \
-                     point farthest from the centre of mass, across it. Small, so that a stable \
-                     spin stays stable; large enough to start a tumble from an unstable one.",
-                )
-                .changed()
+            let unit = format!(" {}", tr!("interaction-poke-unit"));
+            if number(
+                ui,
+                &tr!("interaction-poke"),
+                &mut percent,
+                0.0..=100.0,
+                0.1,
+                &unit,
+            )
+            .on_hover_text(tr!("interaction-poke-hover"))
+            .changed()
             {
                 i.poke_fraction = percent / 100.0;
             }
             let primary = lab.primary();
             let impulse = primary.poke_impulse(lab.settings());
-            ui.small(format!(
-                "J = {impulse:.4e} N·s, |ΔL| up to {:.4e} kg m²/s",
-                impulse * primary.reach()
+            ui.small(tr!(
+                "interaction-impulse",
+                impulse = sci(impulse, 4),
+                delta = sci(impulse * primary.reach(), 4),
             ));
             number(
                 ui,
-                "String frequency",
+                &tr!("interaction-string-frequency"),
                 &mut i.string_frequency,
                 0.05..=60.0,
                 0.05,
@@ -48,7 +55,7 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
             );
             number(
                 ui,
-                "String damping ratio",
+                &tr!("interaction-string-damping"),
                 &mut i.string_damping,
                 0.0..=10.0,
                 0.01,
@@ -56,13 +63,13 @@ fn interaction_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
             );
             number(
                 ui,
-                "Force cap F/m",
+                &tr!("interaction-force-cap"),
                 &mut i.string_max_accel,
                 0.0..=1e4,
                 1.0,
                 " m/s²",
             );
             let f = primary.string_max_force(lab.settings());
-            ui.small(format!("F max = {f:.4e} N"));
+            ui.small(tr!("interaction-max-force", force = sci(f, 4)));
         });
 }

@@ -3,6 +3,7 @@
 //! checks as the lab evaluates them, and the explanation once they hold.
 
 use super::{Frame, Panel};
+use crate::i18n::{fixed, localize, tr};
 use crate::lab::Command;
 use crate::lab::lessons::{self, LessonRun, LessonSource};
 
@@ -15,7 +16,7 @@ pub struct LessonsPanel {
 
 impl Panel for LessonsPanel {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
-        ui.heading("Lessons");
+        ui.heading(tr!("lessons-heading"));
         egui::ScrollArea::vertical().show(ui, |ui| match f.lab.lesson() {
             Some(run) => self.lesson(ui, run, f.commands),
             None => list(ui, f),
@@ -35,7 +36,7 @@ fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
         let steps = lesson.steps.len();
         // Words, not a check mark: egui's default fonts have no ✔.
         let mark = if done >= steps {
-            " (done)".to_owned()
+            format!(" {}", tr!("lessons-done-mark"))
         } else if done > 0 {
             format!(" ({done}/{steps})")
         } else {
@@ -51,7 +52,7 @@ fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
             )));
         }
     }
-    ui.small("A lesson file of your own (….lesson.toml) opens with Open mesh… or by dropping it on the window.");
+    ui.small(tr!("lessons-own-file"));
 }
 
 impl LessonsPanel {
@@ -60,14 +61,18 @@ impl LessonsPanel {
         let step = run.current();
         ui.strong(lesson.title.as_str());
         ui.label(egui::RichText::new(lesson.goal.as_str()).italics());
-        ui.label(format!("Step {} of {}", run.step + 1, lesson.steps.len()));
+        ui.label(tr!(
+            "lessons-step",
+            step = run.step + 1,
+            steps = lesson.steps.len()
+        ));
         ui.label(tidy(&step.text));
         if let Some(view) = step.view {
-            ui.small(format!("Look at {}.", view.label()));
+            ui.small(look_at(view));
         }
         if let Some(p) = &step.predict {
             ui.separator();
-            ui.label(format!("Predict: {}", p.question));
+            ui.label(tr!("lessons-predict", question = &p.question));
             match run.prediction {
                 None => {
                     for (k, choice) in p.choices.iter().enumerate() {
@@ -75,28 +80,33 @@ impl LessonsPanel {
                     }
                     let commit = ui.add_enabled(
                         self.choice.is_some(),
-                        egui::Button::new("Commit to my prediction"),
+                        egui::Button::new(tr!("lessons-commit")),
                     );
                     if commit.clicked()
                         && let Some(k) = self.choice.take()
                     {
                         commands.push(Command::Predict(k));
                     }
-                    ui.small("The lab waits, paused, until you commit.");
+                    ui.small(tr!("lessons-waits-for-commit"));
                 }
                 Some(k) => {
-                    ui.label(format!("You predicted: {}", p.choices[k]));
+                    ui.label(tr!("lessons-predicted", choice = &p.choices[k]));
                 }
             }
         }
         if !run.awaits_prediction() {
             ui.separator();
             for (check, state) in step.checks.iter().zip(&run.checks) {
-                let mark = if state.met { "Done:" } else { "Waiting:" };
                 let what = describe(check);
-                let text = match &state.finding {
-                    Some(found) => format!("{mark} {what}: {found}"),
-                    None => format!("{mark} {what}"),
+                let text = match (state.met, &state.finding) {
+                    (true, Some(found)) => {
+                        tr!("lessons-check-done-found", what = what, found = found)
+                    }
+                    (true, None) => tr!("lessons-check-done", what = what),
+                    (false, Some(found)) => {
+                        tr!("lessons-check-waiting-found", what = what, found = found)
+                    }
+                    (false, None) => tr!("lessons-check-waiting", what = what),
                 };
                 ui.label(text);
             }
@@ -106,18 +116,18 @@ impl LessonsPanel {
             if let Some(p) = &step.predict
                 && let Some(k) = run.prediction
             {
-                let verdict = if k == p.answer {
-                    "Your prediction was right."
+                let answer = &p.choices[p.answer];
+                ui.label(if k == p.answer {
+                    tr!("lessons-prediction-right", answer = answer)
                 } else {
-                    "Your prediction was not what happened."
-                };
-                ui.label(format!("{verdict} The answer: {}.", p.choices[p.answer]));
+                    tr!("lessons-prediction-wrong", answer = answer)
+                });
             }
             ui.label(tidy(&step.explain));
         }
         ui.horizontal(|ui| {
             if ui
-                .add_enabled(run.step > 0, egui::Button::new("Back"))
+                .add_enabled(run.step > 0, egui::Button::new(tr!("lessons-back")))
                 .clicked()
             {
                 commands.push(Command::PreviousStep);
@@ -125,19 +135,19 @@ impl LessonsPanel {
             let last = run.step + 1 == lesson.steps.len();
             if !last
                 && ui
-                    .add_enabled(run.step_done(), egui::Button::new("Next step"))
+                    .add_enabled(run.step_done(), egui::Button::new(tr!("lessons-next-step")))
                     .clicked()
             {
                 self.choice = None;
                 commands.push(Command::NextStep);
             }
-            if ui.button("Close lesson").clicked() {
+            if ui.button(tr!("lessons-close")).clicked() {
                 self.choice = None;
                 commands.push(Command::CloseLesson);
             }
         });
         if run.finished() {
-            ui.label("Lesson done.");
+            ui.label(tr!("lessons-finished"));
         }
     }
 }
@@ -150,38 +160,54 @@ fn tidy(text: &str) -> String {
         .join("\n\n")
 }
 
+/// Where a step points the student, as a sentence (the lesson module's own names are English).
+fn look_at(view: lessons::View) -> String {
+    use lessons::View;
+    match view {
+        View::Body => tr!("lessons-look-body"),
+        View::Table => tr!("lessons-look-table"),
+        View::Plots => tr!("lessons-look-plots"),
+        View::Sphere => tr!("lessons-look-sphere"),
+        View::Parts => tr!("lessons-look-parts"),
+        View::Motion => tr!("lessons-look-motion"),
+    }
+}
+
 /// What a check asks, in words.
 fn describe(check: &lessons::Check) -> String {
     use lessons::Check;
     match check {
-        Check::Sample { label } => format!("the {label} is loaded"),
-        Check::OwnMesh => "a mesh of your own is open".to_owned(),
-        Check::Source { source } => format!(
-            "the simulation uses the {} inertia",
-            match source {
-                lessons::Source::Exact => "exact",
-                lessons::Source::BoundingBox => "bounding-box",
-                lessons::Source::PointMasses => "point-mass",
-            }
-        ),
-        Check::Model { model } => match model {
-            lessons::Model::Full => "the full Euler equation is on".to_owned(),
-            lessons::Model::Textbook => "the textbook model is on".to_owned(),
+        Check::Sample { label } => tr!("lessons-check-sample", sample = label),
+        Check::OwnMesh => tr!("lessons-check-own-mesh"),
+        Check::Source { source } => match source {
+            lessons::Source::Exact => tr!("lessons-check-source-exact"),
+            lessons::Source::BoundingBox => tr!("lessons-check-source-bounding-box"),
+            lessons::Source::PointMasses => tr!("lessons-check-source-point-masses"),
         },
-        Check::SpinAxis { axis } => format!("it spins about axis {axis}"),
-        Check::Reversals { .. } => "reversals of ω₂".to_owned(),
-        Check::NoReversalFor { .. } => "steady".to_owned(),
-        Check::MeasuredHalfPeriod { tolerance } => {
-            format!("measured as predicted, within {:.0} %", tolerance * 100.0)
-        }
-        Check::FlipPeriod { .. } => "the flip period".to_owned(),
-        Check::MomentsEqual { tolerance } => {
-            format!("two moments equal within {:.0} %", tolerance * 100.0)
-        }
-        Check::Poked => "a poke changed L by r × J".to_owned(),
-        Check::Conserved { .. } => "E and |L| held".to_owned(),
-        Check::Elapsed { .. } => "time".to_owned(),
-        Check::Parts { at_least } => format!("at least {at_least} parts"),
-        Check::PartMoved { distance } => format!("a part moved {distance} m"),
+        Check::Model { model } => match model {
+            lessons::Model::Full => tr!("lessons-check-model-full"),
+            lessons::Model::Textbook => tr!("lessons-check-model-textbook"),
+        },
+        Check::SpinAxis { axis } => tr!("lessons-check-spin-axis", axis = *axis),
+        Check::Reversals { .. } => tr!("lessons-check-reversals"),
+        Check::NoReversalFor { .. } => tr!("lessons-check-steady"),
+        Check::MeasuredHalfPeriod { tolerance } => tr!(
+            "lessons-check-half-period",
+            tolerance = fixed(tolerance * 100.0, 0)
+        ),
+        Check::FlipPeriod { .. } => tr!("lessons-check-flip-period"),
+        Check::MomentsEqual { tolerance } => tr!(
+            "lessons-check-moments-equal",
+            tolerance = fixed(tolerance * 100.0, 0)
+        ),
+        Check::Poked => tr!("lessons-check-poked"),
+        Check::Conserved { .. } => tr!("lessons-check-conserved"),
+        Check::Elapsed { .. } => tr!("lessons-check-elapsed"),
+        Check::Parts { at_least } => tr!("lessons-check-parts", count = *at_least),
+        // As the lesson file writes it (`{distance}`), with the language's separator.
+        Check::PartMoved { distance } => tr!(
+            "lessons-check-part-moved",
+            distance = localize(distance.to_string())
+        ),
     }
 }

@@ -7,6 +7,7 @@
 //! side panel's sections, in `side::SidePanel`'s list.
 
 use super::platform::DialogPurpose;
+use crate::i18n::tr;
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Lab};
 
@@ -53,6 +54,7 @@ pub struct Panels {
 pub mod body;
 pub mod compare;
 pub mod diagnostics;
+pub mod display;
 pub mod help;
 pub mod interaction;
 pub mod lessons;
@@ -129,7 +131,11 @@ impl Default for PanelState {
 
 /// The Run / Pause button (in the side panel and over the plots).
 pub(crate) fn pause_button(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
-    let label = if lab.is_paused() { "Run" } else { "Pause" };
+    let label = if lab.is_paused() {
+        tr!("panels-run")
+    } else {
+        tr!("panels-pause")
+    };
     if ui.button(label).clicked() {
         commands.push(Command::TogglePause);
     }
@@ -147,7 +153,7 @@ pub(crate) fn number(
     ui.horizontal(|ui| {
         let l = ui.label(label);
         ui.add(
-            egui::DragValue::new(value)
+            localized(egui::DragValue::new(value))
                 .range(range)
                 .speed(speed)
                 .suffix(suffix)
@@ -156,6 +162,16 @@ pub(crate) fn number(
         .labelled_by(l.id)
     })
     .inner
+}
+
+/// A number field that shows and reads numbers with the language's decimal separator (3,5 in
+/// German; a point is read too).
+pub(crate) fn localized(field: egui::DragValue<'_>) -> egui::DragValue<'_> {
+    field
+        .custom_formatter(|value, decimals| {
+            crate::i18n::localize(egui::emath::format_with_decimals_in_range(value, decimals))
+        })
+        .custom_parser(crate::i18n::parse_number)
 }
 
 const HEADING_CHARS: usize = 28;
@@ -175,11 +191,11 @@ fn elide(text: &str, max: usize) -> String {
 
 /// The choice beside "Simulation uses" and "Rotation model" (one setting, shown at both).
 fn restart_on_switch(ui: &mut egui::Ui, s: &mut AppSettings) {
-    ui.checkbox(&mut s.physics.restart_on_switch, "Switching starts again")
-        .on_hover_text(
-            "A new inertia or rotation model starts the motion again from the same spin, so \
-             that the runs compare fairly. Off: the motion goes on from where it is.",
-        );
+    ui.checkbox(
+        &mut s.physics.restart_on_switch,
+        tr!("panels-restart-on-switch"),
+    )
+    .on_hover_text(tr!("panels-restart-on-switch-hover"));
 }
 
 #[cfg(test)]

@@ -8,7 +8,8 @@ use rbcore::{Integrator, Polhode, RotationModel, Stability};
 
 use super::{Frame, Panel, PanelState, number, restart_on_switch};
 use crate::gui::platform::DialogPurpose;
-use crate::lab::settings::AppSettings;
+use crate::i18n::{fixed, tr};
+use crate::lab::settings::{AppSettings, model_words};
 use crate::lab::specimen::TURNING_OVER;
 use crate::lab::{Command, Lab, PRIMARY};
 
@@ -21,13 +22,16 @@ impl Panel for MotionSection {
     }
 }
 
-/// What the motion text's terms mean, shown over it.
-const MOTION_TERMS: &str = "T: the period of the motion seen from the body (ω returns to where \
-    it was), predicted from the energy E and |L|.\nTurns over: axis 2 swings round to point \
-    the other way, and back, every T/2: the intermediate-axis (tennis-racket) flip.\nWobbles: \
-    the spin axis circles a stable axis at a small angle and never turns over.\nSeparatrix: \
-    the boundary between the motions about axis 1 and about axis 3, through axis 2; the closer \
-    a spin to it, the longer between flips.";
+/// What the motion text's terms mean, shown over it: a line a term.
+fn motion_terms() -> String {
+    [
+        tr!("motion-terms-period"),
+        tr!("motion-terms-turns-over"),
+        tr!("motion-terms-wobbles"),
+        tr!("motion-terms-separatrix"),
+    ]
+    .join("\n")
+}
 
 /// The motion text: a flip told from a wobble, predicted, and measured once seen. `cone` is the
 /// widest angle of L from the axis it circles ([`crate::lab::specimen::Specimen::cone_angle`]).
@@ -46,11 +50,13 @@ fn flip_text(
             separation,
         } if separation.is_infinite() => {
             let (p, q) = if axis == 2 { (1, 2) } else { (2, 3) };
-            format!(
-                "Axes {p} and {q} have equal moments: the body precesses about axis {}, its spin \
-                 axis at {:.1}° from it, once every T = {period:.3} s, and never turns over.",
-                axis + 1,
-                cone.to_degrees()
+            tr!(
+                "motion-equal-moments",
+                p = p,
+                q = q,
+                axis = axis + 1,
+                cone = fixed(cone.to_degrees(), 1),
+                period = fixed(period, 3),
             )
         }
         Polhode::Circles {
@@ -58,62 +64,43 @@ fn flip_text(
             period,
             separation,
         } if cone >= TURNING_OVER => {
-            let mut t = format!(
-                "Turns over every T/2 = {:.3} s (predicted from E and |L|",
-                period / 2.0
-            );
-            match measured {
-                Some(m) => t.push_str(&format!("; measured {m:.3} s)")),
-                None => t.push_str("; measured after two turns)"),
-            }
-            t.push_str(&format!(
-                ": axis 2 swings round and back while L circles axis {}.",
-                axis + 1
-            ));
+            let half = fixed(period / 2.0, 3);
+            let mut t = match measured {
+                Some(m) => tr!(
+                    "motion-turns-over-measured",
+                    half = half,
+                    measured = fixed(m, 3),
+                    axis = axis + 1,
+                ),
+                None => tr!("motion-turns-over", half = half, axis = axis + 1),
+            };
             if separation.abs() < 1e-3 {
-                t.push_str(
-                    " Near the separatrix: the closer the spin to it, the longer the interval, \
-                     without bound.",
-                );
+                t.push(' ');
+                t.push_str(&tr!("motion-near-separatrix"));
             }
             t
         }
-        Polhode::Circles { axis, period, .. } => format!(
-            "Wobbles by ±{:.1}° about axis {} and never turns over (one wobble every T = {period:.3} s).",
-            cone.to_degrees(),
-            axis + 1
+        Polhode::Circles { axis, period, .. } => tr!(
+            "motion-wobbles",
+            cone = fixed(cone.to_degrees(), 1),
+            axis = axis + 1,
+            period = fixed(period, 3),
         ),
-        Polhode::Separatrix => "On the separatrix through axis 2: the interval between flips \
-                                grows without bound."
-            .to_owned(),
+        Polhode::Separatrix => tr!("motion-separatrix"),
         Polhode::Steady { axis } => match rbcore::stability(moments, axis) {
-            Stability::Unstable => format!(
-                "Steady spin about axis {}: unstable, the slightest disturbance (a poke) starts \
-                 the flips.",
-                axis + 1
-            ),
-            Stability::Stable => format!(
-                "Steady spin about axis {}: stable, nothing flips (a poke only makes it wobble).",
-                axis + 1
-            ),
-            Stability::Neutral => format!(
-                "Steady spin about axis {}: its moment equals another's, so every axis in their \
-                 plane is principal and nothing flips.",
-                axis + 1
-            ),
+            Stability::Unstable => tr!("motion-steady-unstable", axis = axis + 1),
+            Stability::Stable => tr!("motion-steady-stable", axis = axis + 1),
+            Stability::Neutral => tr!("motion-steady-neutral", axis = axis + 1),
         },
-        Polhode::Spherical => "All three moments are equal: every axis is principal, so the spin \
-                               never moves in the body and nothing flips."
-            .to_owned(),
-        Polhode::AtRest => "At rest: nothing turns.".to_owned(),
+        Polhode::Spherical => tr!("motion-spherical"),
+        Polhode::AtRest => tr!("motion-at-rest"),
     };
     if model == RotationModel::Textbook {
-        text.push_str(
-            " The textbook model drops ω × Iω, so this body never flips: the prediction is the \
-             real body's.",
-        );
+        text.push(' ');
+        text.push_str(&tr!("motion-textbook-note"));
     } else if !torque_free {
-        text.push_str(" Damping or the string changes E and |L|: the prediction follows them.");
+        text.push(' ');
+        text.push_str(&tr!("motion-torque-note"));
     }
     text
 }
@@ -125,24 +112,25 @@ fn motion_section(
     s: &mut AppSettings,
     shared: &mut PanelState,
 ) {
-    egui::CollapsingHeader::new("Motion")
+    egui::CollapsingHeader::new(tr!("motion-header"))
+        .id_salt("motion")
         .default_open(true)
         .show(ui, |ui| {
             ui.horizontal(|ui| {
                 super::pause_button(ui, lab, commands);
-                if ui.button("Step").clicked() {
+                if ui.button(tr!("motion-step")).clicked() {
                     commands.push(Command::Step);
                 }
-                if ui.button("Reset").clicked() {
+                if ui.button(tr!("motion-reset")).clicked() {
                     commands.push(Command::Reset);
                 }
-                ui.label(format!("t = {:.2} s", lab.primary().sim().time()));
+                ui.label(format!("t = {} s", fixed(lab.primary().sim().time(), 2)));
             });
             ui.horizontal(|ui| {
                 for axis in 0..3 {
                     if ui
-                        .button(format!("Spin axis {}", axis + 1))
-                        .on_hover_text("about this principal axis, plus a 2 % perturbation")
+                        .button(tr!("motion-spin-axis", axis = axis + 1))
+                        .on_hover_text(tr!("motion-spin-axis-hover"))
                         .clicked()
                     {
                         commands.push(Command::Preset(axis));
@@ -161,34 +149,36 @@ fn motion_section(
                 torque_free,
             );
             ui.add(egui::Label::new(text).wrap())
-                .on_hover_text(MOTION_TERMS);
+                .on_hover_text(motion_terms());
             motion_export(ui, shared, commands);
             number(
                 ui,
-                "Spin rate",
+                &tr!("motion-spin-rate"),
                 &mut s.body.spin_rate,
                 0.0..=1000.0,
                 0.1,
-                " rad/s",
+                &format!(" {}", tr!("motion-unit-rad-per-second")),
             );
-            egui::ComboBox::from_label("Integrator")
+            // A combo box's label may be its id: all it keeps is whether its list is open, and
+            // choosing a language elsewhere closes it.
+            egui::ComboBox::from_label(tr!("motion-integrator"))
                 .selected_text(s.physics.integrator.name())
                 .show_ui(ui, |ui| {
                     for i in Integrator::ALL {
                         ui.selectable_value(&mut s.physics.integrator, i, i.name());
                     }
                 });
-            egui::ComboBox::from_label("Rotation model")
-                .selected_text(s.physics.model.name())
+            egui::ComboBox::from_label(tr!("motion-rotation-model"))
+                .selected_text(model_words(s.physics.model))
                 .show_ui(ui, |ui| {
                     for m in [RotationModel::Full, RotationModel::Textbook] {
-                        ui.selectable_value(&mut s.physics.model, m, m.name());
+                        ui.selectable_value(&mut s.physics.model, m, model_words(m));
                     }
                 });
             restart_on_switch(ui, s);
             number(
                 ui,
-                "Gravity (−y)",
+                &tr!("motion-gravity"),
                 &mut s.physics.gravity,
                 -100.0..=100.0,
                 0.1,
@@ -196,7 +186,7 @@ fn motion_section(
             );
             number(
                 ui,
-                "Linear damping",
+                &tr!("motion-linear-damping"),
                 &mut s.physics.linear_damping,
                 0.0..=100.0,
                 0.01,
@@ -204,7 +194,7 @@ fn motion_section(
             );
             number(
                 ui,
-                "Angular damping",
+                &tr!("motion-angular-damping"),
                 &mut s.physics.angular_damping,
                 0.0..=100.0,
                 0.01,
@@ -212,13 +202,20 @@ fn motion_section(
             );
             number(
                 ui,
-                "Time scale",
+                &tr!("motion-time-scale"),
                 &mut s.physics.time_scale,
                 0.0..=10.0,
                 0.01,
                 "×",
             );
-            number(ui, "Time step", &mut s.physics.dt, 1e-5..=0.1, 1e-4, " s");
+            number(
+                ui,
+                &tr!("motion-time-step"),
+                &mut s.physics.dt,
+                1e-5..=0.1,
+                1e-4,
+                " s",
+            );
         });
 }
 
@@ -226,9 +223,9 @@ fn motion_section(
 /// a second it bakes.
 fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
-        let hint = "Bake the motion from now on into a glTF (.glb) or USD (.usda) file with the \
-                    mesh: keyframes of this simulation, for Blender, viewers and engines.";
-        let export = ui.button("Export motion").on_hover_text(hint);
+        let export = ui
+            .button(tr!("motion-export"))
+            .on_hover_text(tr!("motion-export-hover"));
         if export.clicked() && !state.motion_path.trim().is_empty() {
             commands.push(Command::ExportMotion {
                 specimen: PRIMARY,
@@ -238,11 +235,11 @@ fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<C
             });
         }
         ui.add(egui::TextEdit::singleline(&mut state.motion_path).desired_width(110.0))
-            .on_hover_text("the file: .glb or .usda")
+            .on_hover_text(tr!("motion-export-file-hover"))
             .labelled_by(export.id);
         if ui
             .add_enabled(!state.dialog_open, egui::Button::new("…"))
-            .on_hover_text("choose where to save")
+            .on_hover_text(tr!("motion-export-choose-hover"))
             .clicked()
         {
             state.dialog_request = Some(DialogPurpose::SaveMotion);
@@ -250,7 +247,7 @@ fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<C
     });
     number(
         ui,
-        "Seconds baked",
+        &tr!("motion-seconds-baked"),
         &mut state.motion_seconds,
         0.1..=600.0,
         0.5,
@@ -258,11 +255,11 @@ fn motion_export(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<C
     );
     number(
         ui,
-        "Keyframes a second",
+        &tr!("motion-keyframes"),
         &mut state.motion_fps,
         1.0..=240.0,
         1.0,
-        " fps",
+        &format!(" {}", tr!("motion-unit-fps")),
     );
 }
 

@@ -9,9 +9,10 @@ use egui::{Color32, RichText};
 use massprops::materials::MATERIALS;
 use massprops::{MaterialEntry, PartEntry};
 
-use super::{Frame, Panel, PanelState, number};
+use super::{Frame, Panel, PanelState, localized, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::part_color;
+use crate::i18n::{fixed, localize, tr};
 use crate::lab::{Command, Lab};
 
 /// The Parts section: where "Save" writes the body file is its own state.
@@ -44,19 +45,19 @@ fn show(
     let body = lab.primary().body();
     let composition = body.composition.as_ref();
     let title = match composition {
-        Some(c) => format!("Parts ({})", c.parts.len()),
-        None => "Parts".to_owned(),
+        Some(c) => tr!("parts-header-count", count = c.parts.len()),
+        None => tr!("parts-header"),
     };
     egui::CollapsingHeader::new(title)
+        // A new number of parts is a new header (opened again), as when the title was its id;
+        // the language is not.
+        .id_salt(("parts", composition.map(|c| c.parts.len())))
         .default_open(composition.is_some())
         .show(ui, |ui| {
             let Some(c) = composition else {
-                ui.label(
-                    "One mesh at one density. Split it into its parts (its objects, groups or \
-                     separate pieces) to give each its own material, or add a mesh as a part.",
-                );
+                ui.label(tr!("parts-one-mesh"));
                 ui.horizontal_wrapped(|ui| {
-                    if ui.button("Split into parts").clicked() {
+                    if ui.button(tr!("parts-split")).clicked() {
                         commands.push(Command::SplitIntoParts);
                     }
                     add_part_buttons(ui, state, commands);
@@ -68,9 +69,9 @@ fn show(
             }
             egui::Grid::new("parts").striped(true).show(ui, |ui| {
                 ui.label("");
-                ui.label("part");
-                ui.label("mass (kg)");
-                ui.label("% of I1 I2 I3");
+                ui.label(tr!("parts-column-part"));
+                ui.label(tr!("parts-column-mass"));
+                ui.label(tr!("parts-column-shares"));
                 ui.end_row();
                 for (k, part) in c.parts.iter().enumerate() {
                     let [r, g, b] = part_color(k);
@@ -79,14 +80,15 @@ fn show(
                     ui.painter()
                         .rect_filled(rect, 2.0, Color32::from_rgb(r, g, b));
                     let selected = state.selected_part == Some(k);
-                    let mut name = part.entry.name.clone();
-                    if part.entry.void {
-                        name.push_str(" (void)");
-                    }
+                    let name = if part.entry.void {
+                        tr!("parts-void-name", name = &part.entry.name)
+                    } else {
+                        part.entry.name.clone()
+                    };
                     if ui.selectable_label(selected, name).clicked() {
                         state.selected_part = if selected { None } else { Some(k) };
                     }
-                    ui.label(format!("{:.4}", c.masses[k]));
+                    ui.label(fixed(c.masses[k], 4));
                     let s = c.shares[k] * 100.0;
                     ui.label(format!("{:.0} {:.0} {:.0}", s.x, s.y, s.z));
                     ui.end_row();
@@ -99,20 +101,20 @@ fn show(
                 let can_hide = shown > 1 || !c.parts[k].visible;
                 editor(ui, k, &c.parts[k], can_hide, commands);
             } else {
-                ui.small("Click a part to edit it.");
+                ui.small(tr!("parts-click-hint"));
             }
             ui.separator();
             ui.horizontal_wrapped(|ui| add_part_buttons(ui, state, commands));
             ui.horizontal(|ui| {
-                let l = ui.label("Save as");
+                let l = ui.label(tr!("parts-save-as"));
                 ui.add(egui::TextEdit::singleline(body_path).desired_width(130.0))
                     .labelled_by(l.id);
-                if ui.button("Save").clicked() && !body_path.trim().is_empty() {
+                if ui.button(tr!("parts-save")).clicked() && !body_path.trim().is_empty() {
                     commands.push(Command::SaveBody(PathBuf::from(body_path.trim())));
                 }
                 if ui
                     .add_enabled(!state.dialog_open, egui::Button::new("…"))
-                    .on_hover_text("Choose where to save the body file")
+                    .on_hover_text(tr!("parts-save-choose-hover"))
                     .clicked()
                 {
                     state.dialog_request = Some(DialogPurpose::SaveBody);
@@ -124,7 +126,7 @@ fn show(
 /// "Add part…" (a dialog) and adding the mesh named in the Path field.
 fn add_part_buttons(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Vec<Command>) {
     if ui
-        .add_enabled(!state.dialog_open, egui::Button::new("Add part…"))
+        .add_enabled(!state.dialog_open, egui::Button::new(tr!("parts-add")))
         .clicked()
     {
         state.dialog_request = Some(DialogPurpose::AddPart);
@@ -133,7 +135,7 @@ fn add_part_buttons(ui: &mut egui::Ui, state: &mut PanelState, commands: &mut Ve
     if platform::READS_PATHS
         && !path.is_empty()
         && ui
-            .button("Add the Path's mesh")
+            .button(tr!("parts-add-path"))
             .on_hover_text(path.to_owned())
             .clicked()
     {
@@ -159,9 +161,12 @@ fn editor(
 ) {
     let mut entry: PartEntry = part.entry.clone();
     let mut visible = part.visible;
-    ui.label(RichText::new(format!("Part “{}”", entry.name)).strong());
-    ui.add_enabled(can_hide, egui::Checkbox::new(&mut visible, "Visible"))
-        .on_disabled_hover_text("the only part shown");
+    ui.label(RichText::new(tr!("parts-part-title", name = &entry.name)).strong());
+    ui.add_enabled(
+        can_hide,
+        egui::Checkbox::new(&mut visible, tr!("parts-visible")),
+    )
+    .on_disabled_hover_text(tr!("parts-visible-disabled"));
     let choice = match &entry.material {
         MaterialEntry::Preset(name) => MATERIALS
             .iter()
@@ -170,21 +175,27 @@ fn editor(
         MaterialEntry::Density(_) => Choice::Density,
         MaterialEntry::Mass(_) => Choice::Mass,
     };
+    // A preset's name is the body file's word for it (`material = "steel"`), kept as written.
     let label = |c: Choice| match c {
-        Choice::Preset(i) => format!("{} ({} kg/m³)", MATERIALS[i].name, MATERIALS[i].density),
-        Choice::Density => "density".to_owned(),
-        Choice::Mass => "mass".to_owned(),
+        Choice::Preset(i) => format!(
+            "{} ({} kg/m³)",
+            MATERIALS[i].name,
+            localize(MATERIALS[i].density.to_string())
+        ),
+        Choice::Density => tr!("parts-choice-density"),
+        Choice::Mass => tr!("parts-choice-mass"),
     };
     let mut chosen = choice;
-    egui::ComboBox::from_label("Material")
+    // The label may be the id: a combo box keeps only whether its list is open.
+    egui::ComboBox::from_label(tr!("parts-material"))
         .selected_text(label(choice))
         .show_ui(ui, |ui| {
             for i in 0..MATERIALS.len() {
                 ui.selectable_value(&mut chosen, Choice::Preset(i), label(Choice::Preset(i)));
             }
-            ui.selectable_value(&mut chosen, Choice::Density, "density");
+            ui.selectable_value(&mut chosen, Choice::Density, label(Choice::Density));
             if !entry.void && entry.thin_wall.is_none() {
-                ui.selectable_value(&mut chosen, Choice::Mass, "mass");
+                ui.selectable_value(&mut chosen, Choice::Mass, label(Choice::Mass));
             }
         });
     if chosen != choice {
@@ -197,27 +208,30 @@ fn editor(
     }
     match &mut entry.material {
         MaterialEntry::Density(d) => {
-            number(ui, "Density", d, 1e-3..=1e6, 10.0, " kg/m³");
+            number(ui, &tr!("parts-density"), d, 1e-3..=1e6, 10.0, " kg/m³");
         }
         MaterialEntry::Mass(m) => {
-            number(ui, "Part mass", m, 1e-9..=1e9, 0.01, " kg");
+            number(ui, &tr!("parts-part-mass"), m, 1e-9..=1e9, 0.01, " kg");
         }
         MaterialEntry::Preset(_) => {}
     }
     let can_void = !matches!(entry.material, MaterialEntry::Mass(_)) && entry.thin_wall.is_none();
     ui.add_enabled(
         can_void,
-        egui::Checkbox::new(&mut entry.void, "Void (removes material)"),
+        egui::Checkbox::new(&mut entry.void, tr!("parts-void")),
     );
     let mut wall = entry.thin_wall.is_some();
     let can_wall = !entry.void && !matches!(entry.material, MaterialEntry::Mass(_));
     ui.horizontal(|ui| {
-        ui.add_enabled(can_wall, egui::Checkbox::new(&mut wall, "Thin wall"));
+        ui.add_enabled(
+            can_wall,
+            egui::Checkbox::new(&mut wall, tr!("parts-thin-wall")),
+        );
         if wall {
             let mut mm = entry.thin_wall.unwrap_or(0.002) * 1000.0;
-            let l = ui.label("thickness");
+            let l = ui.label(tr!("parts-thickness"));
             ui.add(
-                egui::DragValue::new(&mut mm)
+                localized(egui::DragValue::new(&mut mm))
                     .range(1e-3..=1e3)
                     .speed(0.1)
                     .suffix(" mm"),
@@ -228,29 +242,37 @@ fn editor(
             entry.thin_wall = None;
         }
     });
-    ui.label("Placement (metres; rotation first, about the mesh origin):");
+    ui.label(tr!("parts-placement"));
     ui.horizontal(|ui| {
         for (axis, value) in ["x", "y", "z"].iter().zip(entry.translation.iter_mut()) {
             let l = ui.label(*axis);
-            ui.add(egui::DragValue::new(value).speed(0.001).max_decimals(4))
-                .labelled_by(l.id);
+            ui.add(
+                localized(egui::DragValue::new(value))
+                    .speed(0.001)
+                    .max_decimals(4),
+            )
+            .labelled_by(l.id);
         }
     });
     let (mut axis, mut degrees) = entry.rotation.unwrap_or(([0.0, 0.0, 1.0], 0.0));
     ui.horizontal(|ui| {
-        let l = ui.label("turn");
+        let l = ui.label(tr!("parts-turn"));
         ui.add(
-            egui::DragValue::new(&mut degrees)
+            localized(egui::DragValue::new(&mut degrees))
                 .speed(1.0)
                 .suffix("°")
                 .max_decimals(2),
         )
         .labelled_by(l.id);
-        ui.label("about");
+        ui.label(tr!("parts-about"));
         for (name, value) in ["x", "y", "z"].iter().zip(axis.iter_mut()) {
             let l = ui.label(*name);
-            ui.add(egui::DragValue::new(value).speed(0.01).max_decimals(3))
-                .labelled_by(l.id);
+            ui.add(
+                localized(egui::DragValue::new(value))
+                    .speed(0.01)
+                    .max_decimals(3),
+            )
+            .labelled_by(l.id);
         }
     });
     // An axis of zeros is no axis: the last good one stays. No turn stays written as none.
@@ -268,7 +290,7 @@ fn editor(
             visible,
         });
     }
-    if ui.button("Remove part").clicked() {
+    if ui.button(tr!("parts-remove")).clicked() {
         commands.push(Command::RemovePart(index));
     }
     for w in part.warnings() {

@@ -6,9 +6,10 @@ use std::path::PathBuf;
 use egui::Color32;
 use egui_plot::{Legend, Line, LineStyle, Plot, PlotPoints};
 
-use super::{Frame, Panel, PanelState, number};
+use super::{Frame, Panel, PanelState, localized, number};
 use crate::gui::platform::{self, DialogPurpose};
 use crate::gui::view3d::overlay::AXIS_COLORS;
+use crate::i18n::{fixed, localize, sci, tr};
 use crate::lab::history::History;
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Lab, PRIMARY};
@@ -71,10 +72,10 @@ fn show(
     // Wraps within the plot panel in a narrow window: every control stays reachable.
     ui.horizontal_wrapped(|ui| {
         super::pause_button(ui, lab, commands);
-        ui.checkbox(&mut own.follow, "Follow");
+        ui.checkbox(&mut own.follow, tr!("plots-follow"));
         number(
             ui,
-            "Window",
+            &tr!("plots-window"),
             &mut settings.plots.window,
             0.5..=600.0,
             0.5,
@@ -82,7 +83,7 @@ fn show(
         );
         number(
             ui,
-            "History",
+            &tr!("plots-history"),
             &mut settings.plots.history,
             1.0..=600.0,
             1.0,
@@ -95,19 +96,15 @@ fn show(
         if dropped >= 0.005 {
             ui.colored_label(
                 Color32::from_rgb(255, 170, 60),
-                format!("skipped {dropped:.2} s"),
+                tr!("plots-skipped", seconds = fixed(dropped, 2)),
             )
-            .on_hover_text(
-                "The frames came too slowly for the time step: simulated time beyond \
-                     the catch-up limit was skipped (a larger step or a smaller time scale \
-                     keeps up).",
-            );
+            .on_hover_text(tr!("plots-skipped-hover"));
         }
         ui.separator();
-        let l = ui.label("CSV");
+        let l = ui.label(tr!("plots-csv"));
         ui.add(egui::TextEdit::singleline(&mut own.csv_path).desired_width(120.0))
             .labelled_by(l.id);
-        if ui.button("Export CSV").clicked() && !own.csv_path.trim().is_empty() {
+        if ui.button(tr!("plots-export-csv")).clicked() && !own.csv_path.trim().is_empty() {
             commands.push(Command::ExportCsv {
                 specimen: PRIMARY,
                 path: PathBuf::from(own.csv_path.trim()),
@@ -115,7 +112,7 @@ fn show(
         }
         if ui
             .add_enabled(!state.dialog_open, egui::Button::new("…"))
-            .on_hover_text("choose where to save")
+            .on_hover_text(tr!("plots-choose-file-hover"))
             .clicked()
         {
             state.dialog_request = Some(DialogPurpose::SaveCsv);
@@ -123,26 +120,26 @@ fn show(
         ui.separator();
         match state.recording {
             Some(left) => {
-                ui.label(format!("recording… {left:.1} s"));
-                if ui.button("Stop").clicked() {
+                ui.label(tr!("plots-recording", seconds = fixed(left, 1)));
+                if ui.button(tr!("plots-stop")).clicked() {
                     state.record_stop = true;
                 }
             }
             None => {
                 if ui
-                    .button("Record")
-                    .on_hover_text(platform::RECORD_HINT)
+                    .button(tr!("plots-record"))
+                    .on_hover_text(platform::record_hint())
                     .clicked()
                 {
                     state.record_request = true;
                 }
                 ui.add(
-                    egui::DragValue::new(&mut state.record_seconds)
+                    localized(egui::DragValue::new(&mut state.record_seconds))
                         .range(0.5..=120.0)
                         .speed(0.5)
                         .suffix(" s"),
                 )
-                .on_hover_text("how long to record");
+                .on_hover_text(tr!("plots-record-seconds-hover"));
             }
         }
     });
@@ -167,11 +164,15 @@ fn show(
         for (id, title, lines) in [
             (
                 "plot-omega",
-                "ω, principal frame (rad/s)",
+                tr!("plots-omega-title"),
                 lines(&OMEGA[..], &copies[..]),
             ),
-            ("plot-l", "L, world (kg·m²/s)", lines(&MOMENTUM[..], &[])),
-            ("plot-energy", "energy (J)", lines(&ENERGY[..], &[])),
+            ("plot-l", tr!("plots-l-title"), lines(&MOMENTUM[..], &[])),
+            (
+                "plot-energy",
+                tr!("plots-energy-title"),
+                lines(&ENERGY[..], &[]),
+            ),
         ] {
             ui.vertical(|ui| {
                 ui.small(title);
@@ -239,10 +240,14 @@ fn draw(
 fn drift_text(lab: &Lab) -> String {
     let primary = lab.primary();
     if primary.string_view().is_some() {
-        return "ΔE/E: n/a while the string pulls".to_owned();
+        return tr!("plots-drift-string");
     }
     match primary.history().energy_drift() {
-        Some((now, max)) => format!("ΔE/E₀ {now:+.2e} (max {max:.2e})"),
-        None => "ΔE/E₀: n/a (E₀ = 0)".to_owned(),
+        Some((now, max)) => tr!(
+            "plots-drift",
+            now = localize(format!("{now:+.2e}")),
+            max = sci(max, 2)
+        ),
+        None => tr!("plots-drift-none"),
     }
 }

@@ -5,8 +5,10 @@
 use egui::{Color32, RichText};
 
 use super::{Frame, Panel};
+use crate::i18n::{localize, tr};
 use crate::lab::{Command, Lab};
 use inertia_io::report::findings::{finding_text, num};
+use robot::GeometryKind;
 
 /// Colour of a finding that proves the stated inertia impossible, and of the others.
 const PROOF: Color32 = Color32::from_rgb(255, 120, 90);
@@ -28,22 +30,22 @@ fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
     };
     let robot = &model.robot;
     let flagged = model.audit.links.iter().filter(|l| l.flagged()).count();
-    egui::CollapsingHeader::new("Robot")
+    egui::CollapsingHeader::new(tr!("robot-header"))
+        .id_salt("robot")
         .default_open(true)
         .show(ui, |ui| {
             ui.add(
-                egui::Label::new(format!(
-                    "{} ({}): {} links, {flagged} with findings on their stated inertia. \
-                     Computed: uniform density over the collision geometry. Whole robot: each \
-                     link's equivalent ellipsoid, green from its geometry, orange as stated.",
-                    robot.name,
-                    robot.format.name().to_uppercase(),
-                    robot.links.len()
+                egui::Label::new(tr!(
+                    "robot-summary",
+                    name = &robot.name,
+                    format = robot.format.name().to_uppercase(),
+                    links = robot.links.len(),
+                    flagged = flagged,
                 ))
                 .wrap(),
             );
             if ui
-                .selectable_label(model.shown.is_none(), "Whole robot (zero pose)")
+                .selectable_label(model.shown.is_none(), tr!("robot-whole"))
                 .clicked()
             {
                 commands.push(Command::ShowLink(None));
@@ -56,10 +58,10 @@ fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
                         let link = &robot.links[l.link];
                         let mut codes: Vec<&str> = l.findings.iter().map(|f| f.code()).collect();
                         codes.dedup();
-                        let mass = l
-                            .stated
-                            .as_ref()
-                            .map_or("no inertial".to_owned(), |p| format!("{} kg", num(p.mass)));
+                        let mass = l.stated.as_ref().map_or_else(
+                            || tr!("robot-no-inertial"),
+                            |p| format!("{} kg", localize(num(p.mass))),
+                        );
                         let text = format!("{}  {mass}  {}", link.name, codes.join(", "));
                         let color = match l.worst() {
                             0 => PROOF,
@@ -78,20 +80,21 @@ fn show(ui: &mut egui::Ui, lab: &Lab, commands: &mut Vec<Command>) {
             if let Some(i) = model.shown {
                 let l = &model.audit.links[i];
                 ui.separator();
-                ui.strong(format!("Link {}", robot.links[i].name));
+                ui.strong(tr!("robot-link", name = &robot.links[i].name));
                 if let (Some(s), Ok(c)) = (&l.stated, &l.computed) {
                     let m = |p: &massprops::MassProperties| {
                         let v = p.principal.moments;
-                        format!("{} {} {}", num(v.x), num(v.y), num(v.z))
+                        localize(format!("{} {} {}", num(v.x), num(v.y), num(v.z)))
                     };
-                    ui.label(format!("stated moments   {} kg·m²", m(s)));
-                    ui.label(format!("computed moments {} kg·m²", m(&c.properties)));
+                    ui.label(tr!("robot-stated-moments", moments = m(s)));
+                    ui.label(tr!("robot-computed-moments", moments = m(&c.properties)));
                 }
                 for f in &l.findings {
                     let color = if f.severity() == 0 { PROOF } else { OTHER };
+                    // The findings' sentences are the audit library's, in English.
                     ui.add(
                         egui::Label::new(
-                            RichText::new(finding_text(f, "collision", |w| {
+                            RichText::new(finding_text(f, GeometryKind::Collision.name(), |w| {
                                 crate::gui::warnings::warning_text(w, &[])
                             }))
                             .small()

@@ -10,6 +10,7 @@ use super::parts::PartsSection;
 use super::robot::RobotSection;
 use super::table::TableSection;
 use super::{Frame, HEADING_CHARS, Panel, elide};
+use crate::i18n::tr;
 use crate::lab::Command;
 
 /// The side panel: the body's name over its sections, in the one list that registers them.
@@ -47,7 +48,7 @@ impl SidePanel {
                 section.show(ui, f);
             }
             ui.separator();
-            if ui.button("Reset settings").clicked() {
+            if ui.button(tr!("side-reset-settings")).clicked() {
                 f.commands.push(Command::ResetSettings);
             }
             // Tab moves the focus without scrolling: a keyboard user would tab on out of sight.

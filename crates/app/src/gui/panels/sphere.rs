@@ -10,6 +10,7 @@ use rbcore::{Integrator, RotationModel, Stability};
 
 use super::{Frame, Panel};
 use crate::gui::view3d::overlay::AXIS_COLORS;
+use crate::i18n::{sci, tr};
 use crate::lab::Lab;
 use rbcore::polhode_curves::{self as polhodes, Curve, CurveKind, polhodes};
 
@@ -67,7 +68,7 @@ fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut SpherePanel) {
     let moments = body.moments();
     let l = body.angular_momentum_principal();
     let m = l.norm();
-    ui.strong("Momentum sphere (principal frame)");
+    ui.strong(tr!("sphere-heading"));
     let legend_height = 5.0 * ui.text_style_height(&egui::TextStyle::Small) + 12.0;
     let size = ui
         .available_width()
@@ -164,26 +165,20 @@ fn show(ui: &mut egui::Ui, lab: &Lab, state: &mut SpherePanel) {
     legend(ui, &moments);
     let physics = &lab.settings().physics;
     let note = if physics.model == RotationModel::Textbook {
-        Some(
-            "Textbook model: without ω × Iω, ω never turns in the body, so the dot stands still \
-             while L turns in space (it should be fixed)."
-                .to_owned(),
-        )
+        Some(tr!("sphere-textbook-note"))
     } else {
-        let reasons: Vec<&str> = [
-            (physics.angular_damping > 0.0, "damping"),
-            (primary.string_view().is_some(), "the string"),
-            (!conserves(physics.integrator), "this integrator"),
+        let reasons = [
+            (physics.angular_damping > 0.0, tr!("sphere-reason-damping")),
+            (primary.string_view().is_some(), tr!("sphere-reason-string")),
+            (
+                !conserves(physics.integrator),
+                tr!("sphere-reason-integrator"),
+            ),
         ]
         .into_iter()
         .filter_map(|(on, why)| on.then_some(why))
-        .collect();
-        (!reasons.is_empty()).then(|| {
-            format!(
-                "The dot leaves its curve: {} changes E or |L|.",
-                reasons.join(" and ")
-            )
-        })
+        .reduce(|first, second| tr!("sphere-reasons-and", first = first, second = second));
+        reasons.map(|reasons| tr!("sphere-leaves-curve", reasons = reasons))
     };
     if let Some(note) = note {
         ui.add(egui::Label::new(egui::RichText::new(note).small().color(SEPARATRIX_COLOR)).wrap());
@@ -254,11 +249,11 @@ fn trail(
 }
 
 /// How a spin about principal axis `i` behaves, in words (rbcore's classification).
-fn stability(moments: &Vector3<f64>, i: usize) -> &'static str {
+fn stability(moments: &Vector3<f64>, i: usize) -> String {
     match rbcore::stability(moments, i) {
-        Stability::Stable => "stable",
-        Stability::Unstable => "unstable",
-        Stability::Neutral => "neutral (equal moments)",
+        Stability::Stable => tr!("sphere-stable"),
+        Stability::Unstable => tr!("sphere-unstable"),
+        Stability::Neutral => tr!("sphere-neutral"),
     }
 }
 
@@ -266,19 +261,18 @@ fn stability(moments: &Vector3<f64>, i: usize) -> &'static str {
 fn legend(ui: &mut egui::Ui, moments: &Vector3<f64>) {
     for (i, color) in AXIS_COLORS.iter().enumerate() {
         ui.label(
-            egui::RichText::new(format!(
-                "axis {}: I{} = {:.4e} kg·m², {}",
-                i + 1,
-                i + 1,
-                moments[i],
-                stability(moments, i)
+            egui::RichText::new(tr!(
+                "sphere-axis",
+                axis = i + 1,
+                moment = sci(moments[i], 4),
+                stability = stability(moments, i)
             ))
             .small()
             .color(*color),
         );
     }
     ui.label(
-        egui::RichText::new("orange: the separatrix; violet: L's polhode; white: L and its trail")
+        egui::RichText::new(tr!("sphere-legend"))
             .small()
             .color(Color32::GRAY),
     );

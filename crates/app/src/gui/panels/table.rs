@@ -6,6 +6,7 @@ use massprops::MassProperties;
 use egui::{Color32, RichText};
 
 use super::{Frame, Panel, restart_on_switch};
+use crate::i18n::{fixed, localize, sci, tr};
 use crate::lab::Lab;
 use crate::lab::settings::{AppSettings, InertiaSource};
 
@@ -19,11 +20,12 @@ impl Panel for TableSection {
 }
 
 fn fmt(x: f64) -> String {
-    format!("{x:.4e}")
+    sci(x, 4)
 }
 
 fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
-    egui::CollapsingHeader::new("Mass properties")
+    egui::CollapsingHeader::new(tr!("table-header"))
+        .id_salt("mass-properties")
         .default_open(true)
         .show(ui, |ui| {
             let primary = lab.primary();
@@ -39,19 +41,15 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                 .show(ui, |ui| {
                     ui.label("");
                     for src in &sources {
-                        ui.strong(match src {
-                            InertiaSource::BoundingBox => "bbox",
-                            InertiaSource::PointMasses => "points",
-                            other => other.label(),
-                        })
-                        .on_hover_text(source_meaning(*src));
+                        ui.strong(column_label(*src))
+                            .on_hover_text(source_meaning(*src));
                     }
                     ui.end_row();
-                    ui.label("mass (kg)");
+                    ui.label(tr!("table-mass"));
                     ui.label(fmt(exact.mass));
                     for (p, _) in &others {
                         ui.label(if p.mass == exact.mass {
-                            "same".to_owned()
+                            tr!("table-same")
                         } else {
                             fmt(p.mass)
                         });
@@ -59,7 +57,7 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                     ui.end_row();
                     for i in 0..3 {
                         ui.label(format!("I{} (kg·m²)", i + 1))
-                            .on_hover_text(format!("Principal moment of inertia about principal axis {}, moments ascending (axis 1 the least)", i + 1));
+                            .on_hover_text(tr!("table-moment-hover", axis = i + 1));
                         ui.label(fmt(exact.principal.moments[i]));
                         for (p, _) in &others {
                             ui.label(fmt(p.principal.moments[i]));
@@ -67,33 +65,32 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                         ui.end_row();
                     }
                     for i in 0..3 {
-                        ui.label(format!("error I{}", i + 1))
-                            .on_hover_text(format!("How far the approximation's moment I{} is from the exact one, in percent (red beyond 5 %)", i + 1));
+                        ui.label(tr!("table-error", axis = i + 1))
+                            .on_hover_text(tr!("table-error-hover", axis = i + 1));
                         ui.label("—");
                         for (_, c) in &others {
                             let e = c.moment_error[i] * 100.0;
-                            ui.label(error_text(format!("{e:+.1} %"), e.abs() > 5.0));
+                            ui.label(error_text(localize(format!("{e:+.1} %")), e.abs() > 5.0));
                         }
                         ui.end_row();
                     }
                     for i in 0..3 {
-                        ui.label(format!("axis {} angle", i + 1))
-                            .on_hover_text(format!("The angle between the approximation's principal axis {} and the exact one (red beyond 5°)", i + 1));
+                        ui.label(tr!("table-axis-angle", axis = i + 1))
+                            .on_hover_text(tr!("table-axis-angle-hover", axis = i + 1));
                         ui.label("—");
                         for (_, c) in &others {
                             match c.axis_angle[i] {
                                 Some(a) => {
                                     let deg = a.to_degrees();
-                                    ui.label(error_text(format!("{deg:.1}°"), deg > 5.0))
+                                    ui.label(error_text(format!("{}°", fixed(deg, 1)), deg > 5.0))
                                 }
-                                None => ui.label("n/a"),
+                                None => ui.label(tr!("table-not-applicable")),
                             };
                         }
                         ui.end_row();
                     }
-                    ui.label("CoM offset (m)").on_hover_text(
-                        "How far the approximation's centre of mass is from the exact one",
-                    );
+                    ui.label(tr!("table-com-offset"))
+                        .on_hover_text(tr!("table-com-offset-hover"));
                     ui.label("—");
                     for (_, c) in &others {
                         ui.label(fmt(c.com_offset));
@@ -108,15 +105,17 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
                 .map(|x| if x.abs() < 1e-12 * size { 0.0 } else { x });
             ui.add(
                 egui::Label::new(
-                    RichText::new(format!(
-                        "exact centre of mass ({:.3e}, {:.3e}, {:.3e}) m",
-                        c.x, c.y, c.z
+                    RichText::new(tr!(
+                        "table-center-of-mass",
+                        x = sci(c.x, 3),
+                        y = sci(c.y, 3),
+                        z = sci(c.z, 3),
                     ))
                     .small(),
                 )
                 .wrap(),
             );
-            ui.label(RichText::new("Simulation uses").strong());
+            ui.label(RichText::new(tr!("table-simulation-uses")).strong());
             ui.horizontal(|ui| {
                 for src in sources {
                     ui.radio_value(&mut s.body.source, src, src.label())
@@ -127,20 +126,22 @@ fn table_section(ui: &mut egui::Ui, lab: &Lab, s: &mut AppSettings) {
         });
 }
 
-/// What each inertia source is, for the table's headers and the radio buttons.
-fn source_meaning(source: InertiaSource) -> &'static str {
+/// An inertia source's column header: the long names shortened, so that the table fits.
+fn column_label(source: InertiaSource) -> String {
     match source {
-        InertiaSource::Exact => {
-            "Exact: the solid the mesh encloses, integrated over its volume (Mirtich's method)"
-        }
-        InertiaSource::BoundingBox => {
-            "Bounding box (bbox): a solid box around the mesh, axis-aligned, with the same mass, \
-             the usual guess of game engines"
-        }
-        InertiaSource::PointMasses => {
-            "Points: the mass shared equally among the mesh's vertices, as if each were a point mass"
-        }
-        InertiaSource::Stated => "Stated: what the robot description says",
+        InertiaSource::BoundingBox => tr!("table-column-bbox"),
+        InertiaSource::PointMasses => tr!("table-column-points"),
+        InertiaSource::Exact | InertiaSource::Stated => source.label(),
+    }
+}
+
+/// What each inertia source is, for the table's headers and the radio buttons.
+fn source_meaning(source: InertiaSource) -> String {
+    match source {
+        InertiaSource::Exact => tr!("table-meaning-exact"),
+        InertiaSource::BoundingBox => tr!("table-meaning-bounding-box"),
+        InertiaSource::PointMasses => tr!("table-meaning-point-masses"),
+        InertiaSource::Stated => tr!("table-meaning-stated"),
     }
 }
 

@@ -1,6 +1,7 @@
 //! The toolbar over the 3D view: overlay toggles and "frame the body".
 
 use super::{Frame, Panel};
+use crate::i18n::tr;
 use crate::lab::settings::{AppSettings, Equivalent};
 
 /// The toolbar over the 3D view.
@@ -23,34 +24,30 @@ fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
     // scrolled sideways hid its last controls, and nothing said they were there.
     ui.horizontal_wrapped(|ui| {
         frame = ui
-            .button("Frame")
-            .on_hover_text("centre the camera on the body (F)")
+            .button(tr!("toolbar-frame"))
+            .on_hover_text(tr!("toolbar-frame-hover"))
             .clicked();
         let v = &mut s.view;
-        ui.checkbox(&mut v.follow_body, "Follow body")
-            .on_hover_text(
-                "the camera moves with the centre of mass, so a poked body stays in view",
-            );
-        ui.checkbox(&mut v.wireframe, "Wireframe");
-        ui.checkbox(&mut v.bounding_box, "Bounding box")
-            .on_hover_text("the axis-aligned box around the mesh: the usual inertia guess");
-        ui.checkbox(&mut v.center_of_mass, "CoM")
-            .on_hover_text("the centre of mass");
-        ui.checkbox(&mut v.principal_axes, "Principal axes")
-            .on_hover_text("the axes of the principal moments, 1 the least, 3 the greatest");
+        ui.checkbox(&mut v.follow_body, tr!("toolbar-follow-body"))
+            .on_hover_text(tr!("toolbar-follow-body-hover"));
+        ui.checkbox(&mut v.wireframe, tr!("toolbar-wireframe"));
+        ui.checkbox(&mut v.bounding_box, tr!("toolbar-bounding-box"))
+            .on_hover_text(tr!("toolbar-bounding-box-hover"));
+        ui.checkbox(&mut v.center_of_mass, tr!("toolbar-com"))
+            .on_hover_text(tr!("toolbar-com-hover"));
+        ui.checkbox(&mut v.principal_axes, tr!("toolbar-principal-axes"))
+            .on_hover_text(tr!("toolbar-principal-axes-hover"));
         ui.checkbox(&mut v.omega_arrow, "ω")
-            .on_hover_text("the angular velocity ω (rad/s)");
+            .on_hover_text(tr!("toolbar-omega-hover"));
         ui.checkbox(&mut v.l_arrow, "L")
-            .on_hover_text("the angular momentum L = Iω, fixed in space with no torque");
-        ui.checkbox(&mut v.poinsot, "Poinsot").on_hover_text(
-            "the inertia ellipsoid rolling without slipping on the plane perpendicular to L",
-        );
-        ui.checkbox(&mut v.momentum_sphere, "Sphere").on_hover_text(
-            "the momentum sphere: L as the body sees it, on a sphere of radius |L|; its path, \
-                 the polhode, circles axis 1 or 3 and crosses at the separatrix through axis 2",
-        );
+            .on_hover_text(tr!("toolbar-l-hover"));
+        ui.checkbox(&mut v.poinsot, tr!("toolbar-poinsot"))
+            .on_hover_text(tr!("toolbar-poinsot-hover"));
+        ui.checkbox(&mut v.momentum_sphere, tr!("toolbar-sphere"))
+            .on_hover_text(tr!("toolbar-sphere-hover"));
         ui.separator();
-        egui::ComboBox::from_label("Equivalent")
+        // Its own id: the label changes with the language, the menu's state must not.
+        egui::ComboBox::new("toolbar-equivalent", tr!("toolbar-equivalent"))
             .selected_text(equivalent_name(v.equivalent))
             .show_ui(ui, |ui| {
                 for e in [Equivalent::None, Equivalent::Box, Equivalent::Ellipsoid] {
@@ -61,10 +58,10 @@ fn show(ui: &mut egui::Ui, s: &mut AppSettings) -> bool {
     frame
 }
 
-fn equivalent_name(e: Equivalent) -> &'static str {
+fn equivalent_name(e: Equivalent) -> String {
     match e {
-        Equivalent::None => "none",
-        Equivalent::Box => "box",
-        Equivalent::Ellipsoid => "ellipsoid",
+        Equivalent::None => tr!("toolbar-equivalent-none"),
+        Equivalent::Box => tr!("toolbar-equivalent-box"),
+        Equivalent::Ellipsoid => tr!("toolbar-equivalent-ellipsoid"),
     }
 }

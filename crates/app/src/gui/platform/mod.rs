@@ -67,6 +67,8 @@ pub struct Figures {
     pub lesson_step: String,
     /// How many built-in lessons there are.
     pub lessons: usize,
+    /// The language the lab speaks (its code: `en`, `de`, `es`).
+    pub language: &'static str,
     /// The stage of the file loading, when one is.
     pub loading: Option<String>,
     /// The 3D view's rectangle (left, top, width, height), in points: CSS pixels in a page.

@@ -15,6 +15,7 @@ use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
 use crate::gui::start::Start;
 use crate::gui::{SETTINGS_KEY, capture};
+use crate::i18n::{Language, tr};
 use crate::lab::lessons::LessonSource;
 use crate::lab::loader::LoadSource;
 use crate::lab::settings::{AppSettings, InertiaSource};
@@ -25,13 +26,17 @@ const OPENABLE: Openable = Openable { robots: true };
 
 /// What the side panel says may be dropped.
 pub fn drop_hint() -> String {
-    format!("or drop {} on the window", OPENABLE.words())
+    tr!("drop-hint-window")
 }
 
 /// What a closed dialog that chose nothing says: rfd reports a cancel and a missing XDG desktop
 /// portal alike.
-pub const NO_FILE_CHOSEN: &str = "no file chosen (if no dialog appeared, this desktop has no \
-                                  file-dialog portal: type a path or drop the file on the window)";
+pub fn no_file_chosen() -> String {
+    tr!("no-file-chosen-window")
+}
+
+/// The desktop leaves speech to real screen readers, through AccessKit.
+pub const SELF_VOICING: bool = false;
 
 /// Paths may be typed: the side panel's Path field reads the file named there.
 pub const READS_PATHS: bool = true;
@@ -40,7 +45,9 @@ pub const READS_PATHS: bool = true;
 pub const RECORD_TO_ARCHIVE: bool = false;
 
 /// What the Record button does, for its tooltip.
-pub const RECORD_HINT: &str = "the window as numbered PNG pictures, 10 per second";
+pub fn record_hint() -> String {
+    tr!("record-hint-window")
+}
 
 /// The window's title.
 pub fn set_title(ctx: &egui::Context, title: &str) {
@@ -57,7 +64,9 @@ pub fn share_address(query: &str) -> String {
 }
 
 /// What a shared link is, for the message that it was copied.
-pub const SHARE_HINT: &str = "put it after the address of the lab's page";
+pub fn share_hint() -> String {
+    tr!("share-hint-window")
+}
 
 /// A native file dialog running on its own thread (they block until closed).
 #[derive(Debug)]
@@ -166,6 +175,9 @@ pub struct GuiArgs {
     /// Open a lesson: its number from 1, its id, or a lesson file (….lesson.toml).
     #[arg(long, value_name = "LESSON")]
     pub lesson: Option<String>,
+    /// The language of the window: en, de or es (the system's when absent).
+    #[arg(long, value_name = "CODE", value_parser = language)]
+    pub lang: Option<Language>,
     /// Save the app's own pixels (3D view, panels, plots) as this PNG, then exit: default
     /// settings, after --after simulated seconds, paused there.
     #[arg(long, value_name = "OUT.png", conflicts_with = "bench_frames")]
@@ -242,6 +254,7 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
         after: args.after,
         embed: false,
         tweaks: crate::gui::link::Tweaks::default(),
+        language: args.lang,
     };
     let scripted = start.scripted();
     let options = eframe::NativeOptions {
@@ -291,6 +304,14 @@ pub fn run(args: &GuiArgs) -> Result<(), RunError> {
         };
     }
     Ok(())
+}
+
+/// A language from `--lang`'s code.
+fn language(code: &str) -> Result<Language, String> {
+    Language::from_tag(code).ok_or_else(|| {
+        let codes: Vec<&str> = Language::ALL.iter().map(|l| l.code()).collect();
+        format!("no language '{code}': the lab speaks {}", codes.join(", "))
+    })
 }
 
 /// Each extension in lower and upper case: the portal's filters match case-sensitively, and

@@ -16,6 +16,7 @@ use super::{Chosen, DialogPurpose, Figures};
 use crate::gui::bench::Bench;
 use crate::gui::start::Start;
 use crate::gui::{SETTINGS_KEY, link};
+use crate::i18n::tr;
 use crate::lab::loader::LoadSource;
 use crate::lab::settings::AppSettings;
 use crate::lab::{Command, Message};
@@ -28,12 +29,18 @@ const OPENABLE: Openable = Openable { robots: false };
 
 /// What the side panel says may be dropped.
 pub fn drop_hint() -> String {
-    format!("or drop {}, on the page", OPENABLE.words())
+    tr!("drop-hint-page")
 }
 
 /// What a closed picker that chose nothing says (or a drop of files the browser could not read,
 /// which the console names).
-pub const NO_FILE_CHOSEN: &str = "no file chosen";
+pub fn no_file_chosen() -> String {
+    tr!("no-file-chosen-page")
+}
+
+/// The page has no accessibility tree (eframe's web runner exposes none): egui's own screen
+/// reader, speaking through the browser, is offered.
+pub const SELF_VOICING: bool = true;
 
 /// A page has no paths to type: files come from the picker or a drop.
 pub const READS_PATHS: bool = false;
@@ -43,8 +50,9 @@ pub const READS_PATHS: bool = false;
 pub const RECORD_TO_ARCHIVE: bool = true;
 
 /// What the Record button does, for its tooltip.
-pub const RECORD_HINT: &str =
-    "the page as numbered PNG pictures, 10 per second, in one .zip download";
+pub fn record_hint() -> String {
+    tr!("record-hint-page")
+}
 
 /// The id of the canvas the app draws on (`web/index.html`).
 pub const CANVAS_ID: &str = "inertia-lab";
@@ -142,7 +150,9 @@ pub fn share_address(query: &str) -> String {
 }
 
 /// What a shared link is, for the message that it was copied.
-pub const SHARE_HINT: &str = "it opens this scene in the page";
+pub fn share_hint() -> String {
+    tr!("share-hint-page")
+}
 
 /// Shows `text` in the page's `#error` element (the canvas may be what failed).
 fn show_error(text: &str) {
@@ -196,9 +206,16 @@ pub fn publish(figures: &Figures) {
         ("data-lesson", figures.lesson.clone()),
         ("data-lesson-step", figures.lesson_step.clone()),
         ("data-lessons", figures.lessons.to_string()),
+        ("data-lang", figures.language.to_owned()),
         ("data-frames", frames.to_string()),
     ] {
         let _ = canvas.set_attribute(name, &value);
+    }
+    // A screen reader pronounces the page, its live regions included, in the document's language.
+    if let Some(root) = document().and_then(|d| d.document_element())
+        && root.get_attribute("lang").as_deref() != Some(figures.language)
+    {
+        let _ = root.set_attribute("lang", figures.language);
     }
     // The live region beside the canvas (eframe's web runner exposes no accessibility tree): a
     // screen reader reads it again whenever it changes, so it is written only then.

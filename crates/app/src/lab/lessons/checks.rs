@@ -2,6 +2,7 @@
 //! began. Each returns whether it holds and, where something was measured, what (in words the
 //! panel shows beside the check).
 
+use crate::i18n::{fixed, localize, sci, tr};
 use nalgebra::{Matrix3, Point3};
 
 use super::{Check, Model, Source};
@@ -175,18 +176,20 @@ impl Check {
             Check::SpinAxis { axis } => met(lab.preset_axis() + 1 == *axis),
             Check::Reversals { at_least } => CheckState {
                 met: snapshot.reversals >= *at_least,
-                finding: Some(format!(
-                    "{} of {at_least} reversals of ω₂ measured",
-                    snapshot.reversals.min(*at_least)
+                finding: Some(tr!(
+                    "check-reversals",
+                    measured = snapshot.reversals.min(*at_least),
+                    wanted = *at_least
                 )),
             },
             Check::NoReversalFor { seconds } => {
                 let quiet = now - snapshot.changed_at.max(snapshot.reversal_at);
                 CheckState {
                     met: quiet >= *seconds,
-                    finding: Some(format!(
-                        "{:.1} of {seconds:.0} s without a reversal",
-                        quiet.min(*seconds)
+                    finding: Some(tr!(
+                        "check-no-reversal",
+                        passed = fixed(quiet.min(*seconds), 1),
+                        seconds = fixed(*seconds, 0)
                     )),
                 }
             }
@@ -196,10 +199,11 @@ impl Check {
                         let off = (measured - predicted).abs() / predicted;
                         CheckState {
                             met: off <= *tolerance,
-                            finding: Some(format!(
-                                "measured {measured:.2} s between reversals, predicted \
-                                 {predicted:.2} s ({:.1} % apart)",
-                                off * 100.0
+                            finding: Some(tr!(
+                                "check-half-period",
+                                measured = fixed(measured, 2),
+                                predicted = fixed(predicted, 2),
+                                apart = fixed(off * 100.0, 1)
                             )),
                         }
                     }
@@ -211,15 +215,17 @@ impl Check {
                     let period = 2.0 * half;
                     CheckState {
                         met: (period - seconds).abs() <= tolerance * seconds,
-                        finding: Some(format!(
-                            "predicted flip period {period:.2} s (target {seconds} s ± {:.0} %)",
-                            tolerance * 100.0
+                        finding: Some(tr!(
+                            "check-flip-period",
+                            period = fixed(period, 2),
+                            target = localize(seconds.to_string()),
+                            tolerance = fixed(tolerance * 100.0, 0)
                         )),
                     }
                 }
                 None => CheckState {
                     met: false,
-                    finding: Some("it does not flip now".to_owned()),
+                    finding: Some(tr!("check-no-flip")),
                 },
             },
             Check::MomentsEqual { tolerance } => {
@@ -227,9 +233,9 @@ impl Check {
                 let closest = (m[1] - m[0]).min(m[2] - m[1]).abs() / m[2];
                 CheckState {
                     met: closest <= *tolerance,
-                    finding: Some(format!(
-                        "the two closest moments are {:.1} % apart",
-                        closest * 100.0
+                    finding: Some(tr!(
+                        "check-moments-apart",
+                        apart = fixed(closest * 100.0, 1)
                     )),
                 }
             }
@@ -239,9 +245,9 @@ impl Check {
                     CheckState {
                         met: off <= IDENTITY,
                         finding: Some(format!(
-                            "ΔL = {:.3e} kg·m²/s, r × J = {:.3e} kg·m²/s",
-                            p.measured.norm(),
-                            p.predicted.norm()
+                            "ΔL = {} kg·m²/s, r × J = {} kg·m²/s",
+                            sci(p.measured.norm(), 3),
+                            sci(p.predicted.norm(), 3)
                         )),
                     }
                 }
@@ -252,9 +258,11 @@ impl Check {
                 let drift = s.history().energy_drift().map_or(0.0, |(_, max)| max);
                 CheckState {
                     met: quiet >= *seconds && drift <= *tolerance,
-                    finding: Some(format!(
-                        "{:.1} of {seconds:.0} s; energy held to {drift:.1e}",
-                        quiet.clamp(0.0, *seconds)
+                    finding: Some(tr!(
+                        "check-conserved",
+                        passed = fixed(quiet.clamp(0.0, *seconds), 1),
+                        seconds = fixed(*seconds, 0),
+                        drift = sci(drift, 1)
                     )),
                 }
             }
@@ -262,9 +270,10 @@ impl Check {
                 let passed = now - snapshot.time;
                 CheckState {
                     met: passed >= *seconds,
-                    finding: Some(format!(
-                        "{:.1} of {seconds:.0} s",
-                        passed.clamp(0.0, *seconds)
+                    finding: Some(tr!(
+                        "check-elapsed",
+                        passed = fixed(passed.clamp(0.0, *seconds), 1),
+                        seconds = fixed(*seconds, 0)
                     )),
                 }
             }
@@ -272,7 +281,7 @@ impl Check {
                 let n = s.body().composition.as_ref().map_or(1, |c| c.parts.len());
                 CheckState {
                     met: n >= *at_least,
-                    finding: Some(format!("{n} part{}", if n == 1 { "" } else { "s" })),
+                    finding: Some(tr!("check-parts", parts = n)),
                 }
             }
             Check::PartMoved { distance } => part_moved(lab, snapshot, *distance),
@@ -308,11 +317,12 @@ fn part_moved(lab: &Lab, snapshot: &Snapshot, distance: f64) -> CheckState {
     let off = (measured - predicted).amax() / before.amax();
     CheckState {
         met: d >= distance && off <= IDENTITY,
-        finding: Some(format!(
-            "a part of {m:.3} kg moved {d:.3} m; the tensor about the origin changed by \
-             {:.4e} kg·m² at most, the parallel-axis theorem says {:.4e}",
-            measured.amax(),
-            predicted.amax()
+        finding: Some(tr!(
+            "check-part-moved",
+            mass = fixed(m, 3),
+            distance = fixed(d, 3),
+            measured = sci(measured.amax(), 4),
+            predicted = sci(predicted.amax(), 4)
         )),
     }
 }

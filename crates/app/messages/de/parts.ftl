@@ -1,0 +1,31 @@
+# Der Abschnitt Teile: ein Körper aus Teilen, Material und Lage des gewählten Teils (crates/app/src/gui/panels/parts.rs).
+
+parts-header = Teile
+parts-header-count = Teile ({ $count })
+parts-one-mesh = Ein Netz mit einer Dichte. Zerlegen Sie es in seine Teile (seine Objekte, Gruppen oder getrennten Stücke), um jedem ein eigenes Material zu geben, oder fügen Sie ein Netz als Teil hinzu.
+parts-split = In Teile zerlegen
+parts-column-part = Teil
+parts-column-mass = Masse (kg)
+parts-column-shares = % von I1 I2 I3
+parts-void-name = { $name } (Hohlraum)
+parts-click-hint = Klicken Sie auf ein Teil, um es zu bearbeiten.
+parts-save-as = Speichern als
+parts-save = Speichern
+parts-save-choose-hover = Wählen Sie, wo die Körperdatei gespeichert wird
+parts-add = Teil hinzufügen…
+parts-add-path = Netz aus dem Pfad hinzufügen
+parts-part-title = Teil „{ $name }“
+parts-visible = Sichtbar
+parts-visible-disabled = das einzige angezeigte Teil
+parts-material = Material
+parts-choice-density = Dichte
+parts-choice-mass = Masse
+parts-density = Dichte
+parts-part-mass = Masse des Teils
+parts-void = Hohlraum (entfernt Material)
+parts-thin-wall = Dünne Wand
+parts-thickness = Dicke
+parts-placement = Lage (Meter; zuerst die Drehung, um den Ursprung des Netzes):
+parts-turn = Drehung
+parts-about = um
+parts-remove = Teil entfernen

@@ -1,0 +1,31 @@
+# The Parts section: a body made of parts, the selected part's material and placement (crates/app/src/gui/panels/parts.rs).
+
+parts-header = Parts
+parts-header-count = Parts ({ $count })
+parts-one-mesh = One mesh at one density. Split it into its parts (its objects, groups or separate pieces) to give each its own material, or add a mesh as a part.
+parts-split = Split into parts
+parts-column-part = part
+parts-column-mass = mass (kg)
+parts-column-shares = % of I1 I2 I3
+parts-void-name = { $name } (void)
+parts-click-hint = Click a part to edit it.
+parts-save-as = Save as
+parts-save = Save
+parts-save-choose-hover = Choose where to save the body file
+parts-add = Add part…
+parts-add-path = Add the Path's mesh
+parts-part-title = Part “{ $name }”
+parts-visible = Visible
+parts-visible-disabled = the only part shown
+parts-material = Material
+parts-choice-density = density
+parts-choice-mass = mass
+parts-density = Density
+parts-part-mass = Part mass
+parts-void = Void (removes material)
+parts-thin-wall = Thin wall
+parts-thickness = thickness
+parts-placement = Placement (metres; rotation first, about the mesh origin):
+parts-turn = turn
+parts-about = about
+parts-remove = Remove part

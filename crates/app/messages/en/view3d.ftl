@@ -1,0 +1,1 @@
+# view3d: to be written (see crates/app/src/i18n/mod.rs)

@@ -1,0 +1,31 @@
+# La sección Piezas: un cuerpo hecho de piezas, el material y la colocación de la pieza elegida (crates/app/src/gui/panels/parts.rs).
+
+parts-header = Piezas
+parts-header-count = Piezas ({ $count })
+parts-one-mesh = Una malla con una sola densidad. Divídala en sus piezas (sus objetos, grupos o trozos separados) para dar a cada una su propio material, o añada una malla como pieza.
+parts-split = Dividir en piezas
+parts-column-part = pieza
+parts-column-mass = masa (kg)
+parts-column-shares = % de I1 I2 I3
+parts-void-name = { $name } (hueco)
+parts-click-hint = Haga clic en una pieza para editarla.
+parts-save-as = Guardar como
+parts-save = Guardar
+parts-save-choose-hover = Elegir dónde guardar el archivo del cuerpo
+parts-add = Añadir pieza…
+parts-add-path = Añadir la malla de la ruta
+parts-part-title = Pieza «{ $name }»
+parts-visible = Visible
+parts-visible-disabled = la única pieza visible
+parts-material = Material
+parts-choice-density = densidad
+parts-choice-mass = masa
+parts-density = Densidad
+parts-part-mass = Masa de la pieza
+parts-void = Hueco (quita material)
+parts-thin-wall = Pared delgada
+parts-thickness = grosor
+parts-placement = Colocación (metros; primero la rotación, alrededor del origen de la malla):
+parts-turn = giro
+parts-about = sobre
+parts-remove = Quitar pieza
