@@ -758,3 +758,49 @@ fn lesson_1_is_completed_from_the_lessons_panel() {
     let run = h.state().lab().lesson().expect("open");
     assert_eq!(run.progress(), "done");
 }
+
+/// The Language menu turns the whole window German at once: the top bar, the side panel, the
+/// live description of the 3D view (with a decimal comma), and back to English.
+#[test]
+fn the_language_menu_changes_every_word_and_the_decimal_separator() {
+    use egui::accesskit::Role;
+    use egui_kittest::kittest::NodeT;
+    let mut h = harness();
+    frames(&mut h, 2);
+    h.get_by_role_and_label(Role::ComboBox, "Language").click();
+    frames(&mut h, 2);
+    h.get_by_label("Deutsch").click();
+    frames(&mut h, 3);
+    assert_eq!(
+        h.state().lab().settings().display.language,
+        Some(Language::German)
+    );
+    h.get_by_role_and_label(Role::Button, "Hilfe");
+    h.get_by_role_and_label(Role::Button, "Lektionen");
+    assert!(
+        h.query_by_label("Help").is_none(),
+        "English left in the top bar"
+    );
+    let described = h
+        .query_by_label_contains("dreht sich mit")
+        .expect("the 3D view described in German");
+    let text = described.accesskit_node().label().unwrap_or_default();
+    // The rate, to two significant digits, in the word before its unit: "8,0 rad/s".
+    let rate = text
+        .split_whitespace()
+        .take_while(|w| *w != "rad/s")
+        .last()
+        .unwrap_or_default();
+    assert!(
+        rate.contains(',')
+            && rate
+                .trim_matches(|c: char| c.is_ascii_digit() || c == ',')
+                .is_empty(),
+        "the rate {rate:?} is not written with a decimal comma: {text}"
+    );
+    h.get_by_role_and_label(Role::ComboBox, "Sprache").click();
+    frames(&mut h, 2);
+    h.get_by_label("English").click();
+    frames(&mut h, 3);
+    h.get_by_role_and_label(Role::Button, "Help");
+}

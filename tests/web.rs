@@ -238,7 +238,10 @@ fn web_page_runs_the_lab() {
     // The single file runs from the disk, and a file dropped on it loads in its worker with the
     // mass props computes.
     let single = &s["single_file"];
-    assert_eq!(single["first"]["title"], "Inertia Lab — T-handle", "single file: {single}");
+    assert_eq!(
+        single["first"]["title"], "Inertia Lab — T-handle",
+        "single file: {single}"
+    );
     let shown = number(&single["dropped"]["mass"]);
     let props = props_mass(&picked);
     assert!(

@@ -15,3 +15,5 @@ link-own-file = { $name } stammt aus einer eigenen Datei, die ein Link nicht tra
 link-sample-unknown = sample={ $value }: kein solches Beispiel (es gibt { $samples })
 link-compare-unknown = compare={ $value }: { $name } ist keines von bbox, points, textbook
 link-compare-too-many = compare={ $value }: höchstens { $most } Kopien
+link-lang-invalid = lang={ $value }: das Labor spricht en, de und es
+link-problems = der Link: { $problems }

@@ -8,3 +8,5 @@ record-hint-window = das Fenster als nummerierte PNG-Bilder, 10 pro Sekunde
 record-hint-page = die Seite als nummerierte PNG-Bilder, 10 pro Sekunde, in einem .zip-Download
 share-hint-window = hinter die Adresse der Seite des Labors setzen
 share-hint-page = er öffnet diese Szene auf der Seite
+dialog-body-files = Körperdateien
+dialog-gltf-binary = glTF binär

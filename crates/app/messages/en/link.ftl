@@ -15,3 +15,5 @@ link-own-file = { $name } came from a file of yours, which a link cannot carry: 
 link-sample-unknown = sample={ $value }: no such sample (there are { $samples })
 link-compare-unknown = compare={ $value }: { $name } is none of bbox, points, textbook
 link-compare-too-many = compare={ $value }: at most { $most } copies
+link-lang-invalid = lang={ $value }: the lab speaks en, de and es
+link-problems = the link: { $problems }

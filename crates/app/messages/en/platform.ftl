@@ -8,3 +8,5 @@ record-hint-window = the window as numbered PNG pictures, 10 per second
 record-hint-page = the page as numbered PNG pictures, 10 per second, in one .zip download
 share-hint-window = put it after the address of the lab's page
 share-hint-page = it opens this scene in the page
+dialog-body-files = Body files
+dialog-gltf-binary = glTF binary

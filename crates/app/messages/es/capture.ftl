@@ -6,4 +6,4 @@ capture-cannot-write = no se puede escribir { $path }: { $error }
 capture-recording-stopped = grabación detenida: { $error }
 capture-recording-not-saved = grabación no guardada: { $path }: { $error }
 capture-recorded = grabadas { $written } de { $requested } imágenes ({ $rate } por segundo) en { $path }
-capture-archive-too-big = { $name }: el archivo ZIP superaría 4 GiB o 65 535 ficheros
+capture-archive-too-big = { $name }: el archivo ZIP superaría 4 GiB o 65 535 archivos

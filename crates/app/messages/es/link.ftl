@@ -15,3 +15,5 @@ link-own-file = { $name } viene de un archivo suyo, que un enlace no puede lleva
 link-sample-unknown = sample={ $value }: no existe ese ejemplo (hay { $samples })
 link-compare-unknown = compare={ $value }: { $name } no es ninguno de bbox, points, textbook
 link-compare-too-many = compare={ $value }: como máximo { $most } copias
+link-lang-invalid = lang={ $value }: el laboratorio habla en, de y es
+link-problems = el enlace: { $problems }

@@ -8,3 +8,5 @@ record-hint-window = la ventana como imágenes PNG numeradas, 10 por segundo
 record-hint-page = la página como imágenes PNG numeradas, 10 por segundo, en una sola descarga .zip
 share-hint-window = póngalo tras la dirección de la página del laboratorio
 share-hint-page = abre esta escena en la página
+dialog-body-files = Archivos de cuerpo
+dialog-gltf-binary = glTF binario

@@ -6,16 +6,16 @@
 
 use rbcore::RotationModel;
 
-use crate::i18n::tr;
+use crate::i18n::{Language, tr};
 use crate::lab::lessons::LessonSource;
 use crate::lab::samples::{SAMPLE_BODIES, SAMPLES};
 use crate::lab::settings::{AppSettings, InertiaSource, MassGiven};
 use crate::lab::{Command, Lab, MAX_COPIES, Variant};
 
 /// The keys a link may give.
-pub const KEYS: [&str; 13] = [
+pub const KEYS: [&str; 14] = [
     "sample", "spin", "compare", "source", "model", "size", "density", "mass", "rate", "lesson",
-    "step", "embed", "bench",
+    "step", "lang", "embed", "bench",
 ];
 
 /// What a link asks for.
@@ -46,6 +46,8 @@ pub struct Tweaks {
     pub mass: Option<MassGiven>,
     /// `rate=`: the presets' spin rate (rad/s).
     pub spin_rate: Option<f64>,
+    /// `lang=`: the language.
+    pub language: Option<Language>,
 }
 
 impl Tweaks {
@@ -58,6 +60,9 @@ impl Tweaks {
         b.spin_rate = self.spin_rate.unwrap_or(b.spin_rate);
         if let Some(model) = self.model {
             settings.physics.model = model;
+        }
+        if self.language.is_some() {
+            settings.display.language = self.language;
         }
         settings
     }
@@ -127,6 +132,9 @@ pub fn parse(query: &str) -> LinkScene {
                 }
                 _ => Err(tr!("link-step-invalid", value = &value)),
             },
+            "lang" => Language::from_tag(&value)
+                .map(|l| scene.settings.language = Some(l))
+                .ok_or_else(|| tr!("link-lang-invalid", value = &value)),
             "embed" => {
                 scene.embed = value != "0";
                 Ok(())
@@ -221,6 +229,9 @@ pub fn share(lab: &Lab) -> Result<String, String> {
     if let Some(run) = lab.lesson() {
         pairs.push(("lesson", run.lesson.id.clone()));
         pairs.push(("step", (run.step + 1).to_string()));
+    }
+    if let Some(language) = s.display.language {
+        pairs.push(("lang", language.code().to_owned()));
     }
     let query: Vec<String> = pairs.into_iter().map(|(k, v)| format!("{k}={v}")).collect();
     Ok(format!("?{}", query.join("&")))
@@ -340,7 +351,7 @@ mod tests {
 
     #[test]
     fn every_problem_is_named_and_the_rest_still_applies() {
-        let scene = parse("sample=anvil&spin=4&compare=bbox,mass&colour=red&bench=x&spin=3");
+        let scene = parse("sample=anvil&spin=4&compare=bbox,mass&bench=x&spin=3");
         assert_eq!(scene.commands, vec![Command::Preset(2)]);
         let problems = scene.problems.join("\n");
         for part in [
@@ -374,6 +385,7 @@ mod tests {
         s.body.spin_rate = 5.5;
         s.body.source = InertiaSource::BoundingBox;
         s.physics.model = RotationModel::Textbook;
+        s.display.language = Some(Language::German);
         lab.apply(Command::Settings(Box::new(s)));
         lab.apply(Command::Preset(2));
         lab.apply(Command::Compare(vec![Variant::Source(
@@ -392,7 +404,11 @@ mod tests {
         assert_eq!(again.preset_axis(), 2);
         assert_eq!(again.settings().body, lab.settings().body);
         assert_eq!(again.settings().physics.model, RotationModel::Textbook);
+        assert_eq!(again.settings().display.language, Some(Language::German));
         assert_eq!(again.specimens().len(), 2);
+        let bad = parse("?lang=fr");
+        assert_eq!(bad.settings.language, None);
+        assert_eq!(bad.problems, ["lang=fr: the lab speaks en, de and es"]);
 
         let mut own = Lab::new(AppSettings::default()).expect("the lab");
         let dir = std::env::temp_dir().join(format!("share-{}", std::process::id()));

@@ -90,7 +90,7 @@ impl Dialog {
                     .add_filter(part_label(), &any_case(&part_extensions()))
                     .pick_file(),
                 DialogPurpose::SaveBody => dialog
-                    .add_filter("Body files", &["toml"])
+                    .add_filter(tr!("dialog-body-files"), &["toml"])
                     .set_file_name("body.toml")
                     .save_file(),
                 DialogPurpose::SaveCsv => dialog
@@ -98,7 +98,7 @@ impl Dialog {
                     .set_file_name("inertia-lab.csv")
                     .save_file(),
                 DialogPurpose::SaveMotion => dialog
-                    .add_filter("glTF binary", &["glb"])
+                    .add_filter(tr!("dialog-gltf-binary"), &["glb"])
                     .add_filter("USD", &["usda"])
                     .set_file_name("motion.glb")
                     .save_file(),

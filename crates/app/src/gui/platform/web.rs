@@ -113,7 +113,7 @@ async fn run() -> Result<(), JsValue> {
                 let mut commands = scene.commands;
                 if !scene.problems.is_empty() {
                     commands.push(Command::Notify(Message {
-                        text: format!("the link: {}", scene.problems.join("; ")),
+                        text: tr!("link-problems", problems = scene.problems.join("; ")),
                         error: true,
                     }));
                 }

@@ -12,6 +12,7 @@ use egui::{Color32, PointerButton, Sense, Stroke};
 use nalgebra::{Matrix4, Point3, Vector3};
 
 use self::camera::OrbitCamera;
+use crate::i18n::{self, tr};
 use crate::lab::geometry::WIREFRAME_MAX_EDGES;
 use crate::lab::settings::GhostLayout;
 use crate::lab::{Command, Lab, PRIMARY};
@@ -52,11 +53,6 @@ pub struct View3d {
 
 /// How far one press of an arrow key moves the keyboard's aim (view heights).
 const AIM_STEP: f32 = 0.02;
-
-/// The one-line hint under the view.
-pub const HINT: &str = "Click body: poke · Drag body: string · Drag background: orbit · \
-                        Right/middle drag: pan · Wheel: zoom · F: frame · Space: pause · S: step · \
-                        R: reset · Arrows and P: aim and poke · L: lessons · F1: help";
 
 /// Where specimen `k` (0: the body) stands in a row, in bounding radii along the screen's right:
 /// the body in the middle, the first copy to its left, the others to its right.
@@ -196,26 +192,32 @@ impl View3d {
                 ui.painter().text(
                     rect.center(),
                     egui::Align2::CENTER_CENTER,
-                    "3D view unavailable (no OpenGL context)",
+                    tr!("view3d-unavailable"),
                     egui::FontId::proportional(14.0),
                     Color32::GRAY,
                 );
             }
         }
         self.paint_overlay(ui, rect, lab, selection);
-        let mut hint = HINT.to_owned();
+        // The one-line hint under the view: the controls, after what is drawn differently.
+        let mut hint = tr!("view3d-hint");
         if let Some(drawn) = &lab.primary().body().drawn {
-            hint = format!(
-                "Drawn simplified: {} of {} triangles (the drawing budget of a software \
-                 renderer); every number and pick uses them all · {hint}",
-                inertia_io::wording::millions(drawn.mesh.triangles.len()),
-                inertia_io::wording::millions(lab.primary().body().mesh.triangles.len()),
+            let count = |n: usize| i18n::localize(inertia_io::wording::millions(n));
+            hint = tr!(
+                "view3d-drawn-simplified",
+                drawn = count(drawn.mesh.triangles.len()),
+                total = count(lab.primary().body().mesh.triangles.len()),
+                hint = hint,
             );
         }
         if lab.settings().view.wireframe
             && lab.primary().body().analysis.diagnostics.edges > WIREFRAME_MAX_EDGES
         {
-            hint = format!("Wireframe off above {WIREFRAME_MAX_EDGES} edges · {hint}");
+            hint = tr!(
+                "view3d-wireframe-off",
+                edges = WIREFRAME_MAX_EDGES,
+                hint = hint
+            );
         }
         ui.allocate_ui(egui::vec2(rect.width(), hint_height), |ui| {
             ui.small(hint);

@@ -9,6 +9,7 @@ use egui::{Align2, Color32};
 use massprops::approximations::{EquivalentShape, equivalent_half_extents};
 use nalgebra::{Point3, Vector3};
 
+use crate::i18n::{fixed, sci, tr};
 use crate::lab::placement::Placement;
 use crate::lab::settings::{Equivalent, InertiaSource, ViewSettings};
 use crate::lab::{Lab, Specimen};
@@ -228,8 +229,10 @@ fn link_ellipsoids(o: &mut Overlay, c: &Context<'_>) {
     if too_large > 0 {
         o.labels.push(Label {
             at: c.com + Vector3::new(0.0, c.radius, 0.0),
-            text: format!(
-                "{too_large} ellipsoid(s) larger than the robot, not drawn (up to {largest:.2} m across)"
+            text: tr!(
+                "view3d-ellipsoids-too-large",
+                count = too_large,
+                across = fixed(largest, 2)
             ),
             color: STATED_LINK_COLOR,
             align: Align2::CENTER_BOTTOM,
@@ -299,8 +302,8 @@ fn highlighted_faces(o: &mut Overlay, c: &Context<'_>) {
     for (at, list) in labelled {
         let names: Vec<String> = list.iter().map(usize::to_string).collect();
         let text = match names.len() {
-            1 => format!("face {}", names[0]),
-            _ => format!("faces {}", names.join(", ")),
+            1 => tr!("view3d-face", face = &names[0]),
+            _ => tr!("view3d-faces", faces = names.join(", ")),
         };
         o.labels.push(Label {
             at,
@@ -339,7 +342,7 @@ fn bounding_box(o: &mut Overlay, c: &Context<'_>) {
     let top = outline_box(o, c, lo, hi, GUIDE_COLOR, 1.5);
     o.labels.push(Label {
         at: top,
-        text: "bounding box".to_owned(),
+        text: tr!("view3d-bounding-box"),
         color: GUIDE_COLOR,
         align: Align2::LEFT_BOTTOM,
     });
@@ -415,7 +418,7 @@ fn equivalent(o: &mut Overlay, c: &Context<'_>) {
     principal_sections(o, &half, to_world, 48, EQUIVALENT_COLOR, 1.5);
     o.labels.push(Label {
         at: to_world(Vector3::new(half[0], 0.0, 0.0)),
-        text: "equivalent ellipsoid".to_owned(),
+        text: tr!("view3d-equivalent-ellipsoid"),
         color: EQUIVALENT_COLOR,
         align: Align2::LEFT_BOTTOM,
     });
@@ -469,7 +472,7 @@ fn poinsot(o: &mut Overlay, c: &Context<'_>) {
     }
     o.labels.push(Label {
         at: square[2],
-        text: "invariable plane (perpendicular to L)".to_owned(),
+        text: tr!("view3d-invariable-plane"),
         color: POINSOT_COLOR,
         align: Align2::LEFT_BOTTOM,
     });
@@ -507,7 +510,7 @@ fn center_of_mass(o: &mut Overlay, c: &Context<'_>) {
         o.markers.push((at, EXACT_COM_COLOR));
         o.labels.push(Label {
             at,
-            text: "exact CoM".to_owned(),
+            text: tr!("view3d-exact-com"),
             color: EXACT_COM_COLOR,
             align: Align2::LEFT_BOTTOM,
         });
@@ -536,16 +539,16 @@ fn l_arrow(o: &mut Overlay, c: &Context<'_>) {
     let torque_free =
         c.lab.settings().physics.angular_damping == 0.0 && c.specimen.string_view().is_none();
     let label = if torque_free {
-        "L (fixed: no torque)"
+        tr!("view3d-l-fixed")
     } else {
-        "L"
+        "L".to_owned()
     };
     let l = c.specimen.sim().body().angular_momentum();
     o.arrow(
         c.com,
         c.scaled(l, c.l_reference()),
         L_COLOR,
-        label,
+        &label,
         Align2::RIGHT_BOTTOM,
     );
 }
@@ -566,7 +569,7 @@ fn poke(o: &mut Overlay, c: &Context<'_>) {
     });
     o.labels.push(Label {
         at: p.point - dir * j_len,
-        text: format!("J = {:.3e} N·s", p.impulse.norm()),
+        text: format!("J = {} N·s", sci(p.impulse.norm(), 3)),
         color: FORCE_COLOR,
         align: Align2::LEFT_BOTTOM,
     });
@@ -574,7 +577,7 @@ fn poke(o: &mut Overlay, c: &Context<'_>) {
         c.com,
         c.scaled(p.delta_l, c.l_reference()),
         Color32::from_rgb(255, 255, 255),
-        &format!("ΔL = r × J ({:.3e})", p.delta_l.norm()),
+        &format!("ΔL = r × J ({})", sci(p.delta_l.norm(), 3)),
         Align2::LEFT_BOTTOM,
     );
 }
@@ -600,7 +603,7 @@ fn string(o: &mut Overlay, c: &Context<'_>) {
         s.attachment,
         f,
         FORCE_COLOR,
-        &format!("|F| = {:.3} N", s.force.norm()),
+        &format!("|F| = {} N", fixed(s.force.norm(), 3)),
         Align2::LEFT_TOP,
     );
 }

@@ -11,6 +11,7 @@ use three_d::{
 };
 
 use super::convert::FrameParams;
+use crate::i18n::tr;
 
 /// Background of the 3D view.
 pub const BACKGROUND: [f32; 3] = [0.09, 0.10, 0.12];
@@ -63,8 +64,8 @@ impl Scene {
     /// # Errors
     /// three-d cannot use the context (too old a GL version).
     pub fn new(gl: Arc<three_d::context::Context>) -> Result<Self, String> {
-        let context =
-            Context::from_gl_context(gl).map_err(|e| format!("cannot use the GL context: {e}"))?;
+        let context = Context::from_gl_context(gl)
+            .map_err(|e| tr!("view3d-gl-context", error = e.to_string()))?;
         let white = Srgba::WHITE;
         Ok(Self {
             ambient: AmbientLight::new(&context, 0.35, white),
