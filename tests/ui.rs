@@ -804,3 +804,60 @@ fn the_language_menu_changes_every_word_and_the_decimal_separator() {
     frames(&mut h, 3);
     h.get_by_role_and_label(Role::Button, "Help");
 }
+
+/// Every control of every panel has a name a screen reader says (its own text, or the label it
+/// is tied to): each side-panel section opened, on a body of parts, with the lessons and the F1
+/// help shown beside the toolbar, the plots and the sphere.
+#[test]
+fn every_control_in_every_panel_has_a_name() {
+    use egui::accesskit::Role;
+    use egui_kittest::kittest::{By, NodeT};
+    const CONTROLS: [Role; 8] = [
+        Role::Button,
+        Role::CheckBox,
+        Role::RadioButton,
+        Role::ComboBox,
+        Role::SpinButton,
+        Role::Slider,
+        Role::TextInput,
+        Role::Link,
+    ];
+    let mut h = harness();
+    frames(&mut h, 2);
+    h.get_by_label("Hammer: steel & wood").click();
+    frames(&mut h, 3);
+    h.get_by_role_and_label(Role::Button, "Lessons").click();
+    h.key_press(egui::Key::F1);
+    frames(&mut h, 2);
+    // Open every closed section, until none is left (a section may hold another).
+    for _ in 0..5 {
+        let closed: Vec<String> = h
+            .query_all(By::new().predicate(|n| n.data().is_expanded() == Some(false)))
+            .filter_map(|n| n.accesskit_node().label())
+            .collect();
+        if closed.is_empty() {
+            break;
+        }
+        for label in closed {
+            if let Some(node) = h.query_by_label(&label) {
+                node.click();
+            }
+            frames(&mut h, 1);
+        }
+        frames(&mut h, 2);
+    }
+    let mut named = 0;
+    let mut unnamed = Vec::new();
+    for node in h.query_all(By::new().predicate(|n| CONTROLS.contains(&n.role()))) {
+        let n = node.accesskit_node();
+        match n.label() {
+            Some(label) if !label.trim().is_empty() => named += 1,
+            _ => unnamed.push(format!("{:?} (value {:?})", n.role(), n.value())),
+        }
+    }
+    assert!(
+        named > 80,
+        "only {named} named controls: the panels were not all shown"
+    );
+    assert!(unnamed.is_empty(), "controls without a name: {unnamed:?}");
+}

@@ -351,7 +351,7 @@ mod tests {
 
     #[test]
     fn every_problem_is_named_and_the_rest_still_applies() {
-        let scene = parse("sample=anvil&spin=4&compare=bbox,mass&bench=x&spin=3");
+        let scene = parse("sample=anvil&spin=4&compare=bbox,mass&colour=red&bench=x&spin=3");
         assert_eq!(scene.commands, vec![Command::Preset(2)]);
         let problems = scene.problems.join("\n");
         for part in [

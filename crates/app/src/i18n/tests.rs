@@ -88,10 +88,11 @@ fn source_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
 }
 
-/// The ids the code asks for: the literal first argument of each `tr!(`.
+/// The ids the code asks for: the literal first argument of each `tr!(` (not `include_str!(`).
 fn ids_in(source: &str) -> Vec<String> {
     source
         .match_indices("tr!(")
+        .filter(|(at, _)| !source[..*at].ends_with(|c: char| c.is_alphanumeric() || c == '_'))
         .filter_map(|(at, _)| {
             let rest = source[at + 4..].trim_start().strip_prefix('"')?;
             Some(rest[..rest.find('"')?].to_owned())
@@ -109,7 +110,9 @@ fn every_id_the_code_asks_for_exists_and_every_message_is_used() {
     let mut files = Vec::new();
     rust_files(&source_dir(), &mut files);
     let mut used = BTreeSet::new();
-    for file in &files {
+    // This folder's own tests write `tr!(` in their strings.
+    let here = source_dir().join("i18n");
+    for file in files.iter().filter(|f| !f.starts_with(&here)) {
         let source = std::fs::read_to_string(file).expect("source");
         for id in ids_in(&source) {
             assert!(
@@ -286,7 +289,10 @@ fn the_lint_finds_words_and_passes_ids_units_and_messages() {
         .map(|(_, text)| text)
         .collect();
     assert_eq!(found, ["Mass"]);
-    assert_eq!(ids_in(r#"tr!("a-b"), tr!( "c", x = 1)"#), ["a-b", "c"]);
+    assert_eq!(
+        ids_in(r#"tr!("a-b"), tr!( "c", x = 1), include_str!("x.toml")"#),
+        ["a-b", "c"]
+    );
 }
 
 #[test]

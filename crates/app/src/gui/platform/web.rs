@@ -110,6 +110,15 @@ async fn run() -> Result<(), JsValue> {
                     _ => AppSettings::default(),
                 };
                 let settings = scene.settings.apply(settings);
+                // The link's words (its problems, a lesson's) in the language it and the saved
+                // settings give: read again once that language is the thread's.
+                crate::i18n::set_language(
+                    settings
+                        .display
+                        .language
+                        .unwrap_or_else(crate::i18n::Language::of_system),
+                );
+                let scene = link::parse(&query);
                 let mut commands = scene.commands;
                 if !scene.problems.is_empty() {
                     commands.push(Command::Notify(Message {

@@ -166,11 +166,8 @@ impl Check {
         let met = |met: bool| CheckState { met, finding: None };
         match self {
             Check::Sample { label } => met(&s.body().name == label),
-            // Not a sample, nor the T-handle the lab starts with.
-            Check::OwnMesh => {
-                let name = s.body().name.as_str();
-                met(!crate::lab::samples::labels().contains(&name) && name != "T-handle")
-            }
+            // Not a sample (the T-handle the lab starts with is one).
+            Check::OwnMesh => met(!crate::lab::samples::labels().contains(&s.body().name.as_str())),
             Check::Source { source } => met(lesson_source(lab.settings().body.source) == *source),
             Check::Model { model } => met(lesson_model(lab) == *model),
             Check::SpinAxis { axis } => met(lab.preset_axis() + 1 == *axis),
