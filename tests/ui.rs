@@ -526,15 +526,20 @@ fn every_symbol_the_gui_writes_has_a_glyph() {
         .clear();
     let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
-    // The built-in lessons' text is drawn by the same fonts.
+    // The built-in lessons' text, in every language, and the message files are drawn by the
+    // same fonts.
     let lessons = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../lessons");
-    let mut dirs = vec![src.join("gui"), src.join("lab"), lessons];
+    let messages = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("messages");
+    let mut dirs = vec![src.join("gui"), src.join("lab"), lessons, messages];
     while let Some(dir) = dirs.pop() {
         for entry in std::fs::read_dir(&dir).expect("source folder") {
             let path = entry.expect("entry").path();
             if path.is_dir() {
                 dirs.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs" || e == "toml") {
+            } else if path
+                .extension()
+                .is_some_and(|e| e == "rs" || e == "toml" || e == "ftl")
+            {
                 files.push(path);
             }
         }

@@ -106,7 +106,7 @@ fn web_page_runs_the_lab() {
             .unwrap_or_else(|e| panic!("tests/web/{file} copied: {e}"));
     }
     let script = driver.join("drive.mjs");
-    let base = serve(site);
+    let base = serve(site.clone());
     let picked = root().join("assets/l_bracket.obj");
     let dropped = [
         root().join("assets/hammer.toml"),

@@ -88,13 +88,14 @@ pub fn description(lab: &Lab) -> String {
 /// lesson.
 pub fn lesson(lab: &Lab) -> Option<String> {
     let run = lab.lesson()?;
-    let step = run.current();
+    let lesson = run.lesson.in_language(crate::i18n::language());
+    let step = &lesson.steps[run.step];
     let paragraph = |text: &str| text.split_whitespace().collect::<Vec<_>>().join(" ");
     let mut text = tr!(
         "describe-lesson",
-        title = &run.lesson.title,
+        title = &lesson.title,
         step = run.step + 1,
-        steps = run.lesson.steps.len(),
+        steps = lesson.steps.len(),
         text = paragraph(&step.text)
     );
     let mut add = |sentence: String| {

@@ -3,7 +3,7 @@
 //! checks as the lab evaluates them, and the explanation once they hold.
 
 use super::{Frame, Panel};
-use crate::i18n::{fixed, localize, tr};
+use crate::i18n::{fixed, language, localize, tr};
 use crate::lab::Command;
 use crate::lab::lessons::{self, LessonRun, LessonSource};
 
@@ -27,6 +27,7 @@ impl Panel for LessonsPanel {
 /// The built-in lessons, each a button with its progress.
 fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
     for (k, lesson) in lessons::built_in().iter().enumerate() {
+        let lesson = lesson.in_language(language());
         let done = f
             .lab
             .lesson_progress()
@@ -57,8 +58,8 @@ fn list(ui: &mut egui::Ui, f: &mut Frame<'_>) {
 
 impl LessonsPanel {
     fn lesson(&mut self, ui: &mut egui::Ui, run: &LessonRun, commands: &mut Vec<Command>) {
-        let lesson = &run.lesson;
-        let step = run.current();
+        let lesson = run.lesson.in_language(language());
+        let step = &lesson.steps[run.step];
         ui.strong(lesson.title.as_str());
         ui.label(egui::RichText::new(lesson.goal.as_str()).italics());
         ui.label(tr!(

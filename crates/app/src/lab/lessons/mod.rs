@@ -18,41 +18,82 @@ use std::sync::Arc;
 
 use serde::Deserialize;
 
+use crate::i18n::Language;
+
 pub use checks::{CheckState, Snapshot};
 
+/// A built-in lesson's file: its name, its text, and its words in each language of
+/// [`TRANSLATED`] (`lessons/<code>/<name>`).
+type BuiltIn = (&'static str, &'static str, [&'static str; 2]);
+
+/// The languages the built-in lessons are written in besides English.
+const TRANSLATED: [Language; 2] = [Language::German, Language::Spanish];
+
 /// The built-in lessons, in the order they are offered (`?lesson=1` is the first).
-const BUILT_IN: [(&str, &str); 8] = [
+const BUILT_IN: [BuiltIn; 8] = [
     (
         "01-tensor.toml",
         include_str!("../../../../../lessons/01-tensor.toml"),
+        [
+            include_str!("../../../../../lessons/de/01-tensor.toml"),
+            include_str!("../../../../../lessons/es/01-tensor.toml"),
+        ],
     ),
     (
         "02-stable-axes.toml",
         include_str!("../../../../../lessons/02-stable-axes.toml"),
+        [
+            include_str!("../../../../../lessons/de/02-stable-axes.toml"),
+            include_str!("../../../../../lessons/es/02-stable-axes.toml"),
+        ],
     ),
     (
         "03-racket-flip.toml",
         include_str!("../../../../../lessons/03-racket-flip.toml"),
+        [
+            include_str!("../../../../../lessons/de/03-racket-flip.toml"),
+            include_str!("../../../../../lessons/es/03-racket-flip.toml"),
+        ],
     ),
     (
         "04-textbook-model.toml",
         include_str!("../../../../../lessons/04-textbook-model.toml"),
+        [
+            include_str!("../../../../../lessons/de/04-textbook-model.toml"),
+            include_str!("../../../../../lessons/es/04-textbook-model.toml"),
+        ],
     ),
     (
         "05-parallel-axis.toml",
         include_str!("../../../../../lessons/05-parallel-axis.toml"),
+        [
+            include_str!("../../../../../lessons/de/05-parallel-axis.toml"),
+            include_str!("../../../../../lessons/es/05-parallel-axis.toml"),
+        ],
     ),
     (
         "06-conservation.toml",
         include_str!("../../../../../lessons/06-conservation.toml"),
+        [
+            include_str!("../../../../../lessons/de/06-conservation.toml"),
+            include_str!("../../../../../lessons/es/06-conservation.toml"),
+        ],
     ),
     (
         "07-design-a-body.toml",
         include_str!("../../../../../lessons/07-design-a-body.toml"),
+        [
+            include_str!("../../../../../lessons/de/07-design-a-body.toml"),
+            include_str!("../../../../../lessons/es/07-design-a-body.toml"),
+        ],
     ),
     (
         "08-your-object.toml",
         include_str!("../../../../../lessons/08-your-object.toml"),
+        [
+            include_str!("../../../../../lessons/de/08-your-object.toml"),
+            include_str!("../../../../../lessons/es/08-your-object.toml"),
+        ],
     ),
 ];
 
@@ -69,6 +110,40 @@ pub struct Lesson {
     /// The steps, in order.
     #[serde(rename = "step")]
     pub steps: Vec<Step>,
+    /// Its words in other languages (the built-in lessons'), each checked to fit its steps.
+    #[serde(skip)]
+    pub translations: Vec<(Language, Words)>,
+}
+
+/// A lesson's words in another language (`lessons/<code>/<file>` for a built-in lesson): the
+/// title, the goal and each step's text, question, choices and explanation, in the lesson's
+/// order. What a step sets up and checks is the lesson's own, written once.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Words {
+    /// The title.
+    pub title: String,
+    /// The goal.
+    pub goal: String,
+    /// Each step's words, in order.
+    #[serde(rename = "step")]
+    pub steps: Vec<StepWords>,
+}
+
+/// One step's words in another language.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StepWords {
+    /// What to do.
+    pub text: String,
+    /// The prediction's question (where the step asks one).
+    #[serde(default)]
+    pub question: Option<String>,
+    /// The prediction's choices, in the lesson's order.
+    #[serde(default)]
+    pub choices: Vec<String>,
+    /// The explanation.
+    pub explain: String,
 }
 
 /// One step of a lesson.
@@ -307,6 +382,67 @@ impl Lesson {
         Ok(lesson)
     }
 
+    /// Adds the lesson's words in `language` from the text of `file`.
+    ///
+    /// # Errors
+    /// The text is not TOML of [`Words`], or its steps, questions or choices do not match the
+    /// lesson's.
+    pub fn translate(
+        &mut self,
+        language: Language,
+        file: &str,
+        text: &str,
+    ) -> Result<(), LessonError> {
+        let words: Words = toml::from_str(text).map_err(|e| LessonError::Format {
+            file: file.to_owned(),
+            message: e.to_string().trim_end().to_owned(),
+        })?;
+        let invalid = |problem: String| LessonError::Invalid {
+            file: file.to_owned(),
+            problem,
+        };
+        if words.steps.len() != self.steps.len() {
+            return Err(invalid(format!(
+                "{} steps, where the lesson has {}",
+                words.steps.len(),
+                self.steps.len()
+            )));
+        }
+        for (k, (step, said)) in self.steps.iter().zip(&words.steps).enumerate() {
+            let choices = step.predict.as_ref().map_or(0, |p| p.choices.len());
+            if step.predict.is_some() != said.question.is_some() || said.choices.len() != choices {
+                return Err(invalid(format!(
+                    "step {}: {} choices and {} question, where the lesson has {choices} and {}",
+                    k + 1,
+                    said.choices.len(),
+                    if said.question.is_some() { "a" } else { "no" },
+                    if step.predict.is_some() { "a" } else { "none" },
+                )));
+            }
+        }
+        self.translations.push((language, words));
+        Ok(())
+    }
+
+    /// The lesson in `language`: its own words where it has none in that language.
+    pub fn in_language(&self, language: Language) -> Lesson {
+        let mut lesson = self.clone();
+        let Some((_, words)) = self.translations.iter().find(|(l, _)| *l == language) else {
+            return lesson;
+        };
+        lesson.title.clone_from(&words.title);
+        lesson.goal.clone_from(&words.goal);
+        for (step, said) in lesson.steps.iter_mut().zip(&words.steps) {
+            step.text.clone_from(&said.text);
+            step.explain.clone_from(&said.explain);
+            if let (Some(p), Some(question)) = (&mut step.predict, &said.question) {
+                p.question.clone_from(question);
+                p.choices.clone_from(&said.choices);
+            }
+        }
+        lesson
+    }
+
     fn validate(&self) -> Result<(), String> {
         if self.id.is_empty()
             || !self
@@ -365,12 +501,26 @@ impl Lesson {
     }
 }
 
-/// The built-in lessons, in order.
+/// The built-in lessons, in order, each with its words in every language (read once: the
+/// panel lists them every frame).
 pub fn built_in() -> Vec<Arc<Lesson>> {
+    static LESSONS: std::sync::OnceLock<Vec<Arc<Lesson>>> = std::sync::OnceLock::new();
+    LESSONS.get_or_init(read_built_in).clone()
+}
+
+fn read_built_in() -> Vec<Arc<Lesson>> {
     BUILT_IN
         .iter()
-        .map(|(file, text)| {
-            Arc::new(Lesson::parse(file, text).unwrap_or_else(|e| panic!("built-in lesson: {e}")))
+        .map(|(file, text, translations)| {
+            let mut lesson =
+                Lesson::parse(file, text).unwrap_or_else(|e| panic!("built-in lesson: {e}"));
+            for (language, words) in TRANSLATED.iter().zip(translations) {
+                let name = format!("{}/{file}", language.code());
+                lesson
+                    .translate(*language, &name, words)
+                    .unwrap_or_else(|e| panic!("built-in lesson: {e}"));
+            }
+            Arc::new(lesson)
         })
         .collect()
 }

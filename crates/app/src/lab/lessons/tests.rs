@@ -339,3 +339,88 @@ fn a_teachers_lesson_file_opens_and_its_mistakes_are_named() {
     let e = bad("id = \"x\"\ntitle = \"t\"\ngoal = \"g\"\nstep = []\n");
     assert!(e.contains("at least one"), "{e}");
 }
+
+/// Each built-in lesson speaks German and Spanish: every title, goal, step, question, choice and
+/// explanation has its own words there (an untranslated copy of the English fails), and what a
+/// step sets up and checks stays the lesson's.
+#[test]
+fn every_built_in_lesson_has_its_words_in_every_language() {
+    for lesson in built_in() {
+        for language in TRANSLATED {
+            let said = lesson.in_language(language);
+            let code = language.code();
+            assert_ne!(said.title, lesson.title, "{code}: {}", lesson.id);
+            assert_ne!(said.goal, lesson.goal, "{code}: {}", lesson.id);
+            for (k, (theirs, ours)) in said.steps.iter().zip(&lesson.steps).enumerate() {
+                let at = format!("{code}: {} step {}", lesson.id, k + 1);
+                assert_ne!(theirs.text, ours.text, "{at}");
+                assert_ne!(theirs.explain, ours.explain, "{at}");
+                assert_eq!(theirs.checks, ours.checks, "{at}");
+                assert_eq!(theirs.setup, ours.setup, "{at}");
+                if let (Some(p), Some(q)) = (&theirs.predict, &ours.predict) {
+                    assert_ne!(p.question, q.question, "{at}");
+                    assert_eq!(p.answer, q.answer, "{at}");
+                    for (a, b) in p.choices.iter().zip(&q.choices) {
+                        assert_ne!(a, b, "{at}");
+                    }
+                }
+            }
+        }
+        assert_eq!(lesson.in_language(Language::English), *lesson);
+    }
+}
+
+/// Words that do not fit the lesson's steps, questions or choices are refused, naming the file.
+#[test]
+fn a_translation_that_does_not_fit_the_lesson_is_refused() {
+    let lesson = find("1").expect("lesson 1");
+    let steps = |n: usize, choices: &str| {
+        let mut text = "title = \"T\"\ngoal = \"G\"\n".to_owned();
+        for k in 0..n {
+            text.push_str("[[step]]\ntext = \"x\"\nexplain = \"y\"\n");
+            if k == 0 {
+                text.push_str(&format!("question = \"q\"\nchoices = [{choices}]\n"));
+            }
+        }
+        text
+    };
+    let mut fresh = (*lesson).clone();
+    fresh.translations.clear();
+    let e = fresh
+        .clone()
+        .translate(
+            Language::German,
+            "de/x.toml",
+            &steps(1, "\"a\", \"b\", \"c\""),
+        )
+        .expect_err("one step of two");
+    assert!(
+        e.to_string().contains("de/x.toml") && e.to_string().contains("1 steps"),
+        "{e}"
+    );
+    let e = fresh
+        .clone()
+        .translate(Language::German, "de/x.toml", &steps(2, "\"a\", \"b\""))
+        .expect_err("two choices of three");
+    assert!(e.to_string().contains("step 1"), "{e}");
+    let mut fits = fresh.clone();
+    fits.translate(
+        Language::German,
+        "de/x.toml",
+        &steps(2, "\"a\", \"b\", \"c\""),
+    )
+    .expect("fits");
+    let said = fits.in_language(Language::German);
+    assert_eq!(said.title, "T");
+    assert_eq!(
+        said.steps[0].predict.as_ref().map(|p| p.choices.len()),
+        Some(3)
+    );
+    assert_eq!(said.steps[1].text, "x");
+    let own = fits.in_language(Language::Spanish);
+    assert_eq!(
+        (own.title, own.steps),
+        (fresh.title, fresh.steps),
+        "no Spanish: its own words"
+    );
+}
