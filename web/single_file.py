@@ -7,7 +7,9 @@ files do): web/build.sh --single-file calls it on the folder it built.
 A page opened from file:// may not import a module or fetch a file beside it, so everything is
 inline: wasm-bindgen's JavaScript glue in the page's module script, the module's bytes in Base64,
 and the worker's script (the same glue and web/worker.js) in a blob the page names in
-window.INERTIA_LAB_WORKER (crates/app/src/platform/web.rs starts the worker from there).
+window.INERTIA_LAB_WORKER (crates/app/src/platform/web.rs starts the worker from there). Chromium
+refuses a module worker from a blob made by a page opened from the disk (its origin is opaque),
+so the worker's copy of the glue is made a classic script: no export, no import.meta.
 """
 
 import base64
@@ -21,6 +23,21 @@ MODULE = "inertia_lab_web_bg.wasm"
 # The module script of web/index.html, which imports the glue from beside the page.
 BOOT = re.compile(r'<script type="module">\s*import init from "\./inertia_lab_web\.js";(.*?)</script>', re.S)
 WORKER_IMPORT = re.compile(r'^import init, \{ run_job \} from "\./inertia_lab_web\.js";$', re.M)
+# What makes the glue a module: its export statements, and import.meta (only where no module
+# is given to init, which the worker always is).
+EXPORT_LIST = re.compile(r"^export \{[^}]*\};?$", re.M)
+EXPORTED = re.compile(r"^export (function|class|const|let) ", re.M)
+
+
+def classic(glue: str) -> str:
+    """The glue as a classic script's code: the same functions, nothing exported."""
+    if EXPORT_LIST.search(glue) is None:
+        sys.exit(f"single_file.py: {GLUE} has no export list: wasm-bindgen's output changed")
+    script = EXPORTED.sub(r"\1 ", EXPORT_LIST.sub("", glue))
+    script = script.replace("import.meta.url", "self.location.href")
+    if re.search(r"^\s*(export|import)\b", script, re.M):
+        sys.exit(f"single_file.py: {GLUE} still has an import or export a classic script cannot hold")
+    return script
 
 
 def main(built: Path, out: Path) -> None:
@@ -35,7 +52,7 @@ def main(built: Path, out: Path) -> None:
         sys.exit(f"single_file.py: {built / 'worker.js'} does not import init and run_job from {GLUE}")
     # The glue's default export is its init function; both scripts call it `init`.
     inline_glue = f"{glue}\nconst init = __wbg_init;\n"
-    worker_code = inline_glue + WORKER_IMPORT.sub("", worker)
+    worker_code = f"{classic(glue)}\nconst init = __wbg_init;\n" + WORKER_IMPORT.sub("", worker)
     script = (
         '<script type="module">\n'
         f"{inline_glue}"
@@ -48,6 +65,7 @@ def main(built: Path, out: Path) -> None:
     )
     if "init({ module_or_path: MODULE })" not in script:
         sys.exit("single_file.py: the page's module script no longer calls init()")
+    out.parent.mkdir(parents=True, exist_ok=True)
     # A function as the replacement: the script's backslashes are its own, not re's escapes.
     out.write_text(BOOT.sub(lambda _: script, page, count=1))
 

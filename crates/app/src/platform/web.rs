@@ -18,15 +18,20 @@ use super::{Job, JobEvent, Memory, encode, event_of};
 /// The worker's script, beside the page (web/build.sh puts it there).
 const WORKER_SCRIPT: &str = "./worker.js";
 /// Where a page with nothing beside it (`web/build.sh --single-file`, opened from the disk)
-/// names the worker's script it made itself, a `blob:` address.
+/// names the worker's script it made itself, a `blob:` address of a classic script (Chromium
+/// starts no module worker from a blob of a page opened from the disk).
 const WORKER_SCRIPT_GLOBAL: &str = "INERTIA_LAB_WORKER";
 
-/// The worker's script: the one the page made itself, else the one beside the page.
-fn worker_script() -> String {
+/// The worker's script and its kind: the classic one the page made itself, else the module
+/// beside the page.
+fn worker_script() -> (String, web_sys::WorkerType) {
     web_sys::window()
         .and_then(|w| js_sys::Reflect::get(&w, &WORKER_SCRIPT_GLOBAL.into()).ok())
         .and_then(|v| v.as_string())
-        .unwrap_or_else(|| WORKER_SCRIPT.to_owned())
+        .map_or_else(
+            || (WORKER_SCRIPT.to_owned(), web_sys::WorkerType::Module),
+            |blob| (blob, web_sys::WorkerType::Classic),
+        )
 }
 
 type Queued = Box<dyn FnOnce()>;
@@ -71,7 +76,7 @@ struct PageWorker {
     /// left the module's memory as it was mid-way).
     broken: bool,
     _on_message: Closure<dyn FnMut(web_sys::MessageEvent)>,
-    _on_error: Closure<dyn FnMut(web_sys::ErrorEvent)>,
+    _on_error: Closure<dyn FnMut(web_sys::Event)>,
 }
 
 thread_local! {
@@ -146,9 +151,10 @@ fn send(name: &str, input: &[u8], hear: Rc<dyn Fn(Reply)>) -> Result<(), String>
 }
 
 fn start_worker() -> Result<PageWorker, JsValue> {
+    let (script, kind) = worker_script();
     let options = web_sys::WorkerOptions::new();
-    options.set_type(web_sys::WorkerType::Module);
-    let worker = web_sys::Worker::new_with_options(&worker_script(), &options)?;
+    options.set_type(kind);
+    let worker = web_sys::Worker::new_with_options(&script, &options)?;
     let on_message =
         Closure::<dyn FnMut(web_sys::MessageEvent)>::new(|e: web_sys::MessageEvent| {
             let data = e.data();
@@ -165,8 +171,14 @@ fn start_worker() -> Result<PageWorker, JsValue> {
             };
             hear(id as u32, reply);
         });
-    let on_error = Closure::<dyn FnMut(web_sys::ErrorEvent)>::new(|e: web_sys::ErrorEvent| {
-        let words = format!("the page's worker stopped: {}", e.message());
+    // A plain Event, not an ErrorEvent, when the worker's script could not be loaded at all: its
+    // message is read only where there is one (a missing one once panicked the page).
+    let on_error = Closure::<dyn FnMut(web_sys::Event)>::new(|e: web_sys::Event| {
+        let message = js_sys::Reflect::get(&e, &"message".into())
+            .ok()
+            .and_then(|m| m.as_string())
+            .unwrap_or_else(|| "its script could not be loaded".to_owned());
+        let words = format!("the page's worker stopped: {message}");
         super::print_error(&words);
         let waiting = WORKER.with_borrow_mut(|slot| {
             slot.as_mut().map_or_else(HashMap::new, |w| {
