@@ -90,6 +90,9 @@ impl LabApp {
         gl: Option<Arc<three_d::context::Context>>,
         ctx: &egui::Context,
     ) -> Result<Self, crate::lab::LabError> {
+        // In the user's language from the start: the first commands (a file, a lesson) speak.
+        let system_language = crate::i18n::Language::of_system();
+        crate::i18n::set_language(settings.display.language.unwrap_or(system_language));
         let mut lab = Lab::new(settings)?;
         let repaint = ctx.clone();
         lab.set_waker(move || repaint.request_repaint());
@@ -114,7 +117,7 @@ impl LabApp {
             capture: None,
             recording: None,
             focus: String::new(),
-            system_language: crate::i18n::Language::of_system(),
+            system_language,
             display: None,
         })
     }

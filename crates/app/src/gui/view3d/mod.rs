@@ -146,7 +146,39 @@ impl View3d {
             self.frame_body(lab);
         }
         self.follow(lab);
-        let hint_height = ui.text_style_height(&egui::TextStyle::Small) + 6.0;
+        // The hint under the view: the controls, after what is drawn differently. Its height is
+        // measured at the view's width: a longer language wraps it onto more lines.
+        let mut hint = tr!("view3d-hint");
+        if let Some(drawn) = &lab.primary().body().drawn {
+            let count = |n: usize| i18n::localize(inertia_io::wording::millions(n));
+            hint = tr!(
+                "view3d-drawn-simplified",
+                drawn = count(drawn.mesh.triangles.len()),
+                total = count(lab.primary().body().mesh.triangles.len()),
+                hint = hint,
+            );
+        }
+        if lab.settings().view.wireframe
+            && lab.primary().body().analysis.diagnostics.edges > WIREFRAME_MAX_EDGES
+        {
+            hint = tr!(
+                "view3d-wireframe-off",
+                edges = WIREFRAME_MAX_EDGES,
+                hint = hint
+            );
+        }
+        let width = ui.available_width();
+        let hint_height = ui
+            .painter()
+            .layout(
+                hint.clone(),
+                egui::TextStyle::Small.resolve(ui.style()),
+                egui::Color32::PLACEHOLDER,
+                width,
+            )
+            .size()
+            .y
+            + 6.0;
         let mut rect = ui.available_rect_before_wrap();
         rect.max.y -= hint_height;
         self.shown = Some(rect);
@@ -199,26 +231,6 @@ impl View3d {
             }
         }
         self.paint_overlay(ui, rect, lab, selection);
-        // The one-line hint under the view: the controls, after what is drawn differently.
-        let mut hint = tr!("view3d-hint");
-        if let Some(drawn) = &lab.primary().body().drawn {
-            let count = |n: usize| i18n::localize(inertia_io::wording::millions(n));
-            hint = tr!(
-                "view3d-drawn-simplified",
-                drawn = count(drawn.mesh.triangles.len()),
-                total = count(lab.primary().body().mesh.triangles.len()),
-                hint = hint,
-            );
-        }
-        if lab.settings().view.wireframe
-            && lab.primary().body().analysis.diagnostics.edges > WIREFRAME_MAX_EDGES
-        {
-            hint = tr!(
-                "view3d-wireframe-off",
-                edges = WIREFRAME_MAX_EDGES,
-                hint = hint
-            );
-        }
         ui.allocate_ui(egui::vec2(rect.width(), hint_height), |ui| {
             ui.small(hint);
         });

@@ -360,7 +360,10 @@ fn every_built_in_lesson_has_its_words_in_every_language() {
                 if let (Some(p), Some(q)) = (&theirs.predict, &ours.predict) {
                     assert_ne!(p.question, q.question, "{at}");
                     assert_eq!(p.answer, q.answer, "{at}");
-                    for (a, b) in p.choices.iter().zip(&q.choices) {
+                    // A choice that is a formula alone ("r × J") reads the same everywhere.
+                    let words =
+                        |c: &str| c.split(|c: char| !c.is_alphabetic()).any(|w| w.len() >= 3);
+                    for (a, b) in p.choices.iter().zip(&q.choices).filter(|(_, b)| words(b)) {
                         assert_ne!(a, b, "{at}");
                     }
                 }
