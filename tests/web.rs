@@ -113,6 +113,8 @@ fn web_page_runs_the_lab() {
         root().join("assets/hammer.obj"),
     ];
     let gltf = write_box_gltf(&work);
+    // A teacher's lesson file beside the page, which a link names by its address.
+    std::fs::write(site.join("class.lesson.toml"), CLASS_LESSON).expect("class.lesson.toml");
     // The site as one HTML file that runs from the disk (web/build.sh --single-file's last step).
     let single = work.join("inertia-lab.html");
     let made = Command::new("python3")
@@ -235,6 +237,13 @@ fn web_page_runs_the_lab() {
     check_recording(&s["record"]);
     check_restarts(&s["restarts"]);
     check_keyboard_lesson(&s["keyboard_lesson"]);
+    // ?lesson=ADDRESS&step=2: the file fetched and opened at its second step.
+    let fetched = &s["fetched_lesson"];
+    assert_eq!(fetched["lesson"], "class", "the fetched lesson: {fetched}");
+    assert!(
+        fetched["lessonStep"] == "2/2" || fetched["lessonStep"] == "done",
+        "the fetched lesson's step: {fetched}"
+    );
     // The single file runs from the disk, and a file dropped on it loads in its worker with the
     // mass props computes.
     let single = &s["single_file"];
@@ -269,6 +278,23 @@ fn web_page_runs_the_lab() {
         );
     }
 }
+
+/// A lesson of a teacher's own, put beside the page.
+const CLASS_LESSON: &str = r#"
+id = "class"
+title = "A class's own lesson"
+goal = "Open a lesson from the page's address."
+
+[[step]]
+text = "Spin the body about axis 3."
+check = [{ kind = "spin_axis", axis = 3 }]
+explain = "It spins about axis 3."
+
+[[step]]
+text = "Watch it for a second."
+check = [{ kind = "elapsed", seconds = 1.0 }]
+explain = "A second passed."
+"#;
 
 /// Lesson 1 done by the keyboard alone: each widget reached by Tab and pressed by Enter, the
 /// lesson open from the first, and its last step done.

@@ -418,6 +418,17 @@ for (const lang of ["de", "es"]) {
   });
 }
 
+// 7d'. A teacher's lesson file beside the page, named by its address with a step.
+await scenario("fetched_lesson", async () => {
+  const page = await open("fetched_lesson", "/?lesson=class.lesson.toml&step=2");
+  await page.waitForFunction(() => document.getElementById("inertia-lab").dataset.lesson === "class", {
+    timeout: TIMEOUT,
+    polling: 50,
+  });
+  result.scenarios.fetched_lesson = await figures(page);
+  await page.close();
+});
+
 // 7e. The page as one file opened from the disk (SINGLE_FILE, made by web/single_file.py): it
 // runs, and a file dropped on it loads in its worker (a blob the page made: nothing is beside it).
 await scenario("single_file", async () => {

@@ -17,3 +17,4 @@ link-compare-unknown = compare={ $value }: { $name } ist keines von bbox, points
 link-compare-too-many = compare={ $value }: höchstens { $most } Kopien
 link-lang-invalid = lang={ $value }: das Labor spricht en, de und es
 link-problems = der Link: { $problems }
+link-lesson-not-fetched = lesson={ $address }: nicht abgerufen ({ $why })

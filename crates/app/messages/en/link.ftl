@@ -17,3 +17,4 @@ link-compare-unknown = compare={ $value }: { $name } is none of bbox, points, te
 link-compare-too-many = compare={ $value }: at most { $most } copies
 link-lang-invalid = lang={ $value }: the lab speaks en, de and es
 link-problems = the link: { $problems }
+link-lesson-not-fetched = lesson={ $address }: not fetched ({ $why })

@@ -17,3 +17,4 @@ link-compare-unknown = compare={ $value }: { $name } no es ninguno de bbox, poin
 link-compare-too-many = compare={ $value }: como máximo { $most } copias
 link-lang-invalid = lang={ $value }: el laboratorio habla en, de y es
 link-problems = el enlace: { $problems }
+link-lesson-not-fetched = lesson={ $address }: no se pudo obtener ({ $why })

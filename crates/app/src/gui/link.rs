@@ -29,6 +29,9 @@ pub struct LinkScene {
     pub embed: bool,
     /// `bench=N`: measure N frames and print the table to the console.
     pub bench_frames: Option<usize>,
+    /// `lesson=ADDRESS`: a lesson file to fetch (a teacher's, beside the page or elsewhere), with
+    /// the step to go to once it is open.
+    pub lesson_address: Option<(String, Option<usize>)>,
     /// Each key or value that was not understood, in words; the rest still applies.
     pub problems: Vec<String>,
 }
@@ -122,6 +125,10 @@ pub fn parse(query: &str) -> LinkScene {
             "rate" => positive(&value)
                 .map(|v| scene.settings.spin_rate = Some(v))
                 .ok_or_else(|| tr!("link-rate-invalid", value = &value)),
+            "lesson" if is_address(&value) => {
+                scene.lesson_address = Some((value.clone(), None));
+                Ok(())
+            }
             "lesson" => crate::lab::lessons::find(&value)
                 .map(|l| lesson = Some(l.id.clone()))
                 .map_err(|e| format!("lesson={value}: {e}")),
@@ -162,6 +169,8 @@ pub fn parse(query: &str) -> LinkScene {
             .commands
             .push(Command::OpenLesson(LessonSource::BuiltIn(id)));
         scene.commands.extend(step.map(Command::GoToStep));
+    } else if let Some((_, at)) = &mut scene.lesson_address {
+        *at = step;
     } else if step.is_some() {
         scene.problems.push(tr!("link-step-needs-lesson"));
     }
@@ -169,6 +178,22 @@ pub fn parse(query: &str) -> LinkScene {
     scene.commands.extend(spin.map(Command::Preset));
     scene.commands.extend(compare.map(Command::Compare));
     scene
+}
+
+/// Whether a `lesson=` value names a file to fetch (`class.lesson.toml`, `lessons/a.toml`, an
+/// `https://` address) rather than a built-in lesson's number or id (which hold no `.` or `/`).
+fn is_address(value: &str) -> bool {
+    value.contains('/') || value.to_ascii_lowercase().ends_with(".toml")
+}
+
+/// The commands that open a fetched lesson's `text` (from `address`) at `step`.
+pub fn fetched_lesson(address: &str, text: String, step: Option<usize>) -> Vec<Command> {
+    let mut commands = vec![Command::OpenLesson(LessonSource::Text {
+        file: address.to_owned(),
+        text,
+    })];
+    commands.extend(step.map(Command::GoToStep));
+    commands
 }
 
 /// The query (`?…`) of a link that opens the scene shown: the sample, its size and mass, the
@@ -424,6 +449,36 @@ mod tests {
         let e = share(&own).expect_err("a file of the user's");
         assert!(e.contains("mine.obj") && e.contains("cannot carry"), "{e}");
         let _ = std::fs::remove_dir_all(dir);
+    }
+
+    /// `lesson=` with an address names a file to fetch, its step kept for after; a number or an
+    /// id is a built-in lesson; the fetched text opens as a lesson file of that name.
+    #[test]
+    fn a_lesson_by_its_address_is_fetched_then_opened_at_its_step() {
+        for address in ["class.lesson.toml", "lessons/a.TOML", "https://x.org/l"] {
+            let scene = parse(&format!("?lesson={}&step=2", encode(address)));
+            assert!(scene.problems.is_empty(), "{address}: {:?}", scene.problems);
+            assert_eq!(scene.lesson_address, Some((address.to_owned(), Some(1))));
+            assert!(scene.commands.is_empty(), "{address}: {:?}", scene.commands);
+        }
+        assert_eq!(parse("?lesson=3").lesson_address, None);
+        let text = include_str!("../../../../lessons/03-racket-flip.toml");
+        let mut lab = Lab::new(AppSettings::default()).expect("the lab");
+        lab.apply_all(fetched_lesson(
+            "class.lesson.toml",
+            text.to_owned(),
+            Some(1),
+        ));
+        let run = lab.lesson().expect("opened");
+        assert_eq!((run.lesson.id.as_str(), run.step), ("racket-flip", 1));
+        let mut lab = Lab::new(AppSettings::default()).expect("the lab");
+        lab.apply_all(fetched_lesson("bad.lesson.toml", "id = 3".to_owned(), None));
+        let said = lab.message().expect("refused in words");
+        assert!(
+            said.error && said.text.contains("bad.lesson.toml"),
+            "{}",
+            said.text
+        );
     }
 
     #[test]

@@ -149,6 +149,7 @@ impl LabApp {
         let mut commands = Vec::new();
         self.shortcuts(&ctx, &mut commands);
         self.take_dropped(&ctx, &mut commands);
+        commands.extend(platform::arrived());
         self.poll_dialog(&mut commands);
         self.shared.dialog_open = self.dialog.is_some();
         self.lab.frame(Instant::now());

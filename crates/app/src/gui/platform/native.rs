@@ -54,6 +54,12 @@ pub fn set_title(ctx: &egui::Context, title: &str) {
     ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
 }
 
+/// Nothing arrives between frames on the desktop but what the window's own input brings (a page
+/// fetches a lesson a link named).
+pub fn arrived() -> Vec<Command> {
+    Vec::new()
+}
+
 /// Nothing: a window shows its figures in its panels alone. (A page also gives them to scripts.)
 pub fn publish(_: &Figures) {}
 

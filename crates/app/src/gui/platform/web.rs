@@ -92,6 +92,7 @@ async fn run() -> Result<(), JsValue> {
         .dyn_into()?;
     let query = web_sys::window().ok_or("no window")?.location().search()?;
     let scene = link::parse(&query);
+    let fetch_lesson = scene.lesson_address.clone();
     let options = eframe::WebOptions {
         // Without a depth buffer the 3D occlusion is wrong (stack notes).
         depth_buffer: 24,
@@ -136,6 +137,20 @@ async fn run() -> Result<(), JsValue> {
                 let mut app = start.app(settings, cc.gl.clone(), &cc.egui_ctx)?;
                 app.lab
                     .restore_lesson_progress(crate::gui::kept_progress(cc.storage));
+                if let Some((address, step)) = fetch_lesson {
+                    let ctx = cc.egui_ctx.clone();
+                    wasm_bindgen_futures::spawn_local(async move {
+                        let commands = match fetch_text(&address).await {
+                            Ok(text) => link::fetched_lesson(&address, text, step),
+                            Err(why) => vec![Command::Notify(Message {
+                                text: tr!("link-lesson-not-fetched", address = &address, why = why),
+                                error: true,
+                            })],
+                        };
+                        ARRIVED.with_borrow_mut(|arrived| arrived.extend(commands));
+                        ctx.request_repaint();
+                    });
+                }
                 Ok(Box::new(app))
             }),
         )
@@ -143,6 +158,39 @@ async fn run() -> Result<(), JsValue> {
     // Ready before a file arrives: loading a dropped file waits for no worker.
     crate::platform::prepare_jobs();
     Ok(())
+}
+
+thread_local! {
+    /// Commands from the page's own work between frames (a lesson a link named, fetched).
+    static ARRIVED: RefCell<Vec<Command>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The commands that arrived since the last frame: a lesson file a link named, once fetched.
+pub fn arrived() -> Vec<Command> {
+    ARRIVED.with_borrow_mut(std::mem::take)
+}
+
+/// The text at `address` (relative to the page, or absolute where its server allows it).
+async fn fetch_text(address: &str) -> Result<String, String> {
+    let words = |e: JsValue| e.as_string().unwrap_or_else(|| format!("{e:?}"));
+    let window = web_sys::window().ok_or("no window")?;
+    let response: web_sys::Response =
+        wasm_bindgen_futures::JsFuture::from(window.fetch_with_str(address))
+            .await
+            .map_err(words)?
+            .dyn_into()
+            .map_err(words)?;
+    if !response.ok() {
+        return Err(format!(
+            "HTTP {} {}",
+            response.status(),
+            response.status_text()
+        ));
+    }
+    let text = wasm_bindgen_futures::JsFuture::from(response.text().map_err(words)?)
+        .await
+        .map_err(words)?;
+    text.as_string().ok_or_else(|| "not text".to_owned())
 }
 
 fn document() -> Option<web_sys::Document> {
