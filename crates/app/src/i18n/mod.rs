@@ -1,6 +1,7 @@
 //! The app's words in the user's language: every text the window, the page and the live
 //! description show comes from the Fluent message files in `crates/app/messages/<code>/`
-//! (Project Fluent's syntax, <https://projectfluent.org/fluent/guide/>), through [`tr!`].
+//! (Project Fluent's syntax, <https://projectfluent.org/fluent/guide/>), through the crate's own
+//! macro `tr!`.
 //!
 //! One file a panel in each language, the same ids in each (`tests` checks it); English is the
 //! reference. The language is the one the user chose (the settings), else the system's or the
