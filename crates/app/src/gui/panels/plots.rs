@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use egui::Color32;
-use egui_plot::{Legend, Line, LineStyle, Plot, PlotPoints};
+use egui_plot::{GridMark, HoverPosition, Legend, Line, LineStyle, Plot, PlotPoints};
 
 use super::{Frame, Panel, PanelState, localized, number};
 use crate::gui::platform::{self, DialogPurpose};
@@ -208,6 +208,24 @@ fn draw(
         .allow_scroll(false)
         // Coarser grid than egui_plot's default (8 px): fewer faint lines to blend on software GL.
         .grid_spacing(24.0..=200.0)
+        // Numbers in the language's way ("0,5"), as egui_plot would write them otherwise.
+        .x_axis_formatter(tick)
+        .y_axis_formatter(tick)
+        .label_formatter(|hovered| {
+            let (name, at) = match hovered {
+                HoverPosition::NearDataPoint {
+                    plot_name,
+                    position,
+                    ..
+                } => (*plot_name, *position),
+                HoverPosition::Elsewhere { position } => ("", *position),
+            };
+            Some(format!(
+                "{name}\nt = {} s\n{}",
+                fixed(at.x, 2),
+                sci(at.y, 3)
+            ))
+        })
         .width(width)
         .height(height)
         .show(ui, |p| {
@@ -236,6 +254,13 @@ fn draw(
         });
 }
 
+/// A tick's number with as many decimals as its step needs (egui_plot's rule), in the
+/// language's way.
+fn tick(mark: GridMark, _range: &std::ops::RangeInclusive<f64>) -> String {
+    let decimals = (-mark.step_size.log10().round()).max(0.0) as usize;
+    fixed(mark.value, decimals)
+}
+
 /// The energy drift readout.
 fn drift_text(lab: &Lab) -> String {
     let primary = lab.primary();
@@ -249,5 +274,22 @@ fn drift_text(lab: &Lab) -> String {
             max = sci(max, 2)
         ),
         None => tr!("plots-drift-none"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Ticks take as many decimals as their step needs, with the language's separator.
+    #[test]
+    fn ticks_are_written_in_the_language_s_way() {
+        let mark = |value, step_size| GridMark { value, step_size };
+        crate::i18n::set_language(crate::i18n::Language::German);
+        assert_eq!(tick(mark(0.5, 0.1), &(0.0..=1.0)), "0,5");
+        assert_eq!(tick(mark(0.0002, 0.0001), &(0.0..=1.0)), "0,0002");
+        assert_eq!(tick(mark(20.0, 10.0), &(0.0..=1.0)), "20");
+        crate::i18n::set_language(crate::i18n::Language::English);
+        assert_eq!(tick(mark(0.5, 0.1), &(0.0..=1.0)), "0.5");
     }
 }
