@@ -17,6 +17,11 @@ pub struct LessonsPanel {
 impl Panel for LessonsPanel {
     fn show(&mut self, ui: &mut egui::Ui, f: &mut Frame<'_>) {
         ui.heading(tr!("lessons-heading"));
+        // Back, Next and Close stay in view below the text, however long it is.
+        if let Some(run) = f.lab.lesson() {
+            egui::Panel::bottom("lesson-navigation")
+                .show(ui, |ui| self.navigation(ui, run, f.commands));
+        }
         egui::ScrollArea::vertical().show(ui, |ui| match f.lab.lesson() {
             Some(run) => self.lesson(ui, run, f.commands),
             None => list(ui, f),
@@ -67,6 +72,10 @@ impl LessonsPanel {
             step = run.step + 1,
             steps = lesson.steps.len()
         ));
+        // At the top, where the student looks first: the panel may scroll.
+        if run.finished() {
+            ui.strong(tr!("lessons-finished"));
+        }
         ui.label(tidy(&step.text));
         if let Some(view) = step.view {
             ui.small(look_at(view));
@@ -126,14 +135,18 @@ impl LessonsPanel {
             }
             ui.label(tidy(&step.explain));
         }
-        ui.horizontal(|ui| {
+    }
+
+    /// The step's buttons: back, next (once the step is done), close.
+    fn navigation(&mut self, ui: &mut egui::Ui, run: &LessonRun, commands: &mut Vec<Command>) {
+        ui.horizontal_wrapped(|ui| {
             if ui
                 .add_enabled(run.step > 0, egui::Button::new(tr!("lessons-back")))
                 .clicked()
             {
                 commands.push(Command::PreviousStep);
             }
-            let last = run.step + 1 == lesson.steps.len();
+            let last = run.step + 1 == run.lesson.steps.len();
             if !last
                 && ui
                     .add_enabled(run.step_done(), egui::Button::new(tr!("lessons-next-step")))
@@ -147,9 +160,6 @@ impl LessonsPanel {
                 commands.push(Command::CloseLesson);
             }
         });
-        if run.finished() {
-            ui.label(tr!("lessons-finished"));
-        }
     }
 }
 
