@@ -228,20 +228,6 @@ pub enum View {
     Motion,
 }
 
-impl View {
-    /// The view's name as the panels show it.
-    pub fn label(self) -> &'static str {
-        match self {
-            View::Body => "the 3D view",
-            View::Table => "the Mass properties table",
-            View::Plots => "the plots",
-            View::Sphere => "the momentum sphere",
-            View::Parts => "the Parts section",
-            View::Motion => "the Motion section",
-        }
-    }
-}
-
 /// A question with its choices; `answer` is revealed once the step is done.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
