@@ -3,7 +3,7 @@
 check-reversals = { $measured } von { $wanted } Umkehrungen von ω₂ gemessen
 check-no-reversal = { $passed } von { $seconds } s ohne Umkehrung
 check-half-period = gemessen { $measured } s zwischen Umkehrungen, vorhergesagt { $predicted } s ({ $apart } % Abweichung)
-check-flip-period = vorhergesagte Umklappperiode { $period } s (Ziel { $target } s ± { $tolerance } %)
+check-flip-period = vorhergesagte Überschlagsperiode { $period } s (Ziel { $target } s ± { $tolerance } %)
 check-no-flip = er klappt jetzt nicht um
 check-moments-apart = die zwei nächstliegenden Momente liegen { $apart } % auseinander
 check-conserved = { $passed } von { $seconds } s; Energie gehalten auf { $drift }
